@@ -1,0 +1,74 @@
+// Bearing defect frequencies from pure-rolling kinematics (MODEL.md §2).
+
+#include "bearing/kinematics.h"
+
+#include <cmath>
+#include <sstream>
+#include <string>
+
+#include "bearing/errors.h"
+#include "bearing/units.h"
+
+namespace bearing {
+
+namespace {
+
+constexpr double kTwoPi = 6.283185307179586476925286766559;
+
+// g = D cos α / d_m, checked enough that the formulas cannot produce NaN.
+double geometry_ratio(const Bearing& b) {
+  if (!(std::isfinite(b.ball_diameter) && b.ball_diameter > 0))
+    throw InputError("bearing.ball_diameter = " + format_number(b.ball_diameter) +
+                     " m: must be positive");
+  if (!(std::isfinite(b.pitch_diameter) && b.pitch_diameter > b.ball_diameter))
+    throw InputError("bearing.pitch_diameter = " + format_number(b.pitch_diameter) +
+                     " m: must exceed the ball diameter (" + format_number(b.ball_diameter) +
+                     " m)");
+  if (!std::isfinite(b.contact_angle))
+    throw InputError("bearing.contact_angle = " + format_number(b.contact_angle) +
+                     " rad: must be finite");
+  return b.ball_diameter * std::cos(b.contact_angle) / b.pitch_diameter;
+}
+
+void require_speed(double w, const char* what) {
+  if (!std::isfinite(w))
+    throw InputError(std::string(what) + " = " + format_number(w) + " rad/s: must be finite");
+}
+
+}  // namespace
+
+double cage_speed(const Bearing& b, double inner_speed, double outer_speed) {
+  require_speed(inner_speed, "inner-ring speed");
+  require_speed(outer_speed, "outer-ring speed");
+  const double g = geometry_ratio(b);
+  // The ball centre moves at the mean of the two contact-point speeds (pure rolling).
+  return 0.5 * inner_speed * (1.0 - g) + 0.5 * outer_speed * (1.0 + g);
+}
+
+BearingFrequencies bearing_frequencies(const Bearing& b, double inner_speed, double outer_speed,
+                                       double cage_slip) {
+  if (!(std::isfinite(cage_slip) && cage_slip >= 0.0 && cage_slip < 1.0))
+    throw InputError("cage.slip = " + format_number(cage_slip) +
+                     ": the cage slip ratio must lie in [0, 1)");
+  if (b.balls < 1)
+    throw InputError("bearing.balls = " + std::to_string(b.balls) + ": must be at least 1");
+  const double g = geometry_ratio(b);
+  const double cage = (1.0 - cage_slip) * cage_speed(b, inner_speed, outer_speed);  // ω_ca
+  const double f_i = inner_speed / kTwoPi;
+  const double f_o = outer_speed / kTwoPi;
+  const double f_c = cage / kTwoPi;
+  const double Z = b.balls;
+
+  BearingFrequencies f;
+  f.shaft = std::abs(f_i - f_o);
+  f.ftf = std::abs(f_c);
+  // A ball passes a point of a race at Z times the cage speed relative to that race.
+  f.bpfo = Z * std::abs(f_c - f_o);
+  f.bpfi = Z * std::abs(f_i - f_c);
+  // Rolling on the outer race relative to the cage: ω_b (D/2) = (d_m/2)(1 + g)(ω_ca − ω_o),
+  // which without slip is (d_m / 2D) f_i (1 − g²) (outer ring fixed).
+  f.bsf = (b.pitch_diameter / b.ball_diameter) * (1.0 + g) * std::abs(f_c - f_o);
+  return f;
+}
+
+}  // namespace bearing
