@@ -1,0 +1,162 @@
+#include "bearing/info_report.h"
+
+#include <cmath>
+#include <cstdio>
+#include <sstream>
+
+#include "bearing/errors.h"
+#include "bearing/hertz.h"
+#include "bearing/presets.h"
+#include "bearing/units.h"
+
+namespace bearing {
+
+InfoReport compute_info(const Case& c) {
+  InfoReport r;
+  r.input = c;
+  const auto method = make_hertz_solution(c.model.contact);
+  r.contact = contact_constants(c.bearing, *method);
+  r.frequencies = bearing_frequencies(c.bearing, c.operation.speed);
+  r.static_load =
+      solve_static_load(c.bearing.balls, r.contact.K, c.bearing.ball_gap(), c.operation.load);
+  return r;
+}
+
+void require_finite(const nlohmann::json& j, const std::string& path) {
+  if (j.is_number_float() && !std::isfinite(j.get<double>()))
+    throw SolverError("result " + path + " is not finite (" + std::to_string(j.get<double>()) +
+                      "); nothing was written");
+  if (j.is_object())
+    for (auto it = j.begin(); it != j.end(); ++it)
+      require_finite(*it, path.empty() ? it.key() : path + "." + it.key());
+  if (j.is_array())
+    for (std::size_t i = 0; i < j.size(); ++i)
+      require_finite(j[i], path + "[" + std::to_string(i) + "]");
+}
+
+nlohmann::json info_json(const InfoReport& r) {
+  using nlohmann::json;
+  const auto race = [](const RaceContact& rc) {
+    return json{{"sum_rho", rc.sum_rho},
+                {"f_rho", rc.f_rho},
+                {"ellipticity", rc.shape.ellipticity},
+                {"delta_star", rc.shape.delta_star},
+                {"K", rc.K}};
+  };
+  const Bearing& b = r.input.bearing;
+  json j;
+  j["case"] = {{"source", r.input.source},
+               {"bearing", b.designation},
+               {"speed", r.input.operation.speed},
+               {"load", {r.input.operation.load.x(), r.input.operation.load.y()}}};
+  j["kinematics"] = {{"shaft", r.frequencies.shaft},
+                     {"ftf", r.frequencies.ftf},
+                     {"bpfo", r.frequencies.bpfo},
+                     {"bpfi", r.frequencies.bpfi},
+                     {"bsf", r.frequencies.bsf}};
+  j["contact"] = {{"method", r.contact.method},
+                  {"inner", race(r.contact.inner)},
+                  {"outer", race(r.contact.outer)},
+                  {"K", r.contact.K}};
+  const auto& s = r.static_load;
+  j["static"] = {{"deflection", {s.deflection.x(), s.deflection.y()}},
+                 {"ball_angles", s.ball_angles},
+                 {"ball_loads", s.ball_loads},
+                 {"q_max", s.q_max}};
+  j["units"] = {{"case.speed", "rad/s"},    {"case.load", "N"},
+                {"kinematics", "Hz"},       {"contact.*.sum_rho", "1/m"},
+                {"contact.*.K", "N/m^1.5"}, {"contact.K", "N/m^1.5"},
+                {"static.deflection", "m"}, {"static.ball_angles", "rad"},
+                {"static.ball_loads", "N"}, {"static.q_max", "N"}};
+  require_finite(j);
+  return j;
+}
+
+namespace {
+
+std::string num(double v, int sig = 6) {
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "%.*g", sig, v);
+  return buf;
+}
+
+std::string fixed(double v, int decimals) {
+  if (std::fabs(v) < 0.5 * std::pow(10.0, -decimals)) v = 0.0;  // no "-0.0000"
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "%.*f", decimals, v);
+  return buf;
+}
+
+std::string pad(const std::string& s, std::size_t width) {
+  return s.size() >= width ? s : s + std::string(width - s.size(), ' ');
+}
+
+std::string rpad(const std::string& s, std::size_t width) {
+  return s.size() >= width ? s : std::string(width - s.size(), ' ') + s;
+}
+
+}  // namespace
+
+std::string info_text(const InfoReport& r) {
+  const Case& c = r.input;
+  const Bearing& b = c.bearing;
+  std::ostringstream o;
+  const double rpm = c.operation.speed * 60.0 / (2.0 * M_PI);
+  o << "Case: " << c.source << "\n";
+  o << "Bearing " << b.designation;
+  if (!c.preset.empty()) o << " (preset: " << preset_source(c.preset) << ")";
+  o << "\n  D = " << num(b.ball_diameter * 1e3) << " mm, d_m = " << num(b.pitch_diameter * 1e3)
+    << " mm, Z = " << b.balls << ", f_i = " << num(b.inner_conformity, 4)
+    << ", f_o = " << num(b.outer_conformity, 4) << ", P_d = " << num(b.clearance * 1e6)
+    << " um (gap per ball " << num(b.ball_gap() * 1e6)
+    << " um), alpha = " << num(b.contact_angle * 180.0 / M_PI) << " deg\n";
+  o << "  balls: E = " << num(b.ball.young / 1e9) << " GPa, nu = " << num(b.ball.poisson)
+    << "; rings: E = " << num(b.rings.young / 1e9) << " GPa, nu = " << num(b.rings.poisson) << "\n";
+  o << "Operation: inner ring " << num(rpm)
+    << " rpm, outer ring fixed; radial load Fx = " << num(c.operation.load.x())
+    << " N, Fy = " << num(c.operation.load.y()) << " N (y up)\n\n";
+
+  const auto& f = r.frequencies;
+  o << "Kinematics (pure rolling)\n";
+  o << "  shaft  " << rpad(fixed(f.shaft, 3), 10) << " Hz\n";
+  o << "  FTF    " << rpad(fixed(f.ftf, 3), 10) << " Hz\n";
+  o << "  BPFO   " << rpad(fixed(f.bpfo, 3), 10) << " Hz\n";
+  o << "  BPFI   " << rpad(fixed(f.bpfi, 3), 10) << " Hz\n";
+  o << "  BSF    " << rpad(fixed(f.bsf, 3), 10) << " Hz\n\n";
+
+  const auto& ci = r.contact.inner;
+  const auto& co = r.contact.outer;
+  o << "Hertz contact (method: " << r.contact.method << ")\n";
+  o << "  " << pad("", 24) << rpad("inner", 14) << rpad("outer", 14) << "\n";
+  const auto row = [&](const std::string& name, const std::string& unit, double a, double bb) {
+    o << "  " << pad(name + " [" + unit + "]", 24) << rpad(num(a), 14) << rpad(num(bb), 14) << "\n";
+  };
+  row("sum rho", "1/m", ci.sum_rho, co.sum_rho);
+  row("F(rho)", "-", ci.f_rho, co.f_rho);
+  row("ellipticity a/b", "-", ci.shape.ellipticity, co.shape.ellipticity);
+  row("delta*", "-", ci.shape.delta_star, co.shape.delta_star);
+  row("K", "N/m^1.5", ci.K, co.K);
+  o << "  ball between both races: K = " << num(r.contact.K) << " N/m^1.5\n\n";
+
+  const auto& s = r.static_load;
+  o << "Static load distribution\n";
+  if (c.operation.load.norm() == 0.0) {
+    o << "  no radial load: inner ring centred, no ball loaded\n";
+  } else {
+    // Fixed decimals: the solver's round-off (~1e-21 m) is not worth showing as "-1.3e-15 um".
+    o << "  inner-ring deflection x = " << fixed(s.deflection.x() * 1e6, 4)
+      << " um, y = " << fixed(s.deflection.y() * 1e6, 4)
+      << " um (|d| = " << fixed(s.deflection.norm() * 1e6, 4) << " um)\n";
+    o << "  Q_max = " << num(s.q_max)
+      << " N; Q_max Z / F_r = " << num(s.q_max * b.balls / c.operation.load.norm(), 4) << "\n";
+    o << "  " << rpad("ball", 6) << rpad("angle [deg]", 14) << rpad("approach [um]", 16)
+      << rpad("load [N]", 14) << "\n";
+    for (std::size_t j = 0; j < s.ball_loads.size(); ++j)
+      o << "  " << rpad(std::to_string(j + 1), 6)
+        << rpad(fixed(s.ball_angles[j] * 180.0 / M_PI, 1), 14)
+        << rpad(fixed(s.ball_approach[j] * 1e6, 4), 16) << rpad(num(s.ball_loads[j]), 14) << "\n";
+  }
+  return o.str();
+}
+
+}  // namespace bearing

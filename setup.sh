@@ -1,0 +1,33 @@
+#!/usr/bin/env bash
+# One command on a fresh Debian machine: installs the Debian packages the project needs (only the
+# missing ones, so a second run is fast), configures and builds into ./build, and runs bearing-sim
+# on its built-in default case (a 6308 at 2000 rpm under a radial load).
+set -euo pipefail
+cd "$(dirname "$0")"
+
+packages=(
+  build-essential cmake ninja-build ccache pkg-config git
+  libeigen3-dev libgsl-dev libtomlplusplus-dev nlohmann-json3-dev libcli11-dev   # lumped/
+  googletest libgtest-dev libgmock-dev libbenchmark-dev                          # tests/, bench/
+  libdeal.ii-dev petsc-dev gmsh                                                  # fem/, meshes/
+)
+
+missing=()
+for p in "${packages[@]}"; do
+  status=$(dpkg-query -W -f='${Status}' "$p" 2>/dev/null || true)
+  [[ "$status" == "install ok installed" ]] || missing+=("$p")
+done
+if ((${#missing[@]})); then
+  echo "setup: installing ${missing[*]}"
+  sudo=""
+  if [[ $(id -u) -ne 0 ]]; then sudo="sudo"; fi
+  $sudo apt-get update -q
+  DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -q "${missing[@]}"
+fi
+
+cmake -S . -B build -G Ninja -DCMAKE_BUILD_TYPE=Release
+cmake --build build -j "$(nproc)"
+
+echo
+echo "setup: bearing-sim info (built-in default case)"
+./build/lumped/bearing-sim info
