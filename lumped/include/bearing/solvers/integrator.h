@@ -1,0 +1,59 @@
+#pragma once
+// Time integration of a MechanicalSystem, one interface for every method (selected in [solver]).
+// Output is recorded at prescribed times, independent of the internal step (exact step landing or
+// dense output), so every method writes the same samples.
+
+#include <functional>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "bearing/solvers/mechanical_system.h"
+
+namespace bearing {
+
+struct IntegratorSettings {
+  std::string method = "rk4";  ///< "rk4" | "rkf45" | "rk8pd" | "newmark" | "bdf"
+  double dt = 5e-6;            ///< fixed step (rk4, newmark) or initial step (adaptive) [s]
+  double rtol = 1e-6;          ///< relative tolerance (adaptive, bdf; newmark's Newton) [-]
+  double atol = 1e-12;         ///< absolute tolerance on displacements [m] (velocities scaled) [-]
+  double max_displacement = 1e-3;  ///< blow-up bound on |q_i| [m]; exceeded → SolverError
+};
+
+/// Called at each output time with the state there and the acceleration a = f/M.
+using Observer = std::function<void(double t, const double* q, const double* v, const double* a)>;
+/// Called now and then with the fraction of the run done, in [0, 1].
+using Progress = std::function<void(double fraction)>;
+
+struct IntegrationStats {
+  long steps = 0;              ///< accepted steps
+  long rejected_steps = 0;     ///< rejected steps (adaptive methods)
+  long force_evaluations = 0;  ///< calls of MechanicalSystem::force
+  long jacobian_evaluations = 0;
+};
+
+class Integrator {
+ public:
+  virtual ~Integrator() = default;
+
+  /// Integrates from t0 with q(t0) = q0, v(t0) = v0 (n entries each) and calls `observe` at each
+  /// of `output_times` (ascending, the first ≥ t0). Throws SolverError on blow-up (NaN/Inf or
+  /// |q_i| > max_displacement) naming the time, the step and what to change, before the observer
+  /// sees any non-finite value.
+  virtual IntegrationStats integrate(const MechanicalSystem& system, double t0,
+                                     const std::vector<double>& q0, const std::vector<double>& v0,
+                                     const std::vector<double>& output_times,
+                                     const Observer& observe, const Progress& progress = {}) const = 0;
+
+  /// The [solver] method name.
+  virtual std::string name() const = 0;
+};
+
+/// The integrator for settings.method; throws InputError naming `solver.method` and listing the
+/// methods for an unknown name, or naming `solver.dt` / `solver.tolerance` for invalid values.
+std::unique_ptr<Integrator> make_integrator(const IntegratorSettings& settings);
+
+/// The method names make_integrator accepts.
+std::vector<std::string> integrator_names();
+
+}  // namespace bearing
