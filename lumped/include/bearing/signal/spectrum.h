@@ -1,0 +1,60 @@
+#pragma once
+// One-sided amplitude spectrum of a sampled channel (MODEL.md §7), scaled so that a sinusoid of
+// amplitude A shows as A, whatever the window.
+
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace bearing {
+
+/// Window applied before the FFT. All three are periodic (DFT-even: w_j for j = 0 … N−1 with
+/// z = 2πj/N), so each is a cosine sum whose DFT is non-zero on only a few bins.
+///  - hann: 0.5 − 0.5 cos z. Default: narrow main lobe (±2 bins), good frequency resolution, but
+///    up to −1.42 dB (−15 %) amplitude error for a tone halfway between bins.
+///  - flattop: HFT90D of Heinzel, Rüdiger & Schilling, "Spectrum and spectral density estimation by
+///    the Discrete Fourier transform (DFT), including a comprehensive list of window functions and
+///    some new flat-top windows", Max-Planck-Institut für Gravitationsphysik, 2002, §D:
+///    1 − 1.942604 cos z + 1.340318 cos 2z − 0.440811 cos 3z + 0.043097 cos 4z. Amplitude flat to
+///    0.0039 dB (0.045 %) anywhere between bins, −90 dB sidelobes, main lobe ±5 bins wide.
+///  - rectangular: w = 1. Exact only on bins; up to −3.9 dB (−36 %) between bins, and leaks.
+enum class Window { hann, flattop, rectangular };
+
+/// The window named "hann", "flattop" or "rectangular" (exact spelling). `key` is the case-file
+/// key the name came from, used in the message. Throws InputError for any other name, listing the
+/// allowed ones and suggesting the nearest.
+Window parse_window(std::string_view name, const std::string& key);
+
+/// The name parse_window accepts for `window`.
+std::string_view window_name(Window window);
+
+/// One-sided amplitude spectrum: bin k at frequency k·fs/N, k = 0 … ⌊N/2⌋.
+struct Spectrum {
+  std::vector<double> frequency;  ///< bin frequencies 0 … fs/2 (or just below it for odd N) [Hz]
+  std::vector<double> amplitude;  ///< one-sided amplitude [unit of x]
+  double resolution = 0;          ///< bin spacing fs / N [Hz]
+};
+
+/// One-sided amplitude spectrum of x [unit of x] sampled at `sample_rate` [Hz].
+///
+/// The mean is removed (so the DC bin shows only what the window leaks there), the signal is
+/// windowed, transformed at its own length N (no zero padding, so the bins are k·fs/N for any
+/// N ≥ 2) and scaled by 1 / (N · coherent gain) with coherent gain Σw/N, every bin but DC and
+/// Nyquist doubled. So A sin(2π f t + φ) with f = k·fs/N on a bin shows amplitude A at bin k
+/// exactly (to rounding) for every window, provided the
+/// window's main lobe (half-width h = 0 rectangular, 1 hann, 4 flattop [bins]) does not reach the
+/// tone's mirror image at −k or N − k: 2k > h and N − 2k > h. Between bins the largest bin is
+/// within 0.0039 dB (~0.05 %) of A only for flattop; see Window for the others. A record holding
+/// a non-whole number of periods has a sample mean of its own (at most A/(π·periods)); removing it
+/// leaves that constant, spread by the window over bins 0 … h.
+///
+/// The DFT is GSL's mixed-radix real FFT when every prime factor of N is at most 64; otherwise
+/// (e.g. prime N, where GSL's generic pass is O(N²): 0.55 s at N = 24001) Bluestein's algorithm on
+/// GSL's complex FFT of a 2-3-5-smooth length ≥ 2N − 1. So any N costs O(N log N): about 1 ms for
+/// N = 24000 and 5 ms for the prime 24001. The FFT tables are local to the call (thread-safe).
+/// Throws InputError if N < 2, a sample is NaN or infinite, or sample_rate is not positive and
+/// finite.
+Spectrum amplitude_spectrum(const std::vector<double>& x, double sample_rate,
+                            Window window = Window::hann);
+
+}  // namespace bearing
