@@ -1,0 +1,150 @@
+// The integrator factory and what every method shares: validation of settings and of an
+// integrate() call, and the blow-up check after each accepted step (MODEL.md §6).
+//
+// Conventions every method follows:
+// - Output: the observer is called at each requested time exactly (fixed steps are shortened to
+//   land on it, GSL's evolve clips its step to it), with an acceleration a = M⁻¹ f computed by a
+//   fresh force evaluation at that point.
+// - IntegrationStats::force_evaluations counts the integrator's own calls of force(), the output
+//   evaluations included. A force_jacobian() call counts once in jacobian_evaluations whatever it
+//   costs; the default central differences call force() 4n times inside it, not counted above.
+// - Blow-up: after every accepted step all q_i, v_i must be finite and |q_i| ≤ max_displacement,
+//   checked before the observer can see the state; otherwise SolverError names the time, the step
+//   and dt and suggests a smaller solver.dt.
+
+#include "bearing/solvers/integrator.h"
+
+#include <cmath>
+#include <cstddef>
+#include <cstdio>
+#include <string>
+#include <vector>
+
+#include "bearing/errors.h"
+#include "bearing/units.h"
+#include "integrator_detail.h"
+
+namespace bearing {
+
+namespace {
+
+std::string joined_names() {
+  std::string out;
+  for (const std::string& name : integrator_names()) out += (out.empty() ? "" : ", ") + name;
+  return out;
+}
+
+void validate(const IntegratorSettings& s) {
+  bool known = false;
+  for (const std::string& name : integrator_names()) known = known || name == s.method;
+  if (!known)
+    throw InputError("solver.method = \"" + s.method +
+                     "\" is not a method; allowed: " + joined_names());
+  if (!(std::isfinite(s.dt) && s.dt > 0))
+    throw InputError("solver.dt = " + format_number(s.dt) + " s must be positive and finite");
+  if (!(s.rtol > 0 && s.rtol <= 0.1))
+    throw InputError("solver.tolerance: relative tolerance " + format_number(s.rtol) +
+                     " must be in (0, 0.1]");
+  if (!(std::isfinite(s.atol) && s.atol > 0))
+    throw InputError("solver.tolerance: absolute tolerance " + format_number(s.atol) +
+                     " m must be positive and finite");
+  if (!(std::isfinite(s.max_displacement) && s.max_displacement > 0))
+    throw InputError("solver max_displacement = " + format_number(s.max_displacement) +
+                     " m (the blow-up bound) must be positive and finite");
+}
+
+}  // namespace
+
+std::vector<std::string> integrator_names() {
+  return {"rk4", "rkf45", "rk8pd", "newmark", "bdf"};
+}
+
+std::unique_ptr<Integrator> make_integrator(const IntegratorSettings& settings) {
+  validate(settings);
+  if (settings.method == "rk4") return solvers_detail::make_rk4(settings);
+  if (settings.method == "newmark") return solvers_detail::make_newmark(settings);
+  if (settings.method == "bdf") return solvers_detail::make_bdf(settings);
+  return solvers_detail::make_gsl_adaptive(settings);  // "rkf45" | "rk8pd"
+}
+
+namespace solvers_detail {
+
+std::vector<double> check_call(const std::string& method, const MechanicalSystem& system, double t0,
+                               const std::vector<double>& q0, const std::vector<double>& v0,
+                               const std::vector<double>& output_times) {
+  const std::string where = method + " integrate: ";
+  const int n = system.dofs();
+  if (n < 1) throw InputError(where + "the system has " + std::to_string(n) + " DOFs");
+  const auto size = static_cast<std::size_t>(n);
+  if (q0.size() != size || v0.size() != size)
+    throw InputError(where + "initial state has " + std::to_string(q0.size()) +
+                     " displacements and " + std::to_string(v0.size()) +
+                     " velocities, the system has " + std::to_string(n) + " DOFs");
+  for (std::size_t i = 0; i < size; ++i)
+    if (!(std::isfinite(q0[i]) && std::isfinite(v0[i])))
+      throw InputError(where + "initial state of DOF " + std::to_string(i) + " (q = " +
+                       format_number(q0[i]) + ", v = " + format_number(v0[i]) + ") is not finite");
+  if (!std::isfinite(t0)) throw InputError(where + "start time " + format_number(t0) + " s");
+  for (std::size_t k = 0; k < output_times.size(); ++k) {
+    const double t = output_times[k];
+    const double before = k == 0 ? t0 : output_times[k - 1];
+    if (!(std::isfinite(t) && t >= before))
+      throw InputError(where + "output time [" + std::to_string(k) + "] = " + format_number(t) +
+                       " s must be finite and not before " +
+                       (k == 0 ? "the start time " : "the previous output time ") +
+                       format_number(before) + " s");
+  }
+  std::vector<double> inv_mass(size);
+  system.mass(inv_mass.data());
+  for (std::size_t i = 0; i < size; ++i) {
+    if (!(std::isfinite(inv_mass[i]) && inv_mass[i] > 0))
+      throw InputError(where + "mass of DOF " + std::to_string(i) + " = " +
+                       format_number(inv_mass[i]) + " kg must be positive and finite");
+    inv_mass[i] = 1.0 / inv_mass[i];
+  }
+  return inv_mass;
+}
+
+std::string format_brief(double value) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.7g", value);
+  return text;
+}
+
+void throw_blow_up(const std::string& method, double t, long step, double dt,
+                   const std::string& what) {
+  const std::string at = step == 0
+                             ? "in the initial state at t = " + format_brief(t) + " s"
+                             : "at t = " + format_brief(t) + " s (step " + std::to_string(step) +
+                                   ", dt = " + format_brief(dt) + " s)";
+  throw SolverError(method + ": the solution blew up " + at + ": " + what +
+                    "; reduce solver.dt or check the load/clearance");
+}
+
+void report_bad_state(const std::string& method, double t, long step, double dt, const double* q,
+                      const double* v, int n, double max_displacement) {
+  for (int i = 0; i < n; ++i) {
+    const std::string dof = "[" + std::to_string(i) + "]";
+    if (!std::isfinite(q[i]))
+      throw_blow_up(method, t, step, dt, "q" + dof + " = " + format_brief(q[i]));
+    if (!std::isfinite(v[i]))
+      throw_blow_up(method, t, step, dt, "v" + dof + " = " + format_brief(v[i]));
+    if (std::abs(q[i]) > max_displacement)
+      throw_blow_up(method, t, step, dt,
+                    "|q" + dof + "| = " + format_brief(std::abs(q[i])) +
+                        " m exceeds the blow-up bound " + format_brief(max_displacement) + " m");
+  }
+  throw_blow_up(method, t, step, dt, "the state is not valid");  // not reached
+}
+
+void check_acceleration(const std::string& method, double t, long step, double dt, const double* a,
+                        int n) {
+  for (int i = 0; i < n; ++i)
+    if (!std::isfinite(a[i]))
+      throw_blow_up(method, t, step, dt,
+                    "the force on DOF " + std::to_string(i) + " is " + format_brief(a[i]));
+}
+
+}  // namespace solvers_detail
+
+}  // namespace bearing

@@ -1,0 +1,544 @@
+// The integrators on small mechanical systems with known behaviour: analytic solutions,
+// convergence orders, energy conservation, stiffness, exact output times, blow-up and settings
+// errors. Each test model is defined here; none depends on the bearing models.
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <string>
+#include <vector>
+
+#include "bearing/errors.h"
+#include "bearing/solvers/integrator.h"
+#include "bearing/solvers/mechanical_system.h"
+
+namespace bearing {
+namespace {
+
+// ---------------------------------------------------------------------------------------------
+// Test systems
+
+/// m q̈ = −k q − c q̇ (k < 0 makes it unstable). Uses the default finite-difference Jacobian.
+class LinearOscillator : public MechanicalSystem {
+ public:
+  LinearOscillator(double m, double k, double c) : m_(m), k_(k), c_(c) {}
+  int dofs() const override { return 1; }
+  void mass(double* m) const override { m[0] = m_; }
+  void force(double, const double* q, const double* v, double* f) const override {
+    f[0] = -k_ * q[0] - c_ * v[0];
+  }
+  double m() const { return m_; }
+  double k() const { return k_; }
+  double c() const { return c_; }
+
+  /// Exact q(t), v(t) for the underdamped case from q(0) = q0, v(0) = v0.
+  void exact(double t, double q0, double v0, double* q, double* v) const {
+    const double wn = std::sqrt(k_ / m_);
+    const double zeta = c_ / (2.0 * std::sqrt(k_ * m_));
+    const double wd = wn * std::sqrt(1.0 - zeta * zeta);
+    const double s = zeta * wn;
+    const double A = q0;
+    const double B = (v0 + s * q0) / wd;
+    const double e = std::exp(-s * t);
+    const double cs = std::cos(wd * t), sn = std::sin(wd * t);
+    *q = e * (A * cs + B * sn);
+    *v = e * (-s * (A * cs + B * sn) + wd * (-A * sn + B * cs));
+  }
+
+ private:
+  double m_, k_, c_;
+};
+
+/// m q̈ = F0 − K [q]₊^{3/2} − c q̇: a preloaded Hertz contact, with an analytic Jacobian.
+class HertzOscillator : public MechanicalSystem {
+ public:
+  HertzOscillator(double m, double K, double F0, double c) : m_(m), K_(K), F0_(F0), c_(c) {}
+  int dofs() const override { return 1; }
+  void mass(double* m) const override { m[0] = m_; }
+  void force(double, const double* q, const double* v, double* f) const override {
+    const double d = std::max(q[0], 0.0);
+    f[0] = F0_ - K_ * d * std::sqrt(d) - c_ * v[0];
+  }
+  void force_jacobian(double, const double* q, const double*, double* dfdq,
+                      double* dfdv) const override {
+    dfdq[0] = -1.5 * K_ * std::sqrt(std::max(q[0], 0.0));
+    dfdv[0] = -c_;
+  }
+  double equilibrium() const { return std::cbrt((F0_ / K_) * (F0_ / K_)); }
+  double energy(double q, double v) const {
+    return 0.5 * m_ * v * v + 0.4 * K_ * std::pow(q, 2.5) - F0_ * q;
+  }
+
+ private:
+  double m_, K_, F0_, c_;
+};
+
+/// A heavy slow mass M on a soft spring k1, carrying a light mass m on a stiff spring k2 with a
+/// damper c2 between them: natural frequencies ~10 Hz and ~10 kHz.
+class StiffPair : public MechanicalSystem {
+ public:
+  static constexpr double kTwoPi = 6.283185307179586;
+  double M = 1.0, k1 = M * (kTwoPi * 10) * (kTwoPi * 10);
+  double m = 1e-6, k2 = m * (kTwoPi * 1e4) * (kTwoPi * 1e4), c2 = 2.0 * std::sqrt(k2 * m);
+  int dofs() const override { return 2; }
+  void mass(double* mm) const override {
+    mm[0] = M;
+    mm[1] = m;
+  }
+  void force(double, const double* q, const double* v, double* f) const override {
+    const double spring = k2 * (q[1] - q[0]) + c2 * (v[1] - v[0]);
+    f[0] = -k1 * q[0] + spring;
+    f[1] = -spring;
+  }
+};
+
+/// A linear oscillator whose force becomes NaN after t_bad, like a model evaluated outside its
+/// domain.
+class PoisonedOscillator : public LinearOscillator {
+ public:
+  PoisonedOscillator(double t_bad) : LinearOscillator(0.6, 1e7, 200.0), t_bad_(t_bad) {}
+  void force(double t, const double* q, const double* v, double* f) const override {
+    LinearOscillator::force(t, q, v, f);
+    if (t > t_bad_) f[0] = std::numeric_limits<double>::quiet_NaN();
+  }
+
+ private:
+  double t_bad_;
+};
+
+// ---------------------------------------------------------------------------------------------
+// Helpers
+
+struct Trajectory {
+  std::vector<double> t, q, v, a;  // flattened, dofs() entries per output
+  IntegrationStats stats;
+};
+
+IntegratorSettings settings(const std::string& method, double dt, double rtol = 1e-10,
+                            double atol = 1e-18) {
+  IntegratorSettings s;
+  s.method = method;
+  s.dt = dt;
+  s.rtol = rtol;
+  s.atol = atol;
+  return s;
+}
+
+Trajectory run(const IntegratorSettings& s, const MechanicalSystem& system, double t0,
+               const std::vector<double>& q0, const std::vector<double>& v0,
+               const std::vector<double>& times) {
+  Trajectory r;
+  const int n = system.dofs();
+  r.stats = make_integrator(s)->integrate(
+      system, t0, q0, v0, times, [&](double t, const double* q, const double* v, const double* a) {
+        r.t.push_back(t);
+        r.q.insert(r.q.end(), q, q + n);
+        r.v.insert(r.v.end(), v, v + n);
+        r.a.insert(r.a.end(), a, a + n);
+      });
+  return r;
+}
+
+/// t0 + k·step for k = 1..count.
+std::vector<double> grid(double t0, double step, int count) {
+  std::vector<double> times;
+  for (int k = 1; k <= count; ++k) times.push_back(t0 + k * step);
+  return times;
+}
+
+double max_difference(const std::vector<double>& a, const std::vector<double>& b) {
+  EXPECT_EQ(a.size(), b.size());
+  double worst = 0.0;
+  for (std::size_t i = 0; i < std::min(a.size(), b.size()); ++i)
+    worst = std::max(worst, std::abs(a[i] - b[i]));
+  return worst;
+}
+
+/// Observed orders log2(e(dt)/e(dt/2)) and log2(e(dt/2)/e(dt/4)).
+std::vector<double> observed_orders(const std::vector<double>& errors) {
+  std::vector<double> p;
+  for (std::size_t i = 0; i + 1 < errors.size(); ++i)
+    p.push_back(std::log2(errors[i] / errors[i + 1]));
+  return p;
+}
+
+// The linear oscillator of the tests: 650 Hz, ζ = 0.04, like a 0.6 kg rotor on a bearing.
+const LinearOscillator kLinear(0.6, 1e7, 200.0);
+constexpr double kQ0 = 1e-5;  // [m]
+
+double linear_error(const Trajectory& r, double q0, double v0, const LinearOscillator& sys) {
+  double worst = 0.0;
+  for (std::size_t k = 0; k < r.t.size(); ++k) {
+    double q, v;
+    sys.exact(r.t[k], q0, v0, &q, &v);
+    worst = std::max(worst, std::abs(r.q[k] - q));
+  }
+  return worst;
+}
+
+// ---------------------------------------------------------------------------------------------
+// (1) Linear oscillator against the analytic solution
+
+TEST(IntegratorLinear, AllMethodsMatchAnalyticSolution) {
+  const std::vector<double> times = grid(0.0, 2e-4, 20);  // 4 ms, 2.6 periods
+  struct Case {
+    std::string method;
+    double dt, rtol, bound;  // bound on max |q − q_exact| relative to q0
+  };
+  for (const Case& c : {Case{"rk4", 5e-6, 1e-10, 1e-7}, Case{"newmark", 1e-6, 1e-10, 1e-3},
+                        Case{"rkf45", 1e-6, 1e-9, 1e-7}, Case{"rk8pd", 1e-6, 1e-9, 1e-7},
+                        Case{"bdf", 1e-6, 1e-9, 1e-6}}) {
+    const Trajectory r = run(settings(c.method, c.dt, c.rtol), kLinear, 0.0, {kQ0}, {0.0}, times);
+    ASSERT_EQ(r.t.size(), times.size()) << c.method;
+    const double error = linear_error(r, kQ0, 0.0, kLinear);
+    EXPECT_LT(error, c.bound * kQ0) << c.method;
+    // The observer's acceleration is f/M at the output state.
+    for (std::size_t k = 0; k < r.t.size(); ++k)
+      EXPECT_NEAR(r.a[k], (-kLinear.k() * r.q[k] - kLinear.c() * r.v[k]) / kLinear.m(),
+                  1e-12 * kLinear.k() * kQ0 / kLinear.m())
+          << c.method;
+  }
+}
+
+TEST(IntegratorLinear, Rk4IsFourthOrder) {
+  const std::vector<double> times = grid(0.0, 2e-4, 20);
+  std::vector<double> errors;
+  for (const double dt : {2e-5, 1e-5, 5e-6})
+    errors.push_back(linear_error(run(settings("rk4", dt), kLinear, 0.0, {kQ0}, {0.0}, times), kQ0,
+                                  0.0, kLinear));
+  for (const double p : observed_orders(errors)) EXPECT_NEAR(p, 4.0, 0.3);
+}
+
+TEST(IntegratorLinear, NewmarkIsSecondOrder) {
+  const std::vector<double> times = grid(0.0, 2e-4, 20);
+  std::vector<double> errors;
+  for (const double dt : {2e-5, 1e-5, 5e-6})
+    errors.push_back(linear_error(run(settings("newmark", dt), kLinear, 0.0, {kQ0}, {0.0}, times),
+                                  kQ0, 0.0, kLinear));
+  for (const double p : observed_orders(errors)) EXPECT_NEAR(p, 2.0, 0.3);
+}
+
+TEST(IntegratorLinear, AdaptiveMethodsReachTheirTolerance) {
+  // The global error of a tolerance-controlled method is not bounded by the local tolerance, but
+  // over a few periods it should stay within a multiple of rtol times the amplitude, and fall
+  // when the tolerance does. The embedded Runge–Kutta pairs advance the higher-order solution
+  // (local extrapolation) and land well inside (observed 0.06–1.4 rtol q0); msbdf's error
+  // estimate is that of the solution it advances, and ~500 steps accumulate (observed 76 and
+  // 132 rtol q0 at rtol 1e-5 and 1e-8).
+  const std::vector<double> times = grid(0.0, 2e-4, 20);
+  struct Case {
+    std::string method;
+    double factor;
+  };
+  for (const Case& c : {Case{"rkf45", 10.0}, Case{"rk8pd", 10.0}, Case{"bdf", 300.0}}) {
+    std::vector<double> errors;
+    for (const double rtol : {1e-5, 1e-8}) {
+      const Trajectory r =
+          run(settings(c.method, 1e-6, rtol, 1e-6 * rtol * kQ0), kLinear, 0.0, {kQ0}, {0.0}, times);
+      errors.push_back(linear_error(r, kQ0, 0.0, kLinear));
+      EXPECT_LT(errors.back(), c.factor * rtol * kQ0) << c.method << " rtol " << rtol;
+    }
+    EXPECT_GT(errors[0] / errors[1], 30.0) << c.method;
+  }
+}
+
+// ---------------------------------------------------------------------------------------------
+// (2) A preloaded Hertz contact: smooth and nonlinear (q stays > 0)
+
+// K = 1e10 N/m^1.5 and F0 = 100 N: q_eq = 4.6 µm, linearised frequency ~1.2 kHz.
+const HertzOscillator kHertz(0.6, 1e10, 100.0, 0.0);
+
+struct HertzFixture {
+  double q0 = 1.3 * kHertz.equilibrium();
+  std::vector<double> times = grid(0.0, 1e-4, 30);  // 3 ms, 3.5 periods
+  Trajectory reference = run(settings("rk4", 1e-5 / 64), kHertz, 0.0, {q0}, {0.0}, times);
+};
+
+const HertzFixture& hertz() {
+  static const HertzFixture fixture;
+  return fixture;
+}
+
+TEST(IntegratorHertz, StaysLoaded) {
+  const auto& q = hertz().reference.q;
+  EXPECT_GT(*std::min_element(q.begin(), q.end()), 0.5 * kHertz.equilibrium());
+}
+
+TEST(IntegratorHertz, Rk4IsFourthOrder) {
+  const HertzFixture& h = hertz();
+  std::vector<double> errors;
+  for (const double dt : {2e-5, 1e-5, 5e-6})
+    errors.push_back(max_difference(run(settings("rk4", dt), kHertz, 0.0, {h.q0}, {0.0}, h.times).q,
+                                    h.reference.q));
+  for (const double p : observed_orders(errors)) EXPECT_NEAR(p, 4.0, 0.3);
+}
+
+TEST(IntegratorHertz, NewmarkIsSecondOrder) {
+  const HertzFixture& h = hertz();
+  std::vector<double> errors;
+  for (const double dt : {2e-5, 1e-5, 5e-6})
+    errors.push_back(max_difference(
+        run(settings("newmark", dt), kHertz, 0.0, {h.q0}, {0.0}, h.times).q, h.reference.q));
+  for (const double p : observed_orders(errors)) EXPECT_NEAR(p, 2.0, 0.3);
+}
+
+TEST(IntegratorHertz, AdaptiveMethodsMatchFineRk4) {
+  const HertzFixture& h = hertz();
+  for (const std::string method : {"rkf45", "rk8pd", "bdf"}) {
+    const Trajectory r =
+        run(settings(method, 1e-6, 1e-10, 1e-20), kHertz, 0.0, {h.q0}, {0.0}, h.times);
+    EXPECT_LT(max_difference(r.q, h.reference.q), 1e-7 * h.q0) << method;
+    EXPECT_GT(r.stats.jacobian_evaluations, 0) << method;  // the velocity scale, at least
+  }
+}
+
+// ---------------------------------------------------------------------------------------------
+// (3) Energy
+
+TEST(IntegratorEnergy, Rk8pdConservesHertzEnergy) {
+  const double q0 = 1.3 * kHertz.equilibrium();
+  const double rtol = 1e-10;
+  const std::vector<double> times = grid(0.0, 1e-4, 430);  // 43 ms, 50 periods
+  const Trajectory r =
+      run(settings("rk8pd", 1e-6, rtol, rtol * 1e-6 * q0), kHertz, 0.0, {q0}, {0.0}, times);
+  const double e0 = kHertz.energy(q0, 0.0);
+  const double swing = e0 - kHertz.energy(kHertz.equilibrium(), 0.0);  // vibration energy
+  double drift = 0.0;
+  for (std::size_t k = 0; k < r.t.size(); ++k)
+    drift = std::max(drift, std::abs(kHertz.energy(r.q[k], r.v[k]) - e0));
+  EXPECT_LT(drift / swing, 20.0 * rtol);  // observed 1.8 rtol
+}
+
+TEST(IntegratorEnergy, NewmarkConservesLinearEnergyExactly) {
+  // Average acceleration is the trapezoidal rule: it conserves ½mv² + ½kq² of an undamped linear
+  // system at any step size, here ω dt = 0.4 over 100 periods.
+  const LinearOscillator sys(0.6, 1e7, 0.0);
+  const double dt = 0.4 / std::sqrt(sys.k() / sys.m());
+  const std::vector<double> times = grid(0.0, 50 * dt, 310);  // ~100 periods
+  const Trajectory r = run(settings("newmark", dt, 1e-12), sys, 0.0, {kQ0}, {0.3}, times);
+  const auto energy = [&](double q, double v) {
+    return 0.5 * sys.m() * v * v + 0.5 * sys.k() * q * q;
+  };
+  const double e0 = energy(kQ0, 0.3);
+  double drift = 0.0;
+  for (std::size_t k = 0; k < r.t.size(); ++k)
+    drift = std::max(drift, std::abs(energy(r.q[k], r.v[k]) - e0));
+  EXPECT_LT(drift / e0, 1e-11);
+  // Whereas RK4 at the same step loses energy steadily.
+  const Trajectory rk = run(settings("rk4", dt), sys, 0.0, {kQ0}, {0.3}, times);
+  EXPECT_GT(std::abs(energy(rk.q.back(), rk.v.back()) - e0) / e0, 1e-4);
+}
+
+// ---------------------------------------------------------------------------------------------
+// (4) Stiffness
+
+TEST(IntegratorStiff, BdfTakesFarFewerStepsThanRkf45) {
+  const StiffPair sys;
+  const std::vector<double> q0 = {1e-4, 1e-4}, v0 = {0.0, 0.0};
+  const std::vector<double> times = grid(0.0, 0.02, 10);  // 0.2 s: two slow periods
+  const double rtol = 1e-6, atol = 1e-12;
+  const Trajectory bdf = run(settings("bdf", 1e-6, rtol, atol), sys, 0.0, q0, v0, times);
+  const Trajectory rkf = run(settings("rkf45", 1e-6, rtol, atol), sys, 0.0, q0, v0, times);
+  const Trajectory ref = run(settings("rk8pd", 1e-6, 1e-11, 1e-17), sys, 0.0, q0, v0, times);
+  RecordProperty("bdf_steps", static_cast<int>(bdf.stats.steps));
+  RecordProperty("rkf45_steps", static_cast<int>(rkf.stats.steps));
+  EXPECT_GT(rkf.stats.steps, 8 * bdf.stats.steps);  // observed 3414 vs 251
+  // Both still follow the slow mass.
+  for (std::size_t k = 0; k < ref.q.size(); k += 2) {
+    EXPECT_NEAR(bdf.q[k], ref.q[k], 1e-3 * q0[0]) << "t = " << ref.t[k / 2];
+    EXPECT_NEAR(rkf.q[k], ref.q[k], 1e-3 * q0[0]) << "t = " << ref.t[k / 2];
+  }
+}
+
+// ---------------------------------------------------------------------------------------------
+// (5) Output times
+
+TEST(IntegratorOutput, TimesLandExactly) {
+  // Output interval 7.3 µs with dt = 5 µs, starting at an awkward t0, and the first output at t0.
+  const double t0 = 0.0123;
+  std::vector<double> times = {t0};
+  for (int k = 1; k <= 40; ++k) times.push_back(t0 + k * 7.3e-6);
+  for (const std::string& method : integrator_names()) {
+    const Trajectory r = run(settings(method, 5e-6, 1e-8, 1e-16), kLinear, t0, {kQ0}, {0.0}, times);
+    ASSERT_EQ(r.t.size(), times.size()) << method;
+    for (std::size_t k = 0; k < times.size(); ++k) EXPECT_EQ(r.t[k], times[k]) << method;
+    EXPECT_EQ(r.q[0], kQ0) << method;  // the initial state, untouched
+    EXPECT_EQ(r.v[0], 0.0) << method;
+  }
+}
+
+TEST(IntegratorOutput, FixedStepsKeepDtBetweenOutputs) {
+  // Each 7.3 µs interval is one full 5 µs step and one shortened 2.3 µs step.
+  const std::vector<double> times = grid(0.0, 7.3e-6, 40);
+  for (const std::string method : {"rk4", "newmark"}) {
+    const Trajectory r = run(settings(method, 5e-6), kLinear, 0.0, {kQ0}, {0.0}, times);
+    EXPECT_EQ(r.stats.steps, 80) << method;
+  }
+  // Output on the step grid (up to rounding of the times) adds no steps.
+  const Trajectory r = run(settings("rk4", 5e-6), kLinear, 0.0, {kQ0}, {0.0}, grid(0.0, 2e-5, 100));
+  EXPECT_EQ(r.stats.steps, 400);
+  // and, with the output-point evaluation reused as the next step's first stage, costs 4 per step
+  EXPECT_EQ(r.stats.force_evaluations, 4 * 400 + 1);
+}
+
+TEST(IntegratorOutput, NoOutputTimesNoWork) {
+  for (const std::string& method : integrator_names()) {
+    const Trajectory r = run(settings(method, 5e-6), kLinear, 0.0, {kQ0}, {0.0}, {});
+    EXPECT_EQ(r.stats.steps, 0) << method;
+    EXPECT_TRUE(r.t.empty()) << method;
+  }
+}
+
+TEST(IntegratorOutput, ProgressIsThrottled) {
+  const std::vector<double> times = grid(0.0, 1e-6, 5000);
+  for (const std::string& method : integrator_names()) {
+    std::vector<double> fractions;
+    make_integrator(settings(method, 1e-6, 1e-6, 1e-14))
+        ->integrate(kLinear, 0.0, {kQ0}, {0.0}, times, {},
+                    [&](double f) { fractions.push_back(f); });
+    ASSERT_FALSE(fractions.empty()) << method;
+    EXPECT_LE(fractions.size(), 102u) << method;
+    EXPECT_GE(fractions.size(), 50u) << method;
+    EXPECT_TRUE(std::is_sorted(fractions.begin(), fractions.end())) << method;
+    EXPECT_EQ(fractions.front(), 0.0) << method;
+    EXPECT_EQ(fractions.back(), 1.0) << method;
+  }
+}
+
+// ---------------------------------------------------------------------------------------------
+// (6) Blow-up
+
+void expect_blow_up(const MechanicalSystem& sys, const std::string& what) {
+  const std::vector<double> times = grid(0.0, 1e-4, 100);  // 10 ms
+  for (const std::string& method : integrator_names()) {
+    IntegratorSettings s = settings(method, 5e-6, 1e-6, 1e-14);
+    bool all_finite = true;
+    double largest = 0.0;
+    std::string message;
+    try {
+      make_integrator(s)->integrate(
+          sys, 0.0, {1e-6}, {0.0}, times,
+          [&](double t, const double* q, const double* v, const double* a) {
+            all_finite = all_finite && std::isfinite(t) && std::isfinite(q[0]) &&
+                         std::isfinite(v[0]) && std::isfinite(a[0]);
+            largest = std::max(largest, std::abs(q[0]));
+          });
+    } catch (const SolverError& e) {
+      message = e.what();
+    }
+    EXPECT_NE(message.find("t = "), std::string::npos) << what << " " << method << ": " << message;
+    EXPECT_NE(message.find("solver.dt"), std::string::npos)
+        << what << " " << method << ": " << message;
+    EXPECT_NE(message.find(method), std::string::npos) << what << " " << method << ": " << message;
+    EXPECT_TRUE(all_finite) << what << " " << method;
+    EXPECT_LE(largest, s.max_displacement) << what << " " << method;
+  }
+}
+
+TEST(IntegratorBlowUp, NegativeStiffnessThrows) {
+  // q grows like e^{4082 t}: past 1 mm after ~1.7 ms.
+  expect_blow_up(LinearOscillator(0.6, -1e7, 0.0), "negative stiffness");
+}
+
+TEST(IntegratorBlowUp, NonFiniteForceThrows) {
+  expect_blow_up(PoisonedOscillator(1.05e-3), "NaN force");
+}
+
+TEST(IntegratorBlowUp, MessageNamesTheStep) {
+  try {
+    run(settings("rk4", 1e-5), LinearOscillator(0.6, -1e7, 0.0), 0.0, {1e-6}, {0.0},
+        grid(0.0, 1e-3, 10));
+    FAIL() << "no SolverError";
+  } catch (const SolverError& e) {
+    const std::string message = e.what();
+    EXPECT_NE(message.find("(step 1"), std::string::npos) << message;
+    EXPECT_NE(message.find("dt = 1e-05 s"), std::string::npos) << message;
+    EXPECT_NE(message.find("|q[0]|"), std::string::npos) << message;
+  }
+}
+
+// ---------------------------------------------------------------------------------------------
+// (7) Settings and call errors
+
+std::string input_error(const IntegratorSettings& s) {
+  try {
+    make_integrator(s);
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+TEST(IntegratorFactory, UnknownMethodNamesKeyValueAndChoices) {
+  const std::string message = input_error(settings("euler", 5e-6));
+  EXPECT_NE(message.find("solver.method"), std::string::npos) << message;
+  EXPECT_NE(message.find("euler"), std::string::npos) << message;
+  for (const std::string& name : integrator_names())
+    EXPECT_NE(message.find(name), std::string::npos) << message;
+}
+
+TEST(IntegratorFactory, BadStepNamesSolverDt) {
+  for (const double dt : {0.0, -1e-6, std::numeric_limits<double>::quiet_NaN(),
+                          std::numeric_limits<double>::infinity()})
+    EXPECT_NE(input_error(settings("rk4", dt)).find("solver.dt"), std::string::npos) << dt;
+}
+
+TEST(IntegratorFactory, BadTolerancesNameSolverTolerance) {
+  for (const double rtol : {0.0, -1e-6, 0.2, std::numeric_limits<double>::quiet_NaN()})
+    EXPECT_NE(input_error(settings("rkf45", 5e-6, rtol)).find("solver.tolerance"),
+              std::string::npos)
+        << rtol;
+  for (const double atol : {0.0, -1e-12, std::numeric_limits<double>::infinity()})
+    EXPECT_NE(input_error(settings("bdf", 5e-6, 1e-6, atol)).find("solver.tolerance"),
+              std::string::npos)
+        << atol;
+  EXPECT_EQ(input_error(settings("newmark", 5e-6, 0.1)), "");  // the upper end is allowed
+}
+
+TEST(IntegratorFactory, EveryNameMakesThatMethod) {
+  EXPECT_EQ(integrator_names(),
+            (std::vector<std::string>{"rk4", "rkf45", "rk8pd", "newmark", "bdf"}));
+  for (const std::string& name : integrator_names())
+    EXPECT_EQ(make_integrator(settings(name, 5e-6))->name(), name);
+}
+
+TEST(IntegratorFactory, BadCallsAreInputErrors) {
+  const auto integrator = make_integrator(settings("rk4", 5e-6));
+  const Observer none;
+  EXPECT_THROW(integrator->integrate(kLinear, 0.0, {kQ0, 0.0}, {0.0}, {1e-3}, none), InputError);
+  EXPECT_THROW(integrator->integrate(kLinear, 0.0, {kQ0}, {0.0}, {2e-3, 1e-3}, none), InputError);
+  EXPECT_THROW(integrator->integrate(kLinear, 1.0, {kQ0}, {0.0}, {0.5}, none), InputError);
+  EXPECT_THROW(integrator->integrate(kLinear, 0.0, {std::nan("")}, {0.0}, {1e-3}, none),
+               InputError);
+}
+
+// ---------------------------------------------------------------------------------------------
+// The default Jacobian
+
+TEST(IntegratorJacobian, CentralDifferencesMatchAnalytic) {
+  // The Hertz oscillator's analytic Jacobian against the base-class default; the stiff pair
+  // (linear, coupled, with damping) against its exact matrix.
+  const HertzOscillator& h = kHertz;
+  const double q = 0.8 * h.equilibrium(), v = 0.01;
+  double dfdq = 0, dfdv = 0, fd_q = 0, fd_v = 0;
+  h.force_jacobian(0.0, &q, &v, &dfdq, &dfdv);
+  h.MechanicalSystem::force_jacobian(0.0, &q, &v, &fd_q, &fd_v);
+  EXPECT_NEAR(fd_q, dfdq, 1e-8 * std::abs(dfdq));
+  EXPECT_NEAR(fd_v, dfdv, 1e-12);
+
+  const StiffPair p;
+  const double qq[2] = {1e-4, -2e-5}, vv[2] = {0.1, -0.3};
+  double jq[4], jv[4];
+  p.force_jacobian(0.0, qq, vv, jq, jv);
+  const double exact_q[4] = {-p.k1 - p.k2, p.k2, p.k2, -p.k2};
+  const double exact_v[4] = {-p.c2, p.c2, p.c2, -p.c2};
+  for (int i = 0; i < 4; ++i) {
+    EXPECT_NEAR(jq[i], exact_q[i], 1e-8 * p.k2) << i;
+    EXPECT_NEAR(jv[i], exact_v[i], 1e-8 * p.c2) << i;
+  }
+}
+
+}  // namespace
+}  // namespace bearing
