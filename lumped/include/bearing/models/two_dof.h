@@ -1,0 +1,28 @@
+#pragma once
+// The 2-DOF model of seeds 001–003 (MODEL.md §4): the inner-ring centre (x, y) on Z Hertzian
+// balls, outer ring fixed, inner ring turning at ω_i.
+//
+//   m ẍ + c ẋ + Σ_j Q_j cos θ_j = F_x + F_u cos ω_i t
+//   m ÿ + c ẏ + Σ_j Q_j sin θ_j = F_y + F_u sin ω_i t − m g   (−m g only with gravity)
+//
+//   Q_j = K_j [δ_j]_+^{3/2},  δ_j = x cos θ_j + y sin θ_j − γ + Π_i(θ_j − ω_i t) + Π_o(θ_j) − ΔD_j,
+//   θ_j = φ₀ + 2πj/Z + ω_c t,  ω_c = cage_speed(bearing, ω_i),  γ = P_d/2,  F_u = m_u e ω_i².
+//
+// K_j = K (TVD) or, with waviness_stiffness (TVDS, seed 002), the series constant of the ball
+// recomputed from each race's waviness-modified rolling-direction curvature. DOFs {"x", "y"} [m];
+// forces [N]. The analytic Jacobian is provided (∂f/∂q from the contacts, ∂f/∂v = −c I).
+
+#include <memory>
+
+#include "bearing/models/bearing_model.h"
+#include "bearing/models/model_inputs.h"
+
+namespace bearing {
+
+/// Builds the 2-DOF model. Throws InputError naming the case key for invalid inputs (mass ≤ 0,
+/// negative damping, a waviness order < 1, a ball-error list of the wrong length, ...).
+/// initial_displacement() is the static solution (solve_static_load) under the constant radial
+/// load (with gravity if on), without waviness or size errors.
+std::unique_ptr<BearingModel> make_two_dof_model(const ModelInputs& inputs);
+
+}  // namespace bearing

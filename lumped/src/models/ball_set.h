@@ -1,0 +1,455 @@
+#pragma once
+// Private to the lumped models (not installed): the ball set at one instant — each ball's angle,
+// its excitation e_j (waviness on both races and its size error) and its contact constant K_j —
+// evaluated without allocation and without one sin() per ball or per harmonic.
+//
+// Ball angles (MODEL.md §1): θ_j(t) = φ₀ + 2πj/Z + ω_c t, j = 0…Z−1. (cos θ_j, sin θ_j) is the
+// precomputed (cos, sin) of φ₀ + 2πj/Z rotated by the one (cos, sin) of ω_c t per instant.
+//
+// Waviness (MODEL.md §5): Π(φ) = Σ_s A_s sin(N_s φ + ψ_s) at the race-fixed contact angle,
+// φ_j = θ_j on the outer race and θ_j − ω_i t on the inner race. Written per order n as
+//     Π(φ) = Σ_n a_n sin nφ + b_n cos nφ,   a_n = Σ_{N_s = n} A_s cos ψ_s,  b_n = Σ A_s sin ψ_s.
+// The balls are evenly spaced on each race, φ_j = φ_ref + 2πj/Z, so with β_nj = 2π n j / Z
+//     a_n sin(nφ_j) + b_n cos(nφ_j) = P_n cos β_nj + Q_n sin β_nj,
+//     P_n = a_n sin nφ_ref + b_n cos nφ_ref,   Q_n = a_n cos nφ_ref − b_n sin nφ_ref,
+// and β_nj depends on n only through k = n mod Z. Hence, per instant,
+//   1. sin nφ_ref, cos nφ_ref for n = 1…N_max by the Chebyshev recurrence
+//      sin((n+1)φ) = 2 cos φ sin(nφ) − sin((n−1)φ) (likewise cos) from the one (cos, sin) of φ_ref
+//      (run as Z independent chains of step Zφ, one per bin: RaceExcitation);
+//   2. fold the orders into Z bins, U_k = Σ_{n≡k} P_n, V_k = Σ_{n≡k} Q_n;
+//   3. Π(φ_j) = Σ_k U_k cos(2πkj/Z) + V_k sin(2πkj/Z) with a precomputed Z×Z table.
+// That is ~8 flops per order plus 4 per (ball, bin), instead of one recurrence per ball (for the
+// 6308 with seed 003's 97 orders: ~1000 instead of ~5000 flops). It is also the physics of
+// waviness seen by Z balls: orders N and N ± Z act alike on the ball set.
+//
+// TVDS (seed 002, MODEL.md §3): the waviness also changes the raceway curvature in the rolling
+// direction. For a race of radius R whose surface sits at R + ε(φ) from the race centre, the
+// curvature of the polar curve r(φ) = R + ε is
+//     κ = (r² + 2r'² − r r'') / (r² + r'²)^{3/2} = 1/R − (ε + ε'')/R² + O(ε²),
+// (first order: numerator R² + 2Rε − Rε'', denominator R³(1 + 3ε/R)). With Harris's signs
+// (convex positive) and Π positive toward the ball:
+//   - inner race (convex, the ball outside it): ε = +Π_i, ρ_II1 = +κ = 1/R_i − (Π_i + Π_i'')/R_i²;
+//   - outer race (concave, the ball inside it): ε = −Π_o, ρ_II1 = −κ = −1/R_o − (Π_o + Π_o'')/R_o².
+// So on both races Δρ_II1 = −(Π + Π'')/R², which for Π = A sin(Nφ) is +A(N²−1) sin(Nφ)/R²: a
+// crest makes the inner race more convex and the outer race less concave (N = 1, a shifted
+// circle, changes nothing). R = d_i/2, d_o/2 (exact for α = 0; for α ≠ 0 the same first-order
+// change is added to Harris's ρ_II1). Per contact, with Δ = Δρ_II1, Σρ = Σρ₀ + Δ and
+// F = (ρ_II1 − ρ_II2)/Σρ = (num₀ + Δ)/(Σρ₀ + Δ) (the ball terms cancel in the numerator), and
+// K = 2^{5/2} / (3η δ*^{3/2} Σρ^{1/2}) gives
+//     K^{−2/3} = K₀^{−2/3} · g(Δ),   g(Δ) = [δ*(F(Δ))/δ*(F₀)] · (1 + Δ/Σρ₀)^{1/3},
+// scaled from the race's own constant K₀ so that zero waviness reproduces TVD exactly (and a
+// calibrated K₀ keeps its calibration). g depends on Δ alone: it is tabulated once, with the
+// case's Hertz method, over every Δ the waviness can reach (|Π + Π''| ≤ Σ A_s |N_s² − 1|), so
+// the hot loop does one table lookup per race contact — no root finding, no cbrt. The ball
+// between both races: K_j = (K_i^{−2/3} + K_o^{−2/3})^{−3/2}.
+
+#include <algorithm>
+#include <cmath>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "bearing/bearing.h"
+#include "bearing/contact.h"
+#include "bearing/errors.h"
+#include "bearing/excitation.h"
+#include "bearing/hertz.h"
+#include "bearing/models/model_inputs.h"
+#include "bearing/units.h"
+
+namespace bearing::detail {
+
+/// Largest ball count the lumped models accept (per-instant scratch lives on the stack).
+constexpr int kMaxBalls = 256;
+constexpr double kTwoPi = 6.283185307179586476925286766559;
+constexpr double kGravity = 9.80665;  ///< standard gravity g [m/s²]
+
+/// The ball set at one instant (filled by BallSet::evaluate; lives on the caller's stack).
+struct BallFrame {
+  double cos_theta[kMaxBalls];
+  double sin_theta[kMaxBalls];
+  double excitation[kMaxBalls];  ///< e_j = Π_i(θ_j − ω_i t) + Π_o(θ_j) − ΔD_j [m]
+  double stiffness[kMaxBalls];   ///< K_j [N/m^n] (all equal to K unless TVDS)
+  double cos_shaft = 1;          ///< cos ω_i t
+  double sin_shaft = 0;          ///< sin ω_i t
+};
+
+/// The relative compliance g(Δ) = K(Δ)^{−2/3} / K₀^{−2/3} = [δ*(F(Δ))/δ*(F₀)] · (1 + Δ/Σρ₀)^{1/3}
+/// of one race contact whose rolling-direction curvature changed by Δ [1/m], with
+/// F(Δ) = (num₀ + Δ)/(Σρ₀ + Δ): a function of Δ alone, tabulated once on a uniform grid through
+/// Δ = 0 (where it is exactly 1) and interpolated by cubic Hermite with fourth-order difference
+/// slopes, so the hot loop needs neither root finding nor cbrt.
+class CurvatureComplianceTable {
+ public:
+  CurvatureComplianceTable() = default;
+  CurvatureComplianceTable(const HertzSolution& method, double num0, double sum0, double bound,
+                           const std::string& key) {
+    // 32 intervals on each side of Δ = 0 up to ±bound (a floor on h for bound → 0).
+    h_ = std::max(bound / 32.0, 1e-9 * sum0);
+    const int side = static_cast<int>(std::ceil(bound / h_)) + 1;
+    const int ghost = 2;  // extra nodes for the difference slopes at the ends
+    const int nodes = 2 * (side + ghost) + 1;
+    std::vector<double> g(nodes);
+    const double f0 = num0 / sum0;
+    const double ds0 = method.shape(f0).delta_star;
+    for (int k = 0; k < nodes; ++k) {
+      const int i = k - side - ghost;
+      if (i == 0) {
+        g[k] = 1.0;
+        continue;
+      }
+      const double d = i * h_;
+      const double sum = sum0 + d, f = (num0 + d) / sum;
+      if (!(sum > 0 && f >= 0 && f < 1))
+        throw InputError(key +
+                         " with model.waviness_stiffness (TVDS): the waviness changes the "
+                         "raceway curvature by up to " +
+                         format_number(bound) +
+                         " 1/m, which takes the contact's curvature sum to " + format_number(sum) +
+                         " 1/m and F(rho) to " + format_number(f) +
+                         ": too large for the first-order curvature model");
+      g[k] = method.shape(f).delta_star / ds0 * std::cbrt(sum / sum0);
+    }
+    first_ = -side * h_;
+    const int n = 2 * side + 1;
+    y_.resize(n);
+    m_.resize(n);
+    for (int i = 0; i < n; ++i) {
+      const int k = i + ghost;
+      y_[i] = g[k];
+      m_[i] = (g[k - 2] - 8.0 * g[k - 1] + 8.0 * g[k + 1] - g[k + 2]) / 12.0;  // dg/du, u = Δ/h
+    }
+  }
+
+  /// g(Δ); exact at the nodes (1 at Δ = 0).
+  double operator()(double d) const {
+    const double u = (d - first_) / h_;
+    const int last = static_cast<int>(y_.size()) - 2;
+    int i = static_cast<int>(std::floor(u));
+    i = std::min(std::max(i, 0), last);
+    const double t = u - i;
+    const double t2 = t * t, t3 = t2 * t;
+    return (2 * t3 - 3 * t2 + 1) * y_[i] + (t3 - 2 * t2 + t) * m_[i] +
+           (-2 * t3 + 3 * t2) * y_[i + 1] + (t3 - t2) * m_[i + 1];
+  }
+
+ private:
+  double first_ = 0, h_ = 1;
+  std::vector<double> y_, m_;
+};
+
+/// One race's waviness, folded by order mod Z (see the header comment), for all balls at once.
+///
+/// Layout: order n = mZ + k sits in row m, column k (k = 0…Z−1, m = 0…rows−1); the columns are the
+/// bins. Column k is one Chebyshev chain with step Zφ,
+///     sin((n+Z)φ) = 2 cos(Zφ) sin(nφ) − sin((n−Z)φ)   (likewise cos),
+/// started from sin(kφ) and sin((k−Z)φ) = −sin((Z−k)φ), which come from the step-φ recurrence
+/// over the first Z orders. Each row is then a loop over contiguous arrays with no dependence
+/// between columns (it vectorises), and each column accumulates its own bin. When N_max < Z there
+/// is one row of N_max + 1 columns and no chain step.
+class RaceExcitation {
+ public:
+  RaceExcitation() = default;
+  RaceExcitation(const Waviness& w, int balls, bool curvature) : balls_(balls) {
+    const int order_max = w.max_order();
+    if (order_max == 0) return;
+    rows_ = order_max / balls + 1;
+    width_ = rows_ == 1 ? order_max + 1 : balls;
+    a_.assign(rows_ * width_, 0.0);
+    b_.assign(rows_ * width_, 0.0);
+    for (const WavinessHarmonic& h : w.harmonics) {
+      const int i = (h.order / balls) * width_ + h.order % balls;
+      a_[i] += h.amplitude * std::cos(h.phase);
+      b_[i] += h.amplitude * std::sin(h.phase);
+    }
+    curvature_ = curvature;
+    if (curvature) {
+      weight_.resize(rows_ * width_);
+      for (int m = 0; m < rows_; ++m)
+        for (int k = 0; k < width_; ++k) {
+          const double n = double(m) * balls + k;
+          weight_[m * width_ + k] = 1.0 - n * n;
+        }
+    }
+  }
+
+  bool empty() const { return rows_ == 0; }
+
+  /// Adds Π(φ_ref + 2πj/Z) to profile[j] and, with curvature, writes (Π + Π'')(φ_j) to
+  /// curv[j]; (c, s) = (cos φ_ref, sin φ_ref); table[j*Z + k] = (cos, sin)(2πkj/Z).
+  void evaluate(double c, double s, const double* table_cos, const double* table_sin,
+                double* profile, double* curv) const {
+    if (rows_ == 0) return;
+    if (curvature_)
+      evaluate_impl<true>(c, s, table_cos, table_sin, profile, curv);
+    else
+      evaluate_impl<false>(c, s, table_cos, table_sin, profile, curv);
+  }
+
+ private:
+  template <bool kCurvature>
+  void evaluate_impl(double c, double s, const double* table_cos, const double* table_sin,
+                     double* profile, double* curv) const {
+    const int Z = balls_, W = width_;
+    // sin(kφ), cos(kφ) for k = 0…W−1 (the chains' first row), and for k = Z if rows follow.
+    double sn[kMaxBalls], cn[kMaxBalls], sp[kMaxBalls], cp[kMaxBalls];
+    sn[0] = 0.0, cn[0] = 1.0;
+    if (W > 1) sn[1] = s, cn[1] = c;
+    const double two_c = 2.0 * c;
+    for (int k = 2; k < W; ++k) {
+      sn[k] = two_c * sn[k - 1] - sn[k - 2];
+      cn[k] = two_c * cn[k - 1] - cn[k - 2];
+    }
+    double two_cz = 0.0;
+    if (rows_ > 1) {  // W == Z: the previous row, orders k − Z, and cos Zφ
+      const double sz = two_c * sn[Z - 1] - (Z >= 2 ? sn[Z - 2] : 0.0);
+      const double cz = two_c * cn[Z - 1] - (Z >= 2 ? cn[Z - 2] : 1.0);
+      sp[0] = -sz, cp[0] = cz;
+      for (int k = 1; k < Z; ++k) sp[k] = -sn[Z - k], cp[k] = cn[Z - k];
+      two_cz = 2.0 * cz;
+    }
+    double U[kMaxBalls], V[kMaxBalls], U2[kMaxBalls], V2[kMaxBalls];
+    std::fill(U, U + W, 0.0);
+    std::fill(V, V + W, 0.0);
+    if (kCurvature) {
+      std::fill(U2, U2 + W, 0.0);
+      std::fill(V2, V2 + W, 0.0);
+    }
+    for (int m = 0; m < rows_; ++m) {
+      const double* a = a_.data() + m * W;
+      const double* b = b_.data() + m * W;
+      const double* wt = kCurvature ? weight_.data() + m * W : nullptr;
+      for (int k = 0; k < W; ++k) {
+        const double p = a[k] * sn[k] + b[k] * cn[k];
+        const double q = a[k] * cn[k] - b[k] * sn[k];
+        U[k] += p;
+        V[k] += q;
+        if (kCurvature) {
+          U2[k] += wt[k] * p;
+          V2[k] += wt[k] * q;
+        }
+      }
+      if (m + 1 == rows_) break;
+      for (int k = 0; k < W; ++k) {
+        const double s_next = two_cz * sn[k] - sp[k];
+        const double c_next = two_cz * cn[k] - cp[k];
+        sp[k] = sn[k], cp[k] = cn[k];
+        sn[k] = s_next, cn[k] = c_next;
+      }
+    }
+    for (int j = 0; j < Z; ++j) {
+      const double* tc = table_cos + j * Z;
+      const double* ts = table_sin + j * Z;
+      double sum = 0.0;
+      for (int k = 0; k < W; ++k) sum += U[k] * tc[k] + V[k] * ts[k];
+      profile[j] += sum;
+      if (kCurvature) {
+        double sum2 = 0.0;
+        for (int k = 0; k < W; ++k) sum2 += U2[k] * tc[k] + V2[k] * ts[k];
+        curv[j] = sum2;
+      }
+    }
+  }
+
+  int balls_ = 0;
+  int rows_ = 0;   // 0: no waviness
+  int width_ = 0;  // columns per row: Z, or N_max + 1 < Z for a single row
+  bool curvature_ = false;
+  std::vector<double> a_, b_, weight_;  // row-major, rows_ × width_
+};
+
+/// Per-race TVDS constants: K^{−2/3} = k0 · g(Δ), Δ = −(Π + Π'')/R².
+struct RaceStiffness {
+  bool varies = false;
+  double k0 = 0;            ///< K₀^{−2/3}
+  double minus_inv_r2 = 0;  ///< −1/R² [1/m²]
+  CurvatureComplianceTable table;
+
+  double compliance(double pi_plus_pi2) const { return k0 * table(pi_plus_pi2 * minus_inv_r2); }
+};
+
+inline void require_finite(double v, const std::string& key, const char* what) {
+  if (!std::isfinite(v)) throw InputError(key + " = " + format_number(v) + ": " + what);
+}
+
+inline void validate_waviness(const Waviness& w, const std::string& key) {
+  for (const WavinessHarmonic& h : w.harmonics) {
+    if (h.order < 1)
+      throw InputError(key + ": order = " + std::to_string(h.order) +
+                       ": must be an integer >= 1 (waves per revolution)");
+    if (!(std::isfinite(h.amplitude) && h.amplitude >= 0))
+      throw InputError(key + ": amplitude = " + format_number(h.amplitude) + " m (order " +
+                       std::to_string(h.order) + "): must be finite and >= 0");
+    if (!std::isfinite(h.phase))
+      throw InputError(key + ": phase = " + format_number(h.phase) + " rad (order " +
+                       std::to_string(h.order) + "): must be finite");
+  }
+}
+
+/// Checks of the ModelInputs fields every lumped model uses (InputError naming the case key).
+inline void validate_common_inputs(const ModelInputs& in) {
+  in.bearing.validate();
+  if (in.bearing.balls > kMaxBalls)
+    throw InputError("bearing.balls = " + std::to_string(in.bearing.balls) +
+                     ": the lumped models support at most " + std::to_string(kMaxBalls) + " balls");
+  if (!(std::isfinite(in.contact.K) && in.contact.K > 0))
+    throw InputError("model.contact: load-deflection constant K = " + format_number(in.contact.K) +
+                     " N/m^n must be positive and finite");
+  if (!(std::isfinite(in.contact.exponent) && in.contact.exponent >= 1))
+    throw InputError("model.contact: load-deflection exponent " +
+                     format_number(in.contact.exponent) + " must be finite and >= 1");
+  require_finite(in.inner_speed, "operation.speed", "rad/s: must be finite");
+  require_finite(in.cage_phase, "cage phase", "rad: must be finite");
+  if (!in.load.allFinite())
+    throw InputError("operation.load = (" + format_number(in.load.x()) + ", " +
+                     format_number(in.load.y()) + ") N: must be finite");
+  if (!(std::isfinite(in.unbalance) && in.unbalance >= 0))
+    throw InputError("operation.unbalance = " + format_number(in.unbalance) +
+                     " kg m: must be finite and >= 0");
+  if (!(std::isfinite(in.mass) && in.mass > 0))
+    throw InputError("rotor.mass = " + format_number(in.mass) +
+                     " kg: the inner ring and shaft need a positive mass");
+  if (!(std::isfinite(in.damping) && in.damping >= 0))
+    throw InputError("rotor.damping = " + format_number(in.damping) +
+                     " N s/m: must be finite and >= 0");
+  validate_waviness(in.inner_waviness, "waviness.inner");
+  validate_waviness(in.outer_waviness, "waviness.outer");
+  if (!in.ball_size_errors.empty()) {
+    if (static_cast<int>(in.ball_size_errors.size()) != in.bearing.balls)
+      throw InputError("ball_errors.values: " + std::to_string(in.ball_size_errors.size()) +
+                       " values given for " + std::to_string(in.bearing.balls) +
+                       " balls; give one per ball");
+    for (double e : in.ball_size_errors)
+      require_finite(e, "ball_errors.values", "m: each ball-size error must be finite");
+  }
+}
+
+/// Geometry, excitation and contact constants of the ball set, evaluated per instant.
+class BallSet {
+ public:
+  /// `cage_speed` ω_c [rad/s]; the inputs must have passed validate_common_inputs.
+  BallSet(const ModelInputs& in, double cage_speed)
+      : balls_(in.bearing.balls),
+        cage_speed_(cage_speed),
+        inner_speed_(in.inner_speed),
+        K_(in.contact.K),
+        exponent_(in.contact.exponent) {
+    const int Z = balls_;
+    base_cos_.resize(Z);
+    base_sin_.resize(Z);
+    for (int j = 0; j < Z; ++j) {
+      base_cos_[j] = std::cos(in.cage_phase + kTwoPi * j / Z);
+      base_sin_[j] = std::sin(in.cage_phase + kTwoPi * j / Z);
+    }
+    size_error_.assign(Z, 0.0);
+    if (!in.ball_size_errors.empty()) size_error_ = in.ball_size_errors;
+
+    const bool tvds = in.waviness_stiffness;
+    inner_ = RaceExcitation(in.inner_waviness, Z, tvds);
+    outer_ = RaceExcitation(in.outer_waviness, Z, tvds);
+    if (!inner_.empty() || !outer_.empty()) {
+      table_cos_.resize(Z * Z);
+      table_sin_.resize(Z * Z);
+      for (int j = 0; j < Z; ++j)
+        for (int k = 0; k < Z; ++k) {
+          const int m = (k * j) % Z;  // 2πkj/Z reduced exactly
+          table_cos_[j * Z + k] = std::cos(kTwoPi * m / Z);
+          table_sin_[j * Z + k] = std::sin(kTwoPi * m / Z);
+        }
+    }
+    if (tvds && (!inner_.empty() || !outer_.empty())) setup_tvds(in);
+  }
+
+  int balls() const { return balls_; }
+  double cage_speed() const { return cage_speed_; }
+  double K() const { return K_; }
+  double exponent() const { return exponent_; }
+  bool tvds() const { return inner_stiffness_.varies || outer_stiffness_.varies; }
+
+  /// Fills `fr` for time t [s].
+  void evaluate(double t, BallFrame& fr) const {
+    const int Z = balls_;
+    const double cc = std::cos(cage_speed_ * t), sc = std::sin(cage_speed_ * t);
+    fr.cos_shaft = std::cos(inner_speed_ * t);
+    fr.sin_shaft = std::sin(inner_speed_ * t);
+    for (int j = 0; j < Z; ++j) {
+      fr.cos_theta[j] = base_cos_[j] * cc - base_sin_[j] * sc;
+      fr.sin_theta[j] = base_sin_[j] * cc + base_cos_[j] * sc;
+      fr.excitation[j] = -size_error_[j];
+    }
+    double curv_i[kMaxBalls], curv_o[kMaxBalls];
+    // Outer race: φ_j = θ_j, reference θ_0. Inner race: φ_j = θ_j − ω_i t.
+    const double c0 = fr.cos_theta[0], s0 = fr.sin_theta[0];
+    outer_.evaluate(c0, s0, table_cos_.data(), table_sin_.data(), fr.excitation, curv_o);
+    const double ci = c0 * fr.cos_shaft + s0 * fr.sin_shaft;
+    const double si = s0 * fr.cos_shaft - c0 * fr.sin_shaft;
+    inner_.evaluate(ci, si, table_cos_.data(), table_sin_.data(), fr.excitation, curv_i);
+
+    if (!tvds()) {
+      std::fill(fr.stiffness, fr.stiffness + Z, K_);
+      return;
+    }
+    for (int j = 0; j < Z; ++j) {
+      const double ki =
+          inner_stiffness_.varies ? inner_stiffness_.compliance(curv_i[j]) : inner_stiffness_.k0;
+      const double ko =
+          outer_stiffness_.varies ? outer_stiffness_.compliance(curv_o[j]) : outer_stiffness_.k0;
+      const double s = ki + ko;  // K_j^{−2/3}
+      fr.stiffness[j] = 1.0 / (s * std::sqrt(s));
+    }
+  }
+
+ private:
+  void setup_tvds(const ModelInputs& in) {
+    if (in.contact.exponent != 1.5)
+      throw InputError(
+          "model.waviness_stiffness: TVDS needs the Hertz exponent 3/2 (the contact "
+          "law has " +
+          format_number(in.contact.exponent) + ")");
+    if (!(in.contact.inner.K > 0 && in.contact.outer.K > 0 && std::isfinite(in.contact.inner.K) &&
+          std::isfinite(in.contact.outer.K)))
+      throw InputError("model.waviness_stiffness: TVDS needs the per-race constants K_i = " +
+                       format_number(in.contact.inner.K) +
+                       ", K_o = " + format_number(in.contact.outer.K) + " N/m^1.5 (positive)");
+    const std::unique_ptr<HertzSolution> method = make_hertz_solution(in.hertz_method);
+    setup_race(in, Race::inner, in.inner_waviness, *method, inner_stiffness_);
+    setup_race(in, Race::outer, in.outer_waviness, *method, outer_stiffness_);
+  }
+
+  static void setup_race(const ModelInputs& in, Race race, const Waviness& w,
+                         const HertzSolution& method, RaceStiffness& rs) {
+    const RaceContact& rc = race == Race::inner ? in.contact.inner : in.contact.outer;
+    rs.k0 = std::pow(rc.K, -2.0 / 3.0);
+    if (w.empty()) return;
+    const Curvatures cv = race_curvatures(in.bearing, race);
+    const double R = 0.5 * (race == Race::inner ? in.bearing.inner_raceway_diameter()
+                                                : in.bearing.outer_raceway_diameter());
+    rs.minus_inv_r2 = -1.0 / (R * R);
+    // |Π + Π''| ≤ Σ_s A_s |N_s² − 1| bounds the curvature change.
+    double bound = 0;
+    for (const WavinessHarmonic& h : w.harmonics)
+      bound += h.amplitude * std::abs(double(h.order) * h.order - 1.0);
+    bound /= R * R;
+    const double num0 = (cv.ball_1 - cv.ball_2) + (cv.race_1 - cv.race_2);
+    rs.table = CurvatureComplianceTable(method, num0, cv.sum(), bound,
+                                        race == Race::inner ? "waviness.inner" : "waviness.outer");
+    rs.varies = true;
+  }
+
+  int balls_;
+  double cage_speed_;
+  double inner_speed_;
+  double K_;
+  double exponent_;
+  std::vector<double> base_cos_, base_sin_, size_error_;
+  std::vector<double> table_cos_, table_sin_;
+  RaceExcitation inner_, outer_;
+  RaceStiffness inner_stiffness_, outer_stiffness_;
+};
+
+/// Q = K δ^n for δ > 0 (fast path for n = 3/2).
+inline double contact_load(double K, double n, double delta) {
+  return n == 1.5 ? K * delta * std::sqrt(delta) : K * std::pow(delta, n);
+}
+
+}  // namespace bearing::detail

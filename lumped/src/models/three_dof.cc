@@ -1,0 +1,376 @@
+// The 3-DOF model with axial load / preload (MODEL.md §4, seed 001); see three_dof.h for the
+// geometry, the equations and the reductions to the 2-DOF model.
+//
+// Numerics. δ_j = L_j − A₀ subtracts two lengths of order A₀ (≈ 0.6 mm for the 6308) to get a
+// few micrometres. It is formed without that cancellation:
+//     L² − A₀² = (w₀ + z)² + (u₀ + r)² − (w₀² + u₀²) = z (2w₀ + z) + r (2u₀ + r),
+//     δ = (L² − A₀²)/(L + A₀),
+// with u₀ = A₀ − P_d/2 and w₀ = sqrt((P_d/2)(2A₀ − P_d/2)) (no cos α₀ rounding).
+//
+// Jacobian. With e_j = (cos θ_j, sin θ_j, 0), e_z = (0, 0, 1) and the contact normal
+// n_j = cos α_j e_j + sin α_j e_z = ∇δ_j, the Hessian of L_j is (e_j e_jᵀ + e_z e_zᵀ − n_j
+// n_jᵀ)/L_j, so the contact force f = −Σ Q_j n_j has
+//     ∂f/∂q = −Σ_j [ n K_j δ_j^{n−1} n_j n_jᵀ + (Q_j/L_j)(e_j e_jᵀ + e_z e_zᵀ − n_j n_jᵀ) ],
+// the second term being the geometric stiffness of a load turning with the contact line.
+
+#include "bearing/models/three_dof.h"
+
+#include <cmath>
+#include <limits>
+#include <memory>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include <Eigen/Dense>
+
+#include "ball_set.h"
+#include "bearing/kinematics.h"
+#include "bearing/static_load.h"
+
+namespace bearing {
+
+namespace {
+
+// The fixed geometry of the groove centres (three_dof.h).
+struct GrooveGeometry {
+  double A0 = 0;  // distance of the groove curvature centres [m]
+  double u0 = 0;  // A₀ cos α₀ [m]
+  double w0 = 0;  // A₀ sin α₀ [m]
+};
+
+GrooveGeometry groove_geometry(const Bearing& b) {
+  GrooveGeometry g;
+  g.A0 = (b.inner_conformity + b.outer_conformity - 1.0) * b.ball_diameter;
+  const double half = 0.5 * b.clearance;
+  if (!(g.A0 > 0 && half < g.A0))
+    throw InputError("bearing.clearance = " + format_number(b.clearance) +
+                     " m: the 3-DOF model needs P_d < 2 A0 = " + format_number(2 * g.A0) +
+                     " m (A0 = (f_i + f_o - 1) D), i.e. a free contact angle below 90 deg");
+  g.u0 = g.A0 - half;
+  g.w0 = std::sqrt(half * (2.0 * g.A0 - half));
+  return g;
+}
+
+// δ for radial offset r and axial position z, and L = A₀ + δ.
+inline double approach(const GrooveGeometry& g, double r, double z, double& L) {
+  const double w = g.w0 + z, a = g.u0 + r;
+  L = std::sqrt(w * w + a * a);
+  return (z * (2.0 * g.w0 + z) + r * (2.0 * g.u0 + r)) / (L + g.A0);
+}
+
+void validate_axial(const ModelInputs& in) {
+  if (!std::isfinite(in.axial_load))
+    throw InputError("operation.axial_load = " + format_number(in.axial_load) +
+                     " N: must be finite");
+  if (!(std::isfinite(in.axial_mass) && in.axial_mass >= 0))
+    throw InputError("rotor.axial_mass = " + format_number(in.axial_mass) +
+                     " kg: must be finite and >= 0 (0: same as rotor.mass)");
+  if (!(std::isfinite(in.axial_damping) && in.axial_damping >= 0))
+    throw InputError("rotor.axial_damping = " + format_number(in.axial_damping) +
+                     " N s/m: must be finite and >= 0");
+}
+
+// The axial static state for load F (sign included): Z K δ^n sin α = F.
+AxialPreload axial_state(const GrooveGeometry& g, int Z, double K, double n, double F) {
+  AxialPreload p;
+  if (F == 0) {
+    p.z = -g.w0;  // centred: no ball loaded, α = 0
+    return p;
+  }
+  const double load = std::abs(F);
+  // h(δ) = Z K δ^n sin α(δ) − |F|, sin α = sqrt(L² − u₀²)/L, L = A₀ + δ: increasing in δ ≥ 0.
+  // L² − u₀² = (A₀ − u₀ + δ)(A₀ + u₀ + δ) = (P_d/2 + δ)(2A₀ − P_d/2 + δ), without cancellation.
+  const double half = g.A0 - g.u0;
+  auto sin_alpha = [&](double d) {
+    const double L = g.A0 + d;
+    return std::sqrt((half + d) * (g.A0 + g.u0 + d)) / L;
+  };
+  auto h = [&](double d) { return Z * K * std::pow(d, n) * sin_alpha(d) - load; };
+  // Bracket: h(0) = −|F| < 0; grow from the estimate with sin α = 1.
+  double lo = 0.0, hi = std::pow(load / (Z * K), 1.0 / n);
+  for (int k = 0; h(hi) < 0; ++k) {
+    lo = hi;
+    hi *= 2.0;
+    if (k > 200 || !std::isfinite(hi))
+      throw SolverError("solve_axial_preload: could not bracket the ball approach for F_z = " +
+                        format_number(F) + " N");
+  }
+  // Regula falsi with the Illinois rule (bisection when the secant point leaves the bracket):
+  // superlinear, and it cannot leave the bracket.
+  double h_lo = h(lo), h_hi = h(hi);
+  int side = 0;
+  double d = hi;
+  for (int it = 0; it < 300; ++it) {
+    d = lo - h_lo * (hi - lo) / (h_hi - h_lo);
+    if (!(d > lo && d < hi)) d = 0.5 * (lo + hi);
+    const double hd = h(d);
+    if (hd == 0) break;
+    if (hd < 0) {
+      lo = d, h_lo = hd;
+      if (side == -1) h_hi *= 0.5;
+      side = -1;
+    } else {
+      hi = d, h_hi = hd;
+      if (side == 1) h_lo *= 0.5;
+      side = 1;
+    }
+    if (hi - lo <= 4 * std::numeric_limits<double>::epsilon() * hi) break;
+  }
+  const double s = sin_alpha(d);
+  const double w = (g.A0 + d) * s;  // w₀ + z for F > 0
+  p.z = F > 0 ? w - g.w0 : -w - g.w0;
+  p.contact_angle = F > 0 ? std::asin(s) : -std::asin(s);
+  p.ball_load = K * std::pow(d, n);
+  const double residual = std::abs(Z * p.ball_load * s - load);
+  if (!(residual <= 1e-10 * load))
+    throw SolverError("solve_axial_preload: no axial equilibrium for F_z = " + format_number(F) +
+                      " N (relative residual " + format_number(residual / load) + ")");
+  return p;
+}
+
+double preload_cage_speed(const Bearing& b, double inner_speed, double contact_angle) {
+  Bearing loaded = b;
+  loaded.contact_angle = std::abs(contact_angle);
+  return cage_speed(loaded, inner_speed);
+}
+
+class ThreeDofModel final : public BearingModel {
+ public:
+  explicit ThreeDofModel(const ModelInputs& in)
+      : geometry_(checked_geometry(in)),
+        preload_(axial_state(geometry_, in.bearing.balls, in.contact.K, in.contact.exponent,
+                             in.axial_load)),
+        set_(in, preload_cage_speed(in.bearing, in.inner_speed, preload_.contact_angle)),
+        mass_(in.mass),
+        axial_mass_(in.axial_mass > 0 ? in.axial_mass : in.mass),
+        damping_(in.damping),
+        axial_damping_(in.axial_damping),
+        load_x_(in.load.x()),
+        load_y_(in.load.y() - (in.gravity ? in.mass * detail::kGravity : 0.0)),
+        load_z_(in.axial_load),
+        unbalance_force_(in.unbalance * in.inner_speed * in.inner_speed),
+        phase_(in.cage_phase) {}
+
+  int dofs() const override { return 3; }
+  void mass(double* m) const override {
+    m[0] = m[1] = mass_;
+    m[2] = axial_mass_;
+  }
+
+  void force(double t, const double* q, const double* v, double* f) const override {
+    detail::BallFrame fr;
+    set_.evaluate(t, fr);
+    const double x = q[0], y = q[1], z = q[2], n = set_.exponent();
+    const double w = geometry_.w0 + z;
+    double fx = load_x_ + unbalance_force_ * fr.cos_shaft - damping_ * v[0];
+    double fy = load_y_ + unbalance_force_ * fr.sin_shaft - damping_ * v[1];
+    double fz = load_z_ - axial_damping_ * v[2];
+    const int Z = set_.balls();
+    for (int j = 0; j < Z; ++j) {
+      const double c = fr.cos_theta[j], s = fr.sin_theta[j];
+      const double r = x * c + y * s + fr.excitation[j];
+      double L;
+      const double delta = approach(geometry_, r, z, L);
+      if (delta <= 0) continue;
+      const double QL = detail::contact_load(fr.stiffness[j], n, delta) / L;
+      const double radial = QL * (geometry_.u0 + r);  // Q cos α_j
+      fx -= radial * c;
+      fy -= radial * s;
+      fz -= QL * w;  // Q sin α_j
+    }
+    f[0] = fx;
+    f[1] = fy;
+    f[2] = fz;
+  }
+
+  void force_jacobian(double t, const double* q, const double* /*v*/, double* dfdq,
+                      double* dfdv) const override {
+    detail::BallFrame fr;
+    set_.evaluate(t, fr);
+    contact_stiffness(fr, q, dfdq);
+    for (int i = 0; i < 9; ++i) dfdq[i] = -dfdq[i];
+    for (int i = 0; i < 9; ++i) dfdv[i] = 0.0;
+    dfdv[0] = dfdv[4] = -damping_;
+    dfdv[8] = -axial_damping_;
+  }
+
+  std::vector<std::string> dof_names() const override { return {"x", "y", "z"}; }
+  int balls() const override { return set_.balls(); }
+
+  void ball_loads(double t, const double* q, double* loads) const override {
+    detail::BallFrame fr;
+    set_.evaluate(t, fr);
+    for (int j = 0; j < set_.balls(); ++j) {
+      const double r = q[0] * fr.cos_theta[j] + q[1] * fr.sin_theta[j] + fr.excitation[j];
+      double L;
+      const double delta = approach(geometry_, r, q[2], L);
+      loads[j] = delta > 0 ? detail::contact_load(fr.stiffness[j], set_.exponent(), delta) : 0.0;
+    }
+  }
+
+  double potential_energy(double t, const double* q) const override {
+    detail::BallFrame fr;
+    set_.evaluate(t, fr);
+    const double n = set_.exponent();
+    double energy = 0;
+    for (int j = 0; j < set_.balls(); ++j) {
+      const double r = q[0] * fr.cos_theta[j] + q[1] * fr.sin_theta[j] + fr.excitation[j];
+      double L;
+      const double delta = approach(geometry_, r, q[2], L);
+      if (delta > 0) energy += fr.stiffness[j] / (n + 1.0) * std::pow(delta, n + 1.0);
+    }
+    return energy;
+  }
+
+  std::vector<double> initial_displacement() const override;
+
+ private:
+  static GrooveGeometry checked_geometry(const ModelInputs& in) {
+    detail::validate_common_inputs(in);
+    validate_axial(in);
+    return groove_geometry(in.bearing);
+  }
+
+  // Contact stiffness −∂f_contact/∂q (3×3 row-major, symmetric) for the balls of `fr` at q.
+  void contact_stiffness(const detail::BallFrame& fr, const double* q, double* k) const {
+    const double n = set_.exponent();
+    const double w = geometry_.w0 + q[2];
+    double kxx = 0, kxy = 0, kyy = 0, kxz = 0, kyz = 0, kzz = 0;
+    for (int j = 0; j < set_.balls(); ++j) {
+      const double c = fr.cos_theta[j], s = fr.sin_theta[j];
+      const double r = q[0] * c + q[1] * s + fr.excitation[j];
+      double L;
+      const double delta = approach(geometry_, r, q[2], L);
+      if (delta <= 0) continue;
+      const double K = fr.stiffness[j];
+      const double dQ = n == 1.5 ? 1.5 * K * std::sqrt(delta) : n * K * std::pow(delta, n - 1.0);
+      const double QL = detail::contact_load(K, n, delta) / L;
+      const double ca = (geometry_.u0 + r) / L, sa = w / L;  // cos α_j, sin α_j
+      // n_j = (ca c, ca s, sa); K_j = (dQ − QL) n nᵀ + QL (e eᵀ + e_z e_zᵀ).
+      const double kn = dQ - QL;
+      kxx += kn * ca * ca * c * c + QL * c * c;
+      kxy += kn * ca * ca * c * s + QL * c * s;
+      kyy += kn * ca * ca * s * s + QL * s * s;
+      kxz += kn * ca * sa * c;
+      kyz += kn * ca * sa * s;
+      kzz += kn * sa * sa + QL;
+    }
+    k[0] = kxx, k[1] = kxy, k[2] = kxz;
+    k[3] = kxy, k[4] = kyy, k[5] = kyz;
+    k[6] = kxz, k[7] = kyz, k[8] = kzz;
+  }
+
+  GrooveGeometry geometry_;
+  AxialPreload preload_;
+  detail::BallSet set_;
+  double mass_, axial_mass_;
+  double damping_, axial_damping_;
+  double load_x_, load_y_, load_z_;  // constant loads, gravity included [N]
+  double unbalance_force_;           // F_u = m_u e ω_i² [N]
+  double phase_;                     // φ₀ [rad]
+};
+
+// Static state under the constant loads, without waviness and size errors (three_dof.h).
+// For F_z ≠ 0: minimise the convex potential Φ(q) = Σ_j K/(n+1) [δ_j]_+^{n+1} − F·q (each δ_j is
+// a norm minus a constant, hence convex in q; [·]_+^{n+1} is convex and nondecreasing) by Newton
+// steps with an exact line search on the nondecreasing directional derivative. The start, the
+// axial state, has every ball loaded, so the Hessian is positive definite there.
+std::vector<double> ThreeDofModel::initial_displacement() const {
+  const int Z = set_.balls();
+  const Eigen::Vector3d F(load_x_, load_y_, load_z_);
+  if (load_z_ == 0) {
+    StaticLoadOptions o;
+    o.phase = phase_;
+    o.exponent = set_.exponent();
+    // γ = A₀ − u₀ = P_d/2 (as the force sees it at the centred position).
+    const StaticLoadResult r = solve_static_load(Z, set_.K(), geometry_.A0 - geometry_.u0,
+                                                 Eigen::Vector2d(load_x_, load_y_), o);
+    return {r.deflection.x(), r.deflection.y(), -geometry_.w0};
+  }
+
+  // The ball set at t = 0 without excitation.
+  detail::BallFrame fr;
+  for (int j = 0; j < Z; ++j) {
+    fr.cos_theta[j] = std::cos(phase_ + detail::kTwoPi * j / Z);
+    fr.sin_theta[j] = std::sin(phase_ + detail::kTwoPi * j / Z);
+    fr.excitation[j] = 0.0;
+    fr.stiffness[j] = set_.K();
+  }
+  const double n = set_.exponent();
+  auto gradient = [&](const Eigen::Vector3d& q) {  // ∇Φ = −(F − Σ Q_j n_j)
+    Eigen::Vector3d g = -F;
+    const double w = geometry_.w0 + q.z();
+    for (int j = 0; j < Z; ++j) {
+      const double c = fr.cos_theta[j], s = fr.sin_theta[j];
+      const double r = q.x() * c + q.y() * s;
+      double L;
+      const double delta = approach(geometry_, r, q.z(), L);
+      if (delta <= 0) continue;
+      const double QL = detail::contact_load(set_.K(), n, delta) / L;
+      g += QL * Eigen::Vector3d((geometry_.u0 + r) * c, (geometry_.u0 + r) * s, w);
+    }
+    return g;
+  };
+
+  Eigen::Vector3d q(0.0, 0.0, preload_.z);
+  Eigen::Vector3d g = gradient(q);
+  const double scale = F.norm();
+  const double tol = 1e-13 * scale;
+  int it = 0;
+  for (; it < 100 && g.norm() > tol; ++it) {
+    Eigen::Matrix3d H;
+    contact_stiffness(fr, q.data(), H.data());  // symmetric: row/column order irrelevant
+    const double mu = 1e-12 * H.trace() + 1e-300;
+    const Eigen::Vector3d p = -(H + mu * Eigen::Matrix3d::Identity()).ldlt().solve(g);
+    const double slope0 = g.dot(p);
+    if (!(p.allFinite() && slope0 < 0)) break;
+    // φ(α) = Φ(q + αp) is convex: take α = 1 unless φ'(1) > 0, then find φ' = 0 in (0, 1).
+    Eigen::Vector3d g1 = gradient(q + p);
+    double alpha = 1.0;
+    if (g1.dot(p) > 0) {
+      double lo = 0, hi = 1, d_lo = slope0, d_hi = g1.dot(p);
+      for (int k = 0; k < 100; ++k) {
+        alpha = lo - d_lo * (hi - lo) / (d_hi - d_lo);
+        if (!(alpha > lo + 0.01 * (hi - lo) && alpha < hi - 0.01 * (hi - lo)))
+          alpha = 0.5 * (lo + hi);
+        g1 = gradient(q + alpha * p);
+        const double d = g1.dot(p);
+        if (std::abs(d) <= 0.1 * std::abs(slope0)) break;
+        (d < 0 ? lo : hi) = alpha;
+        (d < 0 ? d_lo : d_hi) = d;
+      }
+    }
+    q += alpha * p;
+    g = g1;
+  }
+  if (!(g.norm() <= 1e-9 * scale)) {
+    std::ostringstream msg;
+    msg << "3-DOF model: no static equilibrium under the loads (" << format_number(F.x()) << ", "
+        << format_number(F.y()) << ", " << format_number(F.z()) << ") N after " << it
+        << " Newton iterations (relative force residual " << format_number(g.norm() / scale) << ")";
+    throw SolverError(msg.str());
+  }
+  return {q.x(), q.y(), q.z()};
+}
+
+}  // namespace
+
+AxialPreload solve_axial_preload(const ModelInputs& inputs) {
+  detail::validate_common_inputs(inputs);
+  validate_axial(inputs);
+  const GrooveGeometry g = groove_geometry(inputs.bearing);
+  return axial_state(g, inputs.bearing.balls, inputs.contact.K, inputs.contact.exponent,
+                     inputs.axial_load);
+}
+
+double three_dof_cage_speed(const ModelInputs& inputs) {
+  const AxialPreload p = solve_axial_preload(inputs);
+  return preload_cage_speed(inputs.bearing, inputs.inner_speed, p.contact_angle);
+}
+
+std::unique_ptr<BearingModel> make_three_dof_model(const ModelInputs& inputs) {
+  return std::make_unique<ThreeDofModel>(inputs);
+}
+
+}  // namespace bearing

@@ -1,0 +1,139 @@
+// The 2-DOF inner-ring model (MODEL.md §4, seeds 001–003); see two_dof.h for the equations.
+
+#include "bearing/models/two_dof.h"
+
+#include <cmath>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "ball_set.h"
+#include "bearing/kinematics.h"
+#include "bearing/static_load.h"
+
+namespace bearing {
+
+namespace {
+
+// Validates the inputs (before anything is built from them) and returns ω_c.
+double checked_cage_speed(const ModelInputs& in) {
+  detail::validate_common_inputs(in);
+  return cage_speed(in.bearing, in.inner_speed);
+}
+
+class TwoDofModel final : public BearingModel {
+ public:
+  explicit TwoDofModel(const ModelInputs& in)
+      : set_(in, checked_cage_speed(in)),
+        mass_(in.mass),
+        damping_(in.damping),
+        gap_(in.bearing.ball_gap()),
+        load_x_(in.load.x()),
+        load_y_(in.load.y() - (in.gravity ? in.mass * detail::kGravity : 0.0)),
+        unbalance_force_(in.unbalance * in.inner_speed * in.inner_speed),
+        phase_(in.cage_phase) {}
+
+  int dofs() const override { return 2; }
+  void mass(double* m) const override { m[0] = m[1] = mass_; }
+
+  // Contact loop: δ_j from the rotated ball directions, Q_j = K_j δ_j^n, summed on the ring.
+  void force(double t, const double* q, const double* v, double* f) const override {
+    detail::BallFrame fr;
+    set_.evaluate(t, fr);
+    const double x = q[0], y = q[1], n = set_.exponent();
+    double fx = load_x_ + unbalance_force_ * fr.cos_shaft - damping_ * v[0];
+    double fy = load_y_ + unbalance_force_ * fr.sin_shaft - damping_ * v[1];
+    const int Z = set_.balls();
+    for (int j = 0; j < Z; ++j) {
+      const double c = fr.cos_theta[j], s = fr.sin_theta[j];
+      const double delta = x * c + y * s - gap_ + fr.excitation[j];
+      if (delta <= 0) continue;
+      const double Q = detail::contact_load(fr.stiffness[j], n, delta);
+      fx -= Q * c;
+      fy -= Q * s;
+    }
+    f[0] = fx;
+    f[1] = fy;
+  }
+
+  // ∂f/∂q = −Σ_j n K_j δ_j^{n−1} e_j e_jᵀ over the loaded balls (e_j = (cos θ_j, sin θ_j));
+  // ∂f/∂v = −c I.
+  void force_jacobian(double t, const double* q, const double* /*v*/, double* dfdq,
+                      double* dfdv) const override {
+    detail::BallFrame fr;
+    set_.evaluate(t, fr);
+    const double x = q[0], y = q[1], n = set_.exponent();
+    double kxx = 0, kxy = 0, kyy = 0;
+    const int Z = set_.balls();
+    for (int j = 0; j < Z; ++j) {
+      const double c = fr.cos_theta[j], s = fr.sin_theta[j];
+      const double delta = x * c + y * s - gap_ + fr.excitation[j];
+      if (delta <= 0) continue;
+      const double k = n == 1.5 ? 1.5 * fr.stiffness[j] * std::sqrt(delta)
+                                : n * fr.stiffness[j] * std::pow(delta, n - 1.0);
+      kxx += k * c * c;
+      kxy += k * c * s;
+      kyy += k * s * s;
+    }
+    dfdq[0] = -kxx;
+    dfdq[1] = -kxy;
+    dfdq[2] = -kxy;
+    dfdq[3] = -kyy;
+    dfdv[0] = -damping_;
+    dfdv[1] = 0.0;
+    dfdv[2] = 0.0;
+    dfdv[3] = -damping_;
+  }
+
+  std::vector<std::string> dof_names() const override { return {"x", "y"}; }
+  int balls() const override { return set_.balls(); }
+
+  void ball_loads(double t, const double* q, double* loads) const override {
+    detail::BallFrame fr;
+    set_.evaluate(t, fr);
+    for (int j = 0; j < set_.balls(); ++j) {
+      const double delta =
+          q[0] * fr.cos_theta[j] + q[1] * fr.sin_theta[j] - gap_ + fr.excitation[j];
+      loads[j] = delta > 0 ? detail::contact_load(fr.stiffness[j], set_.exponent(), delta) : 0.0;
+    }
+  }
+
+  double potential_energy(double t, const double* q) const override {
+    detail::BallFrame fr;
+    set_.evaluate(t, fr);
+    const double n = set_.exponent();
+    double energy = 0;
+    for (int j = 0; j < set_.balls(); ++j) {
+      const double delta =
+          q[0] * fr.cos_theta[j] + q[1] * fr.sin_theta[j] - gap_ + fr.excitation[j];
+      if (delta > 0) energy += fr.stiffness[j] / (n + 1.0) * std::pow(delta, n + 1.0);
+    }
+    return energy;
+  }
+
+  std::vector<double> initial_displacement() const override {
+    StaticLoadOptions o;
+    o.phase = phase_;
+    o.exponent = set_.exponent();
+    const StaticLoadResult r =
+        solve_static_load(set_.balls(), set_.K(), gap_, Eigen::Vector2d(load_x_, load_y_), o);
+    return {r.deflection.x(), r.deflection.y()};
+  }
+
+ private:
+  detail::BallSet set_;
+  double mass_;
+  double damping_;
+  double gap_;              // γ = P_d/2 [m]
+  double load_x_, load_y_;  // constant load, gravity included [N]
+  double unbalance_force_;  // F_u = m_u e ω_i² [N]
+  double phase_;            // φ₀ [rad]
+};
+
+}  // namespace
+
+std::unique_ptr<BearingModel> make_two_dof_model(const ModelInputs& inputs) {
+  return std::make_unique<TwoDofModel>(inputs);
+}
+
+}  // namespace bearing
