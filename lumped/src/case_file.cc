@@ -3,9 +3,9 @@
 #include <algorithm>
 #include <cerrno>
 #include <cmath>
+#include <cstdio>
 #include <cstring>
 #include <fstream>
-#include <map>
 #include <optional>
 #include <sstream>
 
@@ -14,7 +14,6 @@
 #include "bearing/errors.h"
 #include "bearing/hertz.h"
 #include "bearing/presets.h"
-#include "bearing/units.h"
 #include "edit_distance.h"
 
 namespace bearing {
@@ -23,51 +22,102 @@ namespace {
 
 // ---------------------------------------------------------------------------------------------
 // The schema: every key the reader accepts, with its dimension. The readers below ask for keys by
-// these names; unknown keys are what is left over.
+// these names; unknown keys are what is left over. Entries of an array of tables
+// ([[waviness.inner]]) are named "waviness.inner.<key>" here and "waviness.inner[i].<key>" in
+// messages.
 // ---------------------------------------------------------------------------------------------
-enum class Kind { quantity, integer, text, vector2, table };
+enum class Kind { quantity, integer, text, boolean, vector2, list, table, table_array };
 
 struct KeySpec {
-  const char* name;  // "bearing.ball_diameter"
+  const char* name;
   Kind kind;
   Dimension dim;
   const char* help;
 };
 
 const std::vector<KeySpec>& schema() {
+  using D = Dimension;
   static const std::vector<KeySpec> keys{
-      {"bearing.preset", Kind::text, Dimension::dimensionless,
+      {"bearing.preset", Kind::text, D::dimensionless,
        "catalogue bearing (608, 6304, 6308, 6205, 209); other keys override it"},
-      {"bearing.ball_diameter", Kind::quantity, Dimension::length, "ball diameter D"},
-      {"bearing.pitch_diameter", Kind::quantity, Dimension::length, "pitch diameter d_m"},
-      {"bearing.balls", Kind::integer, Dimension::dimensionless, "number of balls Z (>= 3)"},
-      {"bearing.inner_conformity", Kind::quantity, Dimension::dimensionless,
+      {"bearing.ball_diameter", Kind::quantity, D::length, "ball diameter D"},
+      {"bearing.pitch_diameter", Kind::quantity, D::length, "pitch diameter d_m"},
+      {"bearing.balls", Kind::integer, D::dimensionless, "number of balls Z (>= 3)"},
+      {"bearing.inner_conformity", Kind::quantity, D::dimensionless,
        "inner groove radius / D (> 0.5)"},
-      {"bearing.outer_conformity", Kind::quantity, Dimension::dimensionless,
+      {"bearing.outer_conformity", Kind::quantity, D::dimensionless,
        "outer groove radius / D (> 0.5)"},
-      {"bearing.clearance", Kind::quantity, Dimension::length,
+      {"bearing.clearance", Kind::quantity, D::length,
        "ISO radial internal clearance P_d (diametral); each ball's gap is P_d/2"},
-      {"bearing.contact_angle", Kind::quantity, Dimension::angle, "free contact angle alpha"},
-      {"material.young", Kind::quantity, Dimension::pressure, "Young's modulus, balls and rings"},
-      {"material.poisson", Kind::quantity, Dimension::dimensionless, "Poisson ratio in (-1, 0.5)"},
-      {"material.density", Kind::quantity, Dimension::density, "density"},
-      {"material.ball", Kind::table, Dimension::dimensionless,
-       "ball material (young, poisson, density)"},
-      {"material.rings", Kind::table, Dimension::dimensionless,
-       "ring material (young, poisson, density)"},
-      {"material.ball.young", Kind::quantity, Dimension::pressure, "ball Young's modulus"},
-      {"material.ball.poisson", Kind::quantity, Dimension::dimensionless, "ball Poisson ratio"},
-      {"material.ball.density", Kind::quantity, Dimension::density, "ball density"},
-      {"material.rings.young", Kind::quantity, Dimension::pressure, "ring Young's modulus"},
-      {"material.rings.poisson", Kind::quantity, Dimension::dimensionless, "ring Poisson ratio"},
-      {"material.rings.density", Kind::quantity, Dimension::density, "ring density"},
-      {"operation.speed", Kind::quantity, Dimension::angular_speed, "inner-ring speed"},
-      {"operation.load", Kind::vector2, Dimension::force,
+      {"bearing.contact_angle", Kind::quantity, D::angle, "free contact angle alpha"},
+      {"material.young", Kind::quantity, D::pressure, "Young's modulus, balls and rings"},
+      {"material.poisson", Kind::quantity, D::dimensionless, "Poisson ratio in (-1, 0.5)"},
+      {"material.density", Kind::quantity, D::density, "density"},
+      {"material.ball", Kind::table, D::dimensionless, "ball material (young, poisson, density)"},
+      {"material.rings", Kind::table, D::dimensionless, "ring material (young, poisson, density)"},
+      {"material.ball.young", Kind::quantity, D::pressure, "ball Young's modulus"},
+      {"material.ball.poisson", Kind::quantity, D::dimensionless, "ball Poisson ratio"},
+      {"material.ball.density", Kind::quantity, D::density, "ball density"},
+      {"material.rings.young", Kind::quantity, D::pressure, "ring Young's modulus"},
+      {"material.rings.poisson", Kind::quantity, D::dimensionless, "ring Poisson ratio"},
+      {"material.rings.density", Kind::quantity, D::density, "ring density"},
+      {"rotor.mass", Kind::quantity, D::mass, "inner ring + shaft mass (default 0.6 kg)"},
+      {"rotor.damping", Kind::quantity, D::damping, "radial damping (default 200 N s/m)"},
+      {"rotor.axial_mass", Kind::quantity, D::mass, "axial mass, 3dof (default: rotor.mass)"},
+      {"rotor.axial_damping", Kind::quantity, D::damping,
+       "axial damping, 3dof (default: rotor.damping)"},
+      {"operation.speed", Kind::quantity, D::angular_speed, "inner-ring speed"},
+      {"operation.load", Kind::vector2, D::force,
        "radial load [Fx, Fy] on the inner ring (y up: Fy < 0 pushes down)"},
-      {"model.contact", Kind::text, Dimension::dimensionless,
+      {"operation.axial_load", Kind::quantity, D::force, "axial load / preload Fz, 3dof"},
+      {"operation.unbalance", Kind::quantity, D::mass_length,
+       "unbalance m_u e; force m_u e w^2 rotating with the shaft"},
+      {"operation.gravity", Kind::boolean, D::dimensionless, "add the rotor weight -m g to Fy"},
+      {"waviness.inner", Kind::table_array, D::dimensionless,
+       "[[waviness.inner]] entries: order, amplitude, phase; or table = \"file.csv\""},
+      {"waviness.outer", Kind::table_array, D::dimensionless,
+       "[[waviness.outer]] entries: order, amplitude, phase; or table = \"file.csv\""},
+      {"waviness.inner.order", Kind::integer, D::dimensionless, "waves per revolution (>= 1)"},
+      {"waviness.inner.amplitude", Kind::quantity, D::length, "waviness amplitude"},
+      {"waviness.inner.phase", Kind::quantity, D::angle, "waviness phase"},
+      {"waviness.inner.table", Kind::text, D::dimensionless,
+       "CSV order,amplitude[,phase] (um, deg unless the header says)"},
+      {"waviness.outer.order", Kind::integer, D::dimensionless, "waves per revolution (>= 1)"},
+      {"waviness.outer.amplitude", Kind::quantity, D::length, "waviness amplitude"},
+      {"waviness.outer.phase", Kind::quantity, D::angle, "waviness phase"},
+      {"waviness.outer.table", Kind::text, D::dimensionless,
+       "CSV order,amplitude[,phase] (um, deg unless the header says)"},
+      {"ball_errors.values", Kind::list, D::length,
+       "each ball's diameter deviation D_j - D (one per ball)"},
+      {"ball_errors.band", Kind::quantity, D::length,
+       "draw D_j - D uniformly in [-band/2, band/2]"},
+      {"ball_errors.seed", Kind::integer, D::dimensionless, "seed of the band draw (default 1)"},
+      {"model.kind", Kind::text, D::dimensionless, "2dof | 3dof"},
+      {"model.contact", Kind::text, D::dimensionless,
        "Hertz method: exact | hamrock-brewe | harris-table"},
+      {"model.waviness_stiffness", Kind::boolean, D::dimensionless,
+       "TVDS: contact stiffness follows the waviness curvature (default false: TVD)"},
+      {"solver.method", Kind::text, D::dimensionless, "rk4 | rkf45 | rk8pd | newmark | bdf"},
+      {"solver.dt", Kind::quantity, D::time, "time step, or first step (default 5 us)"},
+      {"solver.duration", Kind::quantity, D::time, "simulated time (default 1.2 s)"},
+      {"solver.transient", Kind::quantity, D::time, "discarded before statistics (default 0.2 s)"},
+      {"solver.tolerance", Kind::quantity, D::dimensionless,
+       "relative tolerance, adaptive/bdf/newmark (default 1e-6)"},
+      {"solver.output_rate", Kind::quantity, D::frequency, "samples written per second (20 kHz)"},
+      {"solver.max_displacement", Kind::quantity, D::length,
+       "blow-up bound on the ring displacement (default 1 mm)"},
+      {"output.ball_loads", Kind::boolean, D::dimensionless, "write each ball's load Q1..QZ"},
+      {"output.window", Kind::text, D::dimensionless, "hann | flattop | rectangular"},
+      {"output.peaks", Kind::integer, D::dimensionless, "peaks listed per channel (default 10)"},
   };
   return keys;
+}
+
+const std::vector<std::string>& top_tables() {
+  static const std::vector<std::string> t{"bearing",   "material", "rotor",
+                                          "operation", "waviness", "ball_errors",
+                                          "model",     "solver",   "output"};
+  return t;
 }
 
 const KeySpec* find_spec(const std::string& name) {
@@ -82,7 +132,7 @@ std::string last_part(const std::string& dotted) {
 }
 
 // The nearest known name to an unknown "table.key": the same key in another table, or the
-// closest spelling in the same table.
+// closest spelling.
 std::string suggestion(const std::string& unknown) {
   const std::string leaf = last_part(unknown);
   for (const auto& k : schema())
@@ -92,6 +142,10 @@ std::string suggestion(const std::string& unknown) {
   for (const auto& k : schema()) {
     const std::size_t d = detail::edit_distance(unknown, k.name);
     if (d < best_d) best_d = d, best = k.name;
+  }
+  for (const auto& t : top_tables()) {
+    const std::size_t d = detail::edit_distance(unknown, t);
+    if (d < best_d) best_d = d, best = t;
   }
   const std::size_t limit = std::max<std::size_t>(2, leaf.size() / 3 + 1);
   return best_d <= limit ? best : std::string();
@@ -107,20 +161,19 @@ std::string keys_of_table(const std::string& table) {
   return out;
 }
 
-[[noreturn]] void unknown_key(const std::string& name) {
+// `name` is the schema name of the unknown key, `shown` how the user wrote it.
+[[noreturn]] void unknown_key(const std::string& name, const std::string& shown) {
   const auto dot = name.rfind('.');
   const std::string table = dot == std::string::npos ? std::string() : name.substr(0, dot);
   std::string msg;
-  if (table.empty() || !(find_spec(table) || !keys_of_table(table).empty())) {
-    msg = "unknown table or key \"" + name + "\"";
-    const std::string s = suggestion(name);
+  const std::string s = suggestion(name);
+  if (table.empty() || keys_of_table(table).empty()) {
+    msg = "unknown table or key \"" + shown + "\"";
     if (!s.empty()) msg += "; did you mean \"" + s + "\"?";
-    msg +=
-        " Known tables: [bearing], [material] (with [material.ball], [material.rings]), "
-        "[operation], [model]";
+    msg += " Known tables:";
+    for (const auto& t : top_tables()) msg += " [" + t + "]";
   } else {
-    msg = "unknown key \"" + name + "\"";
-    const std::string s = suggestion(name);
+    msg = "unknown key \"" + shown + "\"";
     if (!s.empty()) msg += "; did you mean \"" + s + "\"?";
     msg += " Keys of [" + table + "]: " + keys_of_table(table);
   }
@@ -157,21 +210,24 @@ std::string shown_value(const toml::node& node) {
   return s.str();
 }
 
+std::string join(const std::vector<std::string>& items) {
+  std::string s;
+  for (const auto& i : items) s += (s.empty() ? "" : ", ") + i;
+  return s;
+}
+
 // A quantity: a plain number (SI) or a string with a unit.
 double read_quantity(const toml::node& node, const std::string& key, Dimension dim) {
   if (node.is_integer() || node.is_floating_point()) {
     const double v = node.value<double>().value();
     if (!std::isfinite(v))
       throw InputError(key + " = " + shown_value(node) + ": must be a finite number");
-    if (dim != Dimension::dimensionless && !bare_number_is_si(dim) && v != 0.0) {
-      std::string units;
-      for (const auto& u : accepted_units(dim)) units += (units.empty() ? "" : ", ") + u;
+    if (dim != Dimension::dimensionless && !bare_number_is_si(dim) && v != 0.0)
       throw InputError(key + " = " + shown_value(node) + ": missing unit; an " +
                        std::string(dimension_name(dim)) +
                        " needs one because a bare number is ambiguous, e.g. \"" +
-                       shown_value(node) + " " + accepted_units(dim).front() +
-                       "\" (accepted units: " + units + ")");
-    }
+                       shown_value(node) + " " + accepted_units(dim).back() +
+                       "\" (accepted units: " + join(accepted_units(dim)) + ")");
     return v;
   }
   if (node.is_string()) return parse_quantity(node.value<std::string>().value(), dim, key);
@@ -187,13 +243,17 @@ double read_quantity(const toml::node& node, const std::string& key, Dimension d
 // Reads the keys of one table, remembering which were used so the rest can be reported.
 class TableReader {
  public:
-  TableReader(const toml::table* table, std::string name) : table_(table), name_(std::move(name)) {}
+  /// `shown` names the table in messages ("waviness.inner[2]"), `schema` in the schema
+  /// ("waviness.inner").
+  TableReader(const toml::table* table, std::string shown, std::string schema = "")
+      : table_(table), shown_(std::move(shown)), schema_(schema.empty() ? shown_ : schema) {}
 
   const toml::node* get(const char* key) {
     used_.push_back(key);
     return table_ ? table_->get(key) : nullptr;
   }
-  std::string full(const char* key) const { return name_ + "." + key; }
+  std::string full(const char* key) const { return shown_ + "." + key; }
+  bool has(const char* key) const { return table_ && table_->get(key); }
 
   std::optional<double> quantity(const char* key) {
     const toml::node* n = get(key);
@@ -222,6 +282,20 @@ class TableReader {
     throw InputError(full(key) + " = " + shown_value(*n) + ": expected a string (" +
                      spec(key).help + "), got " + type_name(*n));
   }
+  // A text that must be one of `allowed`.
+  std::optional<std::string> choice(const char* key, const std::vector<std::string>& allowed) {
+    auto v = text(key);
+    if (v && std::find(allowed.begin(), allowed.end(), *v) == allowed.end())
+      throw InputError(full(key) + " = \"" + *v + "\": allowed: " + join(allowed));
+    return v;
+  }
+  std::optional<bool> boolean(const char* key) {
+    const toml::node* n = get(key);
+    if (!n) return std::nullopt;
+    if (n->is_boolean()) return n->value<bool>().value();
+    throw InputError(full(key) + " = " + shown_value(*n) + ": expected true or false (" +
+                     spec(key).help + "), got " + type_name(*n));
+  }
   std::optional<Eigen::Vector2d> vector2(const char* key) {
     const toml::node* n = get(key);
     if (!n) return std::nullopt;
@@ -234,33 +308,65 @@ class TableReader {
       v[i] = read_quantity(*a->get(i), full(key) + "[" + std::to_string(i) + "]", spec(key).dim);
     return v;
   }
+  std::optional<std::vector<double>> list(const char* key) {
+    const toml::node* n = get(key);
+    if (!n) return std::nullopt;
+    const toml::array* a = n->as_array();
+    if (!a)
+      throw InputError(full(key) + " = " + shown_value(*n) + ": expected an array (" +
+                       spec(key).help + "), e.g. [\"1 um\", \"-0.5 um\", ...]");
+    std::vector<double> v;
+    for (std::size_t i = 0; i < a->size(); ++i)
+      v.push_back(
+          read_quantity(*a->get(i), full(key) + "[" + std::to_string(i) + "]", spec(key).dim));
+    return v;
+  }
   const toml::table* subtable(const char* key) {
     const toml::node* n = get(key);
     if (!n) return nullptr;
     if (!n->is_table())
       throw InputError(full(key) + " = " + shown_value(*n) + ": expected a table [" + full(key) +
-                       "] with " + keys_of_table(full(key)) + ", got " + type_name(*n));
+                       "] with " + keys_of_table(schema_ + "." + key) + ", got " + type_name(*n));
     return n->as_table();
+  }
+  const toml::array* table_array(const char* key) {
+    const toml::node* n = get(key);
+    if (!n) return nullptr;
+    const toml::array* a = n->as_array();
+    if (!a || !a->is_array_of_tables())
+      throw InputError(full(key) + " = " + shown_value(*n) + ": expected entries [[" + full(key) +
+                       "]] with " + keys_of_table(schema_ + "." + key));
+    return a;
   }
   // Throws for the first key of the table that no reader asked for.
   void finish() const {
     if (!table_) return;
     for (const auto& [k, v] : *table_) {
       const std::string key(k.str());
-      if (std::find(used_.begin(), used_.end(), key) == used_.end()) unknown_key(name_ + "." + key);
+      if (std::find(used_.begin(), used_.end(), key) == used_.end())
+        unknown_key(schema_ + "." + key, shown_ + "." + key);
     }
   }
 
  private:
   const KeySpec& spec(const char* key) const {
-    const KeySpec* s = find_spec(full(key));
-    if (!s) throw std::logic_error("case_file: key missing from schema: " + full(key));
+    const KeySpec* s = find_spec(schema_ + "." + key);
+    if (!s) throw std::logic_error("case_file: key missing from schema: " + schema_ + "." + key);
     return *s;
   }
   const toml::table* table_;
-  std::string name_;
+  std::string shown_;
+  std::string schema_;
   std::vector<std::string> used_;
 };
+
+std::string fmt_si(double v, Dimension dim) {
+  return format_number(v) + (si_unit(dim).empty() ? "" : " " + std::string(si_unit(dim)));
+}
+
+void require(bool ok, const std::string& key, double v, Dimension dim, const std::string& allowed) {
+  if (!ok) throw InputError(key + " = " + fmt_si(v, dim) + ": " + allowed);
+}
 
 // Applies the material keys of one table to each of the given materials.
 void read_material(TableReader& r, std::initializer_list<Material*> targets) {
@@ -283,21 +389,72 @@ const toml::table* top_table(const toml::table& doc, const char* name) {
   return n->as_table();
 }
 
-Case resolve(const toml::table& doc, const std::string& source) {
+std::string join_path(const std::string& base_dir, const std::string& path) {
+  if (base_dir.empty() || path.empty() || path.front() == '/') return path;
+  return base_dir + "/" + path;
+}
+
+std::vector<WavinessHarmonic> read_waviness(TableReader& parent, const char* race, const Bearing& b,
+                                            const std::string& base_dir) {
+  std::vector<WavinessHarmonic> out;
+  const toml::array* entries = parent.table_array(race);
+  if (!entries) return out;
+  const std::string schema = std::string("waviness.") + race;
+  for (std::size_t i = 0; i < entries->size(); ++i) {
+    const std::string shown = schema + "[" + std::to_string(i) + "]";
+    TableReader r(entries->get(i)->as_table(), shown, schema);
+    if (auto table = r.text("table")) {
+      for (const char* k : {"order", "amplitude", "phase"})
+        if (r.has(k))
+          throw InputError(r.full(k) +
+                           ": give either table = \"file.csv\" or order/amplitude/"
+                           "phase in one [[" +
+                           schema + "]] entry, not both");
+      const auto rows = read_waviness_table(join_path(base_dir, *table), r.full("table"));
+      out.insert(out.end(), rows.begin(), rows.end());
+    } else {
+      WavinessHarmonic h;
+      const auto order = r.integer("order");
+      const auto amplitude = r.quantity("amplitude");
+      if (!order || !amplitude)
+        throw InputError(shown +
+                         ": each entry needs order and amplitude (phase optional), or "
+                         "table = \"file.csv\"");
+      if (*order < 1 || *order > 100000)
+        throw InputError(r.full("order") + " = " + std::to_string(*order) +
+                         ": waves per revolution must be an integer >= 1");
+      h.order = static_cast<int>(*order);
+      h.amplitude = *amplitude;
+      h.phase = r.quantity("phase").value_or(0.0);
+      out.push_back(h);
+    }
+    r.finish();
+  }
+  for (std::size_t i = 0; i < out.size(); ++i) {
+    const std::string key = schema + "[" + std::to_string(i) + "].amplitude";
+    require(std::isfinite(out[i].amplitude) && out[i].amplitude >= 0 &&
+                out[i].amplitude < 0.01 * b.ball_diameter,
+            key, out[i].amplitude, Dimension::length,
+            "must be >= 0 and below 1 % of the ball diameter (waviness is a few um at most)");
+  }
+  return out;
+}
+
+Case resolve(const toml::table& doc, const std::string& source, const std::string& base_dir) {
   for (const auto& [k, v] : doc) {
     const std::string key(k.str());
-    if (key != "bearing" && key != "material" && key != "operation" && key != "model")
-      unknown_key(key);
+    if (std::find(top_tables().begin(), top_tables().end(), key) == top_tables().end())
+      unknown_key(key, key);
   }
   Case c;
   c.source = source;
 
+  // [bearing]
   TableReader bearing(top_table(doc, "bearing"), "bearing");
   if (auto p = bearing.text("preset", /*allow_integer=*/true)) {
     c.preset = *p;
     c.bearing = preset(*p);
   } else {
-    // No preset: the geometry must be given in full; materials default to Harris's steel.
     c.bearing.designation = "custom";
   }
   Bearing& b = c.bearing;
@@ -338,6 +495,7 @@ Case resolve(const toml::table& doc, const std::string& source) {
   if (auto v = bearing.quantity("contact_angle")) b.contact_angle = *v;
   bearing.finish();
 
+  // [material], [material.ball], [material.rings]
   TableReader material(top_table(doc, "material"), "material");
   read_material(material, {&b.ball, &b.rings});
   TableReader ball(material.subtable("ball"), "material.ball");
@@ -347,13 +505,87 @@ Case resolve(const toml::table& doc, const std::string& source) {
   read_material(rings, {&b.rings});
   rings.finish();
   material.finish();
+  b.validate();
 
+  // [rotor]
+  TableReader rotor(top_table(doc, "rotor"), "rotor");
+  if (auto v = rotor.quantity("mass")) c.rotor.mass = *v;
+  if (auto v = rotor.quantity("damping")) c.rotor.damping = *v;
+  c.rotor.axial_mass = rotor.quantity("axial_mass").value_or(c.rotor.mass);
+  c.rotor.axial_damping = rotor.quantity("axial_damping").value_or(c.rotor.damping);
+  rotor.finish();
+  require(c.rotor.mass > 0, "rotor.mass", c.rotor.mass, Dimension::mass,
+          "must be positive (> 0 kg)");
+  require(c.rotor.damping >= 0, "rotor.damping", c.rotor.damping, Dimension::damping,
+          "must be >= 0");
+  require(c.rotor.axial_mass > 0, "rotor.axial_mass", c.rotor.axial_mass, Dimension::mass,
+          "must be positive (> 0 kg)");
+  require(c.rotor.axial_damping >= 0, "rotor.axial_damping", c.rotor.axial_damping,
+          Dimension::damping, "must be >= 0");
+
+  // [operation]
   TableReader operation(top_table(doc, "operation"), "operation");
   if (auto v = operation.quantity("speed")) c.operation.speed = *v;
   if (auto v = operation.vector2("load")) c.operation.load = *v;
+  if (auto v = operation.quantity("axial_load")) c.operation.axial_load = *v;
+  if (auto v = operation.quantity("unbalance")) c.operation.unbalance = *v;
+  if (auto v = operation.boolean("gravity")) c.operation.gravity = *v;
   operation.finish();
+  if (!(c.operation.speed >= 0))
+    throw InputError(
+        "operation.speed = " + format_quantity(c.operation.speed, "rpm", Dimension::angular_speed) +
+        ": must be >= 0 rpm (the inner ring turns counter-clockwise seen from +z)");
+  require(c.operation.unbalance >= 0, "operation.unbalance", c.operation.unbalance,
+          Dimension::mass_length, "must be >= 0");
 
+  // [waviness], [ball_errors]
+  TableReader waviness(top_table(doc, "waviness"), "waviness");
+  c.excitation.inner_waviness = read_waviness(waviness, "inner", b, base_dir);
+  c.excitation.outer_waviness = read_waviness(waviness, "outer", b, base_dir);
+  waviness.finish();
+
+  TableReader errors(top_table(doc, "ball_errors"), "ball_errors");
+  const auto values = errors.list("values");
+  const auto band = errors.quantity("band");
+  const auto seed = errors.integer("seed");
+  errors.finish();
+  if (values && band)
+    throw InputError("ball_errors: give either values (one per ball) or band (+ seed), not both");
+  if (seed && !band)
+    throw InputError("ball_errors.seed = " + std::to_string(*seed) +
+                     ": a seed needs ball_errors.band to draw from");
+  if (values) {
+    if (static_cast<int>(values->size()) != b.balls)
+      throw InputError("ball_errors.values has " + std::to_string(values->size()) +
+                       " entries: expected one per ball (" + std::to_string(b.balls) + ")");
+    for (std::size_t j = 0; j < values->size(); ++j) {
+      require(std::fabs((*values)[j]) < 0.01 * b.ball_diameter,
+              "ball_errors.values[" + std::to_string(j) + "]", (*values)[j], Dimension::length,
+              "a ball-size error must be below 1 % of the ball diameter");
+      c.excitation.ball_size_errors.push_back(-(*values)[j]);  // ΔD_j = D − D_j
+    }
+  }
+  if (band) {
+    require(*band >= 0 && *band < 0.02 * b.ball_diameter, "ball_errors.band", *band,
+            Dimension::length, "must be >= 0 and below 2 % of the ball diameter");
+    if (seed && *seed < 0)
+      throw InputError("ball_errors.seed = " + std::to_string(*seed) + ": must be >= 0");
+    c.excitation.ball_error_band = *band;
+    c.excitation.ball_error_seed = seed ? static_cast<std::uint64_t>(*seed) : 1u;
+    c.excitation.ball_size_errors =
+        ball_size_errors_from_band(b.balls, *band, c.excitation.ball_error_seed);
+  }
+
+  // [model]
   TableReader model(top_table(doc, "model"), "model");
+  if (auto v = model.text("kind")) {
+    if (*v == "quasistatic" || *v == "balls")
+      throw InputError("model.kind = \"" + *v +
+                       "\": not available in this version; allowed: 2dof, 3dof");
+    if (*v != "2dof" && *v != "3dof")
+      throw InputError("model.kind = \"" + *v + "\": unknown model; allowed: 2dof, 3dof");
+    c.model.kind = *v;
+  }
   if (auto v = model.text("contact")) {
     if (*v == "calibrated")
       throw InputError(
@@ -363,13 +595,51 @@ Case resolve(const toml::table& doc, const std::string& source) {
     make_hertz_solution(*v, "model.contact");  // throws for an unknown name, listing the allowed
     c.model.contact = *v;
   }
+  if (auto v = model.boolean("waviness_stiffness")) c.model.waviness_stiffness = *v;
   model.finish();
 
-  b.validate();
-  if (!std::isfinite(c.operation.speed) || c.operation.speed < 0)
-    throw InputError(
-        "operation.speed = " + format_quantity(c.operation.speed, "rpm", Dimension::angular_speed) +
-        ": must be >= 0 rpm (the inner ring turns counter-clockwise seen from +z)");
+  // [solver]
+  TableReader solver(top_table(doc, "solver"), "solver");
+  SolverOptions& s = c.solver;
+  if (auto v = solver.choice("method", {"rk4", "rkf45", "rk8pd", "newmark", "bdf"})) s.method = *v;
+  if (auto v = solver.quantity("dt")) s.dt = *v;
+  if (auto v = solver.quantity("duration")) s.duration = *v;
+  if (auto v = solver.quantity("transient")) s.transient = *v;
+  if (auto v = solver.quantity("tolerance")) s.tolerance = *v;
+  if (auto v = solver.quantity("output_rate")) s.output_rate = *v;
+  if (auto v = solver.quantity("max_displacement")) s.max_displacement = *v;
+  solver.finish();
+  require(s.dt > 0 && s.dt <= 1e-3, "solver.dt", s.dt, Dimension::time,
+          "must lie in (0, 1 ms]; the Hertz contacts need a few us");
+  require(s.duration > 0 && s.duration <= 1000, "solver.duration", s.duration, Dimension::time,
+          "must lie in (0, 1000 s]");
+  require(s.transient >= 0 && s.transient < s.duration, "solver.transient", s.transient,
+          Dimension::time,
+          "must be >= 0 and shorter than solver.duration (" + fmt_si(s.duration, Dimension::time) +
+              ")");
+  require(s.tolerance > 0 && s.tolerance <= 0.1, "solver.tolerance", s.tolerance,
+          Dimension::dimensionless, "must lie in (0, 0.1]");
+  require(s.output_rate > 0 && s.output_rate <= 1e7, "solver.output_rate", s.output_rate,
+          Dimension::frequency, "must lie in (0, 10 MHz]");
+  const double samples = s.output_rate * s.duration;
+  require(samples <= 2e7, "solver.output_rate", s.output_rate, Dimension::frequency,
+          "gives " + format_number(samples) + " samples over solver.duration; at most 2e7");
+  require((s.duration - s.transient) * s.output_rate >= 16, "solver.output_rate", s.output_rate,
+          Dimension::frequency,
+          "gives fewer than 16 samples after the transient: raise it or solver.duration");
+  require(s.max_displacement > 0, "solver.max_displacement", s.max_displacement, Dimension::length,
+          "must be positive");
+
+  // [output]
+  TableReader output(top_table(doc, "output"), "output");
+  if (auto v = output.boolean("ball_loads")) c.output.ball_loads = *v;
+  if (auto v = output.choice("window", {"hann", "flattop", "rectangular"})) c.output.window = *v;
+  if (auto v = output.integer("peaks")) {
+    if (*v < 0 || *v > 1000)
+      throw InputError("output.peaks = " + std::to_string(*v) + ": allowed 0 to 1000");
+    c.output.peaks = static_cast<int>(*v);
+  }
+  output.finish();
   return c;
 }
 
@@ -384,28 +654,45 @@ toml::table override_value(const std::string& value) {
   }
 }
 
+bool is_index(const std::string& part) {
+  return !part.empty() && std::all_of(part.begin(), part.end(), ::isdigit);
+}
+
 void apply_override(toml::table& doc, const Override& o) {
   std::vector<std::string> parts;
   std::stringstream ss(o.key);
   for (std::string p; std::getline(ss, p, '.');) parts.push_back(p);
-  toml::table* t = &doc;
+  const std::string where = "--set " + o.key + "=" + o.value + ": ";
+  toml::node* node = &doc;
   for (std::size_t i = 0; i + 1 < parts.size(); ++i) {
-    toml::node* n = t->get(parts[i]);
-    if (!n) {
-      t->insert(parts[i], toml::table{});
-      n = t->get(parts[i]);
+    if (toml::array* a = node->as_array(); a && is_index(parts[i])) {
+      const std::size_t index = std::stoul(parts[i]);
+      if (index >= a->size())
+        throw InputError(where + "index " + parts[i] + " is past the " + std::to_string(a->size()) +
+                         " entries of " + parts[i - 1]);
+      node = a->get(index);
+      continue;
     }
-    if (!n->is_table())
-      throw InputError("--set " + o.key + "=" + o.value + ": \"" + parts[i] +
-                       "\" is a value, not a table");
-    t = n->as_table();
+    toml::table* t = node->as_table();
+    if (!t) throw InputError(where + "\"" + parts[i - 1] + "\" is a value, not a table");
+    if (!t->get(parts[i])) t->insert(parts[i], toml::table{});
+    node = t->get(parts[i]);
+    if (!node->is_table() && !node->is_array())
+      throw InputError(where + "\"" + parts[i] + "\" is a value, not a table");
   }
+  toml::table* t = node->as_table();
+  if (!t) throw InputError(where + "\"" + parts[parts.size() - 2] + "\" is not a table");
   toml::table parsed = override_value(o.value);
   t->insert_or_assign(parts.back(), std::move(*parsed.get("v")));
 }
 
-std::string with_source(const std::string& source, const std::string& message) {
-  return source + ": " + message;
+std::string schema_name(const std::string& key) {
+  // "waviness.inner.0.amplitude" → "waviness.inner.amplitude"
+  std::stringstream ss(key);
+  std::string out;
+  for (std::string p; std::getline(ss, p, '.');)
+    if (!is_index(p)) out += (out.empty() ? "" : ".") + p;
+  return out;
 }
 
 }  // namespace
@@ -418,14 +705,15 @@ Override parse_override(std::string_view text) {
                      ": expected table.key=value, e.g. --set operation.speed=3000rpm");
   Override o{std::string(text.substr(0, eq)), std::string(text.substr(eq + 1))};
   const bool dotted = o.key.find('.') != std::string::npos && o.key.front() != '.' &&
-                      o.key.back() != '.' && o.key.find("..") == std::string::npos;
+                      o.key.back() != '.' && o.key.find("..") == std::string::npos &&
+                      !is_index(o.key.substr(0, o.key.find('.')));
   if (!dotted) throw InputError("--set " + t + ": the key must be table.key, e.g. bearing.balls=9");
   if (o.value.empty()) throw InputError("--set " + t + ": no value after '='");
   return o;
 }
 
 Case parse_case(std::string_view toml_text, const std::string& source,
-                const std::vector<Override>& overrides) {
+                const std::vector<Override>& overrides, const std::string& base_dir) {
   toml::table doc;
   try {
     doc = toml::parse(toml_text, source);
@@ -437,9 +725,9 @@ Case parse_case(std::string_view toml_text, const std::string& source,
   }
   try {
     for (const auto& o : overrides) apply_override(doc, o);
-    return resolve(doc, source);
+    return resolve(doc, source, base_dir);
   } catch (const InputError& e) {
-    throw InputError(with_source(source, e.what()));
+    throw InputError(source + ": " + e.what());
   }
 }
 
@@ -449,7 +737,9 @@ Case read_case_file(const std::string& path, const std::vector<Override>& overri
   std::ostringstream text;
   text << in.rdbuf();
   if (in.bad()) throw InputError(path + ": cannot read the case file");
-  return parse_case(text.str(), path, overrides);
+  const auto slash = path.rfind('/');
+  return parse_case(text.str(), path, overrides,
+                    slash == std::string::npos ? std::string() : path.substr(0, slash));
 }
 
 std::string_view default_case_toml() {
@@ -468,21 +758,111 @@ Case default_case(const std::vector<Override>& overrides) {
   return parse_case(default_case_toml(), "built-in default case", overrides);
 }
 
+namespace {
+
+std::string num17(double v) {
+  char buf[40];
+  std::snprintf(buf, sizeof buf, "%.17g", v);
+  std::string s = buf;
+  // TOML needs a float to look like one.
+  if (s.find_first_of(".eEn") == std::string::npos) s += ".0";
+  return s;
+}
+
+std::string quoted(const std::string& s) {
+  std::string out = "\"";
+  for (char ch : s) {
+    if (ch == '"' || ch == '\\') out += '\\';
+    out += ch;
+  }
+  return out + "\"";
+}
+
+}  // namespace
+
+std::string case_to_toml(const Case& c) {
+  const Bearing& b = c.bearing;
+  std::ostringstream o;
+  o << "# Fully resolved case (SI units: m, kg, s, N, Pa, rad, rad/s, Hz), written by "
+       "bearing-sim.\n"
+    << "# Source: " << c.source << (c.preset.empty() ? "" : ", preset " + c.preset) << "\n\n";
+  o << "[bearing]\n";
+  o << "ball_diameter = " << num17(b.ball_diameter) << "\n";
+  o << "pitch_diameter = " << num17(b.pitch_diameter) << "\n";
+  o << "balls = " << b.balls << "\n";
+  o << "inner_conformity = " << num17(b.inner_conformity) << "\n";
+  o << "outer_conformity = " << num17(b.outer_conformity) << "\n";
+  o << "clearance = " << num17(b.clearance) << "\n";
+  o << "contact_angle = \"" << num17(b.contact_angle) << " rad\"\n\n";
+  for (const auto& [name, m] : {std::pair{"ball", &b.ball}, std::pair{"rings", &b.rings}})
+    o << "[material." << name << "]\nyoung = " << num17(m->young)
+      << "\npoisson = " << num17(m->poisson) << "\ndensity = " << num17(m->density) << "\n\n";
+  o << "[rotor]\nmass = " << num17(c.rotor.mass) << "\ndamping = " << num17(c.rotor.damping)
+    << "\naxial_mass = " << num17(c.rotor.axial_mass)
+    << "\naxial_damping = " << num17(c.rotor.axial_damping) << "\n\n";
+  o << "[operation]\nspeed = \"" << num17(c.operation.speed) << " rad/s\"\nload = ["
+    << num17(c.operation.load.x()) << ", " << num17(c.operation.load.y()) << "]\n"
+    << "axial_load = " << num17(c.operation.axial_load)
+    << "\nunbalance = " << num17(c.operation.unbalance)
+    << "\ngravity = " << (c.operation.gravity ? "true" : "false") << "\n\n";
+  for (const auto& [race, list] : {std::pair{"inner", &c.excitation.inner_waviness},
+                                   std::pair{"outer", &c.excitation.outer_waviness}})
+    for (const auto& h : *list)
+      o << "[[waviness." << race << "]]\norder = " << h.order
+        << "\namplitude = " << num17(h.amplitude) << "\nphase = \"" << num17(h.phase)
+        << " rad\"\n\n";
+  if (!c.excitation.ball_size_errors.empty()) {
+    o << "[ball_errors]\n";
+    if (c.excitation.ball_error_band > 0)
+      o << "# drawn from band " << num17(c.excitation.ball_error_band) << " m with seed "
+        << c.excitation.ball_error_seed << "\n";
+    o << "values = [";  // D_j − D = −ΔD_j
+    for (std::size_t j = 0; j < c.excitation.ball_size_errors.size(); ++j)
+      o << (j ? ", " : "") << num17(-c.excitation.ball_size_errors[j]);
+    o << "]\n\n";
+  }
+  o << "[model]\nkind = " << quoted(c.model.kind) << "\ncontact = " << quoted(c.model.contact)
+    << "\nwaviness_stiffness = " << (c.model.waviness_stiffness ? "true" : "false") << "\n\n";
+  const SolverOptions& s = c.solver;
+  o << "[solver]\nmethod = " << quoted(s.method) << "\ndt = " << num17(s.dt)
+    << "\nduration = " << num17(s.duration) << "\ntransient = " << num17(s.transient)
+    << "\ntolerance = " << num17(s.tolerance) << "\noutput_rate = " << num17(s.output_rate)
+    << "\nmax_displacement = " << num17(s.max_displacement) << "\n\n";
+  o << "[output]\nball_loads = " << (c.output.ball_loads ? "true" : "false")
+    << "\nwindow = " << quoted(c.output.window) << "\npeaks = " << c.output.peaks << "\n";
+  return o.str();
+}
+
+Dimension key_dimension(const std::string& key) {
+  const KeySpec* s = find_spec(schema_name(key));
+  if (!s || !(s->kind == Kind::quantity || s->kind == Kind::integer))
+    throw InputError(key + ": not a numeric case-file key (see bearing-sim run --help)");
+  return s->dim;
+}
+
+bool key_is_integer(const std::string& key) {
+  const KeySpec* s = find_spec(schema_name(key));
+  return s && s->kind == Kind::integer;
+}
+
 std::string case_keys_help() {
   std::string out;
   for (const auto& k : schema()) {
     if (k.kind == Kind::table) continue;
     std::string units;
-    if (k.kind == Kind::integer || k.kind == Kind::text || k.dim == Dimension::dimensionless) {
-      units = k.kind == Kind::text ? "text" : "number";
+    if (k.kind == Kind::integer || k.kind == Kind::text || k.kind == Kind::boolean ||
+        k.kind == Kind::table_array || k.dim == Dimension::dimensionless) {
+      units = k.kind == Kind::text          ? "text"
+              : k.kind == Kind::boolean     ? "true/false"
+              : k.kind == Kind::table_array ? "entries"
+                                            : "number";
     } else {
-      for (const auto& u : accepted_units(k.dim)) units += (units.empty() ? "" : ", ") + u;
       units = (bare_number_is_si(k.dim) ? std::string(si_unit(k.dim)) + " if plain; "
                                         : "unit required; ") +
-              units;
+              join(accepted_units(k.dim));
     }
     std::string name = k.name;
-    name.resize(std::max<std::size_t>(name.size() + 1, 27), ' ');
+    name.resize(std::max<std::size_t>(name.size() + 1, 30), ' ');
     out += "  " + name + k.help + " [" + units + "]\n";
   }
   return out;

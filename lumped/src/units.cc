@@ -49,6 +49,8 @@ const std::vector<UnitEntry>& table(Dimension dim) {
   static const std::vector<UnitEntry> frequency{{"Hz", 1.0}, {"kHz", 1e3}};
   static const std::vector<UnitEntry> damping{
       {"Ns/m", 1.0}, {"kNs/m", 1e3}, {"kg/s", 1.0}, {"Ns/mm", 1e3}};
+  static const std::vector<UnitEntry> mass_length{
+      {"kgm", 1.0}, {"gmm", 1e-6}, {"gcm", 1e-5}, {"gm", 1e-3}};
   static const std::vector<UnitEntry> none{};
   switch (dim) {
     case Dimension::length:
@@ -71,6 +73,8 @@ const std::vector<UnitEntry>& table(Dimension dim) {
       return frequency;
     case Dimension::damping:
       return damping;
+    case Dimension::mass_length:
+      return mass_length;
     case Dimension::dimensionless:
       return none;
   }
@@ -113,7 +117,8 @@ std::string join(const std::vector<std::string>& items) {
 const char* other_dimension(const std::string& unit, Dimension dim) {
   for (Dimension d : {Dimension::length, Dimension::angle, Dimension::angular_speed,
                       Dimension::force, Dimension::pressure, Dimension::mass, Dimension::density,
-                      Dimension::time, Dimension::frequency, Dimension::damping}) {
+                      Dimension::time, Dimension::frequency, Dimension::damping,
+                      Dimension::mass_length}) {
     if (d == dim) continue;
     for (const auto& e : table(d))
       if (unit == e.name) return dimension_name(d).data();
@@ -145,6 +150,8 @@ std::string_view dimension_name(Dimension dim) {
       return "frequency";
     case Dimension::damping:
       return "damping";
+    case Dimension::mass_length:
+      return "unbalance (mass times eccentricity)";
     case Dimension::dimensionless:
       return "dimensionless number";
   }
@@ -173,6 +180,8 @@ std::string_view si_unit(Dimension dim) {
       return "Hz";
     case Dimension::damping:
       return "N s/m";
+    case Dimension::mass_length:
+      return "kg m";
     case Dimension::dimensionless:
       return "";
   }
@@ -201,6 +210,8 @@ std::vector<std::string> accepted_units(Dimension dim) {
       return {"Hz", "kHz"};
     case Dimension::damping:
       return {"N s/m", "kN s/m", "N s/mm", "kg/s"};
+    case Dimension::mass_length:
+      return {"kg m", "g mm", "g cm", "g m"};
     case Dimension::dimensionless:
       return {};
   }

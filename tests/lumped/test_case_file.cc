@@ -1,4 +1,5 @@
 #include <cmath>
+#include <fstream>
 #include <string>
 
 #include <gtest/gtest.h>
@@ -126,4 +127,168 @@ TEST(CaseFile, OverrideSyntax) {
   const Override o = parse_override("material.ball.young=315 GPa");
   EXPECT_EQ(o.key, "material.ball.young");
   EXPECT_EQ(o.value, "315 GPa");
+}
+
+namespace {
+constexpr const char* kDynamics = R"(
+[bearing]
+preset = "6308"
+
+[rotor]
+mass = "0.8 kg"
+damping = "350 N s/m"
+
+[operation]
+speed = "1800 rpm"
+load = ["10 N", "-500 N"]
+axial_load = "100 N"
+unbalance = "2 g mm"
+gravity = true
+
+[[waviness.inner]]
+order = 8
+amplitude = "0.5 um"
+phase = "30 deg"
+
+[[waviness.outer]]
+order = 16
+amplitude = "0.2 um"
+
+[ball_errors]
+values = ["1 um", "-1 um", "0 um", "0.5 um", "0 um", "0 um", "0 um", "-0.5 um"]
+
+[model]
+kind = "3dof"
+contact = "harris-table"
+waviness_stiffness = true
+
+[solver]
+method = "rk8pd"
+dt = "2 us"
+duration = "0.5 s"
+transient = "0.1 s"
+tolerance = 1e-8
+output_rate = "10 kHz"
+
+[output]
+ball_loads = true
+window = "flattop"
+peaks = 5
+)";
+}  // namespace
+
+TEST(CaseFile, ReadsTheDynamicsTables) {
+  const Case c = parse_case(kDynamics, "dyn.toml");
+  EXPECT_DOUBLE_EQ(c.rotor.mass, 0.8);
+  EXPECT_DOUBLE_EQ(c.rotor.damping, 350.0);
+  EXPECT_DOUBLE_EQ(c.rotor.axial_mass, 0.8);  // defaults to the radial values
+  EXPECT_DOUBLE_EQ(c.rotor.axial_damping, 350.0);
+  EXPECT_DOUBLE_EQ(c.operation.axial_load, 100.0);
+  EXPECT_DOUBLE_EQ(c.operation.unbalance, 2e-6);
+  EXPECT_TRUE(c.operation.gravity);
+  ASSERT_EQ(c.excitation.inner_waviness.size(), 1u);
+  EXPECT_EQ(c.excitation.inner_waviness[0].order, 8);
+  EXPECT_DOUBLE_EQ(c.excitation.inner_waviness[0].amplitude, 0.5e-6);
+  EXPECT_DOUBLE_EQ(c.excitation.inner_waviness[0].phase, kPi / 6);
+  EXPECT_DOUBLE_EQ(c.excitation.outer_waviness[0].phase, 0.0);
+  // values are D_j − D; the model wants ΔD_j = D − D_j (a larger ball adds approach).
+  ASSERT_EQ(c.excitation.ball_size_errors.size(), 8u);
+  EXPECT_DOUBLE_EQ(c.excitation.ball_size_errors[0], -1e-6);
+  EXPECT_DOUBLE_EQ(c.excitation.ball_size_errors[1], 1e-6);
+  EXPECT_EQ(c.model.kind, "3dof");
+  EXPECT_TRUE(c.model.waviness_stiffness);
+  EXPECT_EQ(c.solver.method, "rk8pd");
+  EXPECT_DOUBLE_EQ(c.solver.dt, 2e-6);
+  EXPECT_DOUBLE_EQ(c.solver.output_rate, 1e4);
+  EXPECT_TRUE(c.output.ball_loads);
+  EXPECT_EQ(c.output.window, "flattop");
+  EXPECT_EQ(c.output.peaks, 5);
+}
+
+TEST(CaseFile, DefaultsMatchTheSeeds) {
+  const Case c = bearing::default_case();
+  EXPECT_DOUBLE_EQ(c.rotor.mass, 0.6);      // seeds 001–003
+  EXPECT_DOUBLE_EQ(c.rotor.damping, 200.0);
+  EXPECT_EQ(c.model.kind, "2dof");
+  EXPECT_EQ(c.solver.method, "rk4");
+  EXPECT_DOUBLE_EQ(c.solver.dt, 5e-6);       // seeds 002/003
+  EXPECT_TRUE(c.excitation.inner_waviness.empty());
+  EXPECT_TRUE(c.excitation.ball_size_errors.empty());
+}
+
+TEST(CaseFile, WavinessTableIsReadRelativeToTheCaseFile) {
+  const std::string dir = ::testing::TempDir();
+  {
+    std::ofstream csv(dir + "/w.csv");
+    csv << "# test table\norder,amplitude_um,phase_deg\n4,0.1,0\n5,0.2,90\n";
+    std::ofstream toml(dir + "/case.toml");
+    toml << "[bearing]\npreset = \"6308\"\n[[waviness.inner]]\ntable = \"w.csv\"\n"
+            "[[waviness.inner]]\norder = 8\namplitude = \"1 um\"\n";
+  }
+  const Case c = bearing::read_case_file(dir + "/case.toml");
+  ASSERT_EQ(c.excitation.inner_waviness.size(), 3u);
+  EXPECT_EQ(c.excitation.inner_waviness[1].order, 5);
+  EXPECT_DOUBLE_EQ(c.excitation.inner_waviness[1].amplitude, 0.2e-6);
+  EXPECT_DOUBLE_EQ(c.excitation.inner_waviness[1].phase, kPi / 2);
+  EXPECT_EQ(c.excitation.inner_waviness[2].order, 8);
+}
+
+TEST(CaseFile, BandErrorsAreReproducibleAndRecorded) {
+  const std::string text = "[bearing]\npreset = \"608\"\n[ball_errors]\nband = \"2 um\"\nseed = 7\n";
+  const Case a = parse_case(text, "t");
+  const Case b = parse_case(text, "t");
+  ASSERT_EQ(a.excitation.ball_size_errors.size(), 7u);
+  EXPECT_EQ(a.excitation.ball_size_errors, b.excitation.ball_size_errors);
+  for (double e : a.excitation.ball_size_errors) EXPECT_LE(std::fabs(e), 1e-6);
+  EXPECT_EQ(a.excitation.ball_error_seed, 7u);
+  const Case other = parse_case(text, "t", {parse_override("ball_errors.seed=8")});
+  EXPECT_NE(other.excitation.ball_size_errors, a.excitation.ball_size_errors);
+}
+
+TEST(CaseFile, OverrideReachesIntoWavinessEntries) {
+  const Case c = parse_case(kDynamics, "t", {parse_override("waviness.inner.0.amplitude=1.2um"),
+                                             parse_override("waviness.outer.0.order=24")});
+  EXPECT_DOUBLE_EQ(c.excitation.inner_waviness[0].amplitude, 1.2e-6);
+  EXPECT_EQ(c.excitation.outer_waviness[0].order, 24);
+  EXPECT_EQ(bearing::key_dimension("waviness.inner.0.amplitude"), bearing::Dimension::length);
+  EXPECT_EQ(bearing::key_dimension("operation.speed"), bearing::Dimension::angular_speed);
+  EXPECT_TRUE(bearing::key_is_integer("bearing.balls"));
+  EXPECT_THROW(bearing::key_dimension("model.kind"), bearing::InputError);
+}
+
+// case.toml must let a run be repeated exactly: every resolved value survives the round trip.
+TEST(CaseFile, ResolvedCaseRoundTripsExactly) {
+  const Case a = parse_case(kDynamics, "dyn.toml");
+  const Case b = parse_case(bearing::case_to_toml(a), "case.toml");
+  EXPECT_EQ(b.bearing.ball_diameter, a.bearing.ball_diameter);
+  EXPECT_EQ(b.bearing.pitch_diameter, a.bearing.pitch_diameter);
+  EXPECT_EQ(b.bearing.balls, a.bearing.balls);
+  EXPECT_EQ(b.bearing.inner_conformity, a.bearing.inner_conformity);
+  EXPECT_EQ(b.bearing.clearance, a.bearing.clearance);
+  EXPECT_EQ(b.bearing.contact_angle, a.bearing.contact_angle);
+  EXPECT_EQ(b.bearing.ball.young, a.bearing.ball.young);
+  EXPECT_EQ(b.bearing.rings.poisson, a.bearing.rings.poisson);
+  EXPECT_EQ(b.rotor.mass, a.rotor.mass);
+  EXPECT_EQ(b.rotor.axial_damping, a.rotor.axial_damping);
+  EXPECT_EQ(b.operation.speed, a.operation.speed);
+  EXPECT_EQ(b.operation.load, a.operation.load);
+  EXPECT_EQ(b.operation.axial_load, a.operation.axial_load);
+  EXPECT_EQ(b.operation.unbalance, a.operation.unbalance);
+  EXPECT_EQ(b.operation.gravity, a.operation.gravity);
+  ASSERT_EQ(b.excitation.inner_waviness.size(), a.excitation.inner_waviness.size());
+  EXPECT_EQ(b.excitation.inner_waviness[0].amplitude, a.excitation.inner_waviness[0].amplitude);
+  EXPECT_EQ(b.excitation.inner_waviness[0].phase, a.excitation.inner_waviness[0].phase);
+  EXPECT_EQ(b.excitation.ball_size_errors, a.excitation.ball_size_errors);
+  EXPECT_EQ(b.model.kind, a.model.kind);
+  EXPECT_EQ(b.model.contact, a.model.contact);
+  EXPECT_EQ(b.model.waviness_stiffness, a.model.waviness_stiffness);
+  EXPECT_EQ(b.solver.method, a.solver.method);
+  EXPECT_EQ(b.solver.dt, a.solver.dt);
+  EXPECT_EQ(b.solver.duration, a.solver.duration);
+  EXPECT_EQ(b.solver.transient, a.solver.transient);
+  EXPECT_EQ(b.solver.tolerance, a.solver.tolerance);
+  EXPECT_EQ(b.solver.output_rate, a.solver.output_rate);
+  EXPECT_EQ(b.output.ball_loads, a.output.ball_loads);
+  EXPECT_EQ(b.output.window, a.output.window);
+  EXPECT_EQ(b.output.peaks, a.output.peaks);
 }

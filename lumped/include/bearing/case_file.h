@@ -1,10 +1,11 @@
 #pragma once
 // Case files: TOML with units (DESIGN.md "Case file"), resolved into SI values.
 //
-// Precedence, lowest first: built-in defaults, the `bearing.preset` catalogue entry, the keys in
-// the file, then `--set table.key=value` overrides. Unknown tables and keys are errors that suggest
-// the nearest valid name; every error names the key, the value and what is allowed.
+// Precedence, lowest first: built-in defaults, the `bearing.preset` catalogue entry, the keys in the
+// file, then `--set table.key=value` overrides. Unknown tables and keys are errors that suggest the
+// nearest valid name; every error names the key, the value and what is allowed.
 
+#include <cstdint>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -12,30 +13,78 @@
 #include <Eigen/Dense>
 
 #include "bearing/bearing.h"
+#include "bearing/excitation.h"
+#include "bearing/units.h"
 
 namespace bearing {
+
+/// Inner ring and shaft. Defaults: m = 0.6 kg, c = 200 N s/m, the values seeds 001–003 use.
+struct Rotor {
+  double mass = 0.6;             ///< inner ring + shaft mass m [kg]
+  double damping = 200.0;        ///< radial viscous damping c [N s/m]
+  double axial_mass = 0.6;       ///< axial mass (3-DOF) [kg]; defaults to `mass`
+  double axial_damping = 200.0;  ///< axial damping (3-DOF) [N s/m]; defaults to `damping`
+};
 
 /// Operating conditions. Outer ring fixed; x horizontal, y vertical (up).
 struct Operation {
   double speed = 0.0;                              ///< inner-ring speed ω_i [rad/s]
   Eigen::Vector2d load = Eigen::Vector2d::Zero();  ///< radial load (F_x, F_y) on the inner ring [N]
+  double axial_load = 0.0;                         ///< axial load F_z on the inner ring [N] (3-DOF)
+  double unbalance = 0.0;  ///< m_u e [kg m]; F_u = m_u e ω_i², rotating with the shaft
+  bool gravity = false;    ///< add the rotor weight −m g to F_y
+};
+
+/// Waviness and ball-size errors, resolved (tables read, band drawn).
+struct Excitations {
+  std::vector<WavinessHarmonic> inner_waviness;
+  std::vector<WavinessHarmonic> outer_waviness;
+  std::vector<double> ball_size_errors;  ///< ΔD_j = D − D_j [m], empty or one per ball
+  double ball_error_band = 0.0;          ///< band the errors were drawn from [m] (0: given/none)
+  std::uint64_t ball_error_seed = 0;     ///< seed of the draw
 };
 
 /// Model choices.
 struct ModelOptions {
-  std::string contact = "exact";  ///< Hertz method: "exact" | "hamrock-brewe" | "harris-table"
+  std::string kind = "2dof";        ///< "2dof" | "3dof"
+  std::string contact = "exact";    ///< Hertz method: "exact" | "hamrock-brewe" | "harris-table"
+  bool waviness_stiffness = false;  ///< TVDS (seed 002): K follows the waviness curvature
+};
+
+/// Time integration. Defaults: RK4 at 5 µs (seeds 002/003) for 1.2 s, the first 0.2 s discarded
+/// as transient, output at 20 kHz.
+struct SolverOptions {
+  std::string method = "rk4";      ///< "rk4" | "rkf45" | "rk8pd" | "newmark" | "bdf"
+  double dt = 5e-6;                ///< step (fixed-step methods) or first step [s]
+  double duration = 1.2;           ///< simulated time [s]
+  double transient = 0.2;          ///< discarded before statistics and spectra [s]
+  double tolerance = 1e-6;         ///< relative tolerance (adaptive, bdf, Newton) [-]
+  double output_rate = 20000.0;    ///< samples per second written [Hz]
+  double max_displacement = 1e-3;  ///< blow-up bound on the ring displacement [m]
+};
+
+/// What `run` writes besides the ring's channels.
+struct OutputOptions {
+  bool ball_loads = false;      ///< add each ball's load Q1…QZ to response.csv
+  std::string window = "hann";  ///< spectrum window: "hann" | "flattop" | "rectangular"
+  int peaks = 10;               ///< spectrum peaks listed per channel in summary.json
 };
 
 struct Case {
   std::string source;  ///< file the case was read from, or "built-in default case"
   std::string preset;  ///< bearing.preset, empty if none
   Bearing bearing;
+  Rotor rotor;
   Operation operation;
+  Excitations excitation;
   ModelOptions model;
+  SolverOptions solver;
+  OutputOptions output;
 };
 
 /// One command-line override `table.key=value` (the value is TOML, or else taken as a string, so
-/// `operation.speed=3000 rpm` and `model.contact=exact` need no quotes).
+/// `operation.speed=3000 rpm` and `model.contact=exact` need no quotes). A numeric path part
+/// indexes an array of tables: `waviness.inner.0.amplitude=1um`.
 struct Override {
   std::string key;    ///< dotted path, e.g. "material.ball.young"
   std::string value;  ///< the text after '='
@@ -44,13 +93,14 @@ struct Override {
 /// Parses "table.key=value"; throws InputError if there is no '=' or no dotted key.
 Override parse_override(std::string_view text);
 
-/// Reads and resolves a case file. Throws InputError ("<path>: <key> = <value>: <what is
-/// allowed>").
+/// Reads and resolves a case file. Throws InputError ("<path>: <key> = <value>: <what is allowed>").
+/// Waviness tables are found relative to the case file's folder.
 Case read_case_file(const std::string& path, const std::vector<Override>& overrides = {});
 
-/// Resolves a case from TOML text; `source` names it in messages.
+/// Resolves a case from TOML text; `source` names it in messages; relative table paths are taken
+/// from `base_dir` (empty: the working directory).
 Case parse_case(std::string_view toml_text, const std::string& source,
-                const std::vector<Override>& overrides = {});
+                const std::vector<Override>& overrides = {}, const std::string& base_dir = "");
 
 /// TOML of the built-in default case: the 6308 of seed 003 at 2000 rpm under seed 002's 20 N
 /// radial load, pointing down.
@@ -58,6 +108,17 @@ std::string_view default_case_toml();
 
 /// The built-in default case with overrides applied.
 Case default_case(const std::vector<Override>& overrides = {});
+
+/// The fully resolved case as TOML, every number in SI with 17 significant digits, waviness and
+/// ball errors written out: parse_case(case_to_toml(c)) gives back c exactly.
+std::string case_to_toml(const Case& c);
+
+/// The dimension of a numeric case-file key ("operation.speed" → angular speed; an array index
+/// may appear: "waviness.inner.0.amplitude"), for sweeps. Throws InputError for other keys.
+Dimension key_dimension(const std::string& key);
+
+/// Whether a key takes a whole number (bearing.balls, waviness orders, ...).
+bool key_is_integer(const std::string& key);
 
 /// The names of every key the case reader accepts, as "table.key" (for --help and suggestions).
 std::vector<std::string> known_keys();

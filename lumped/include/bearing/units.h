@@ -21,6 +21,7 @@ enum class Dimension {
   time,           ///< SI: s
   frequency,      ///< SI: Hz
   damping,        ///< SI: N s/m
+  mass_length,    ///< SI: kg m (unbalance: mass times eccentricity)
   dimensionless,  ///< no unit
 };
 
