@@ -48,6 +48,7 @@
 #include <memory>
 #include <string>
 #include <vector>
+#include "phasor.h"
 
 #include "bearing/bearing.h"
 #include "bearing/contact.h"
@@ -369,9 +370,11 @@ class BallSet {
   /// Fills `fr` for time t [s].
   void evaluate(double t, BallFrame& fr) const {
     const int Z = balls_;
-    const double cc = std::cos(cage_speed_ * t), sc = std::sin(cage_speed_ * t);
-    fr.cos_shaft = std::cos(inner_speed_ * t);
-    fr.sin_shaft = std::sin(inner_speed_ * t);
+    const Phasor cage = phasor(cage_speed_ * t);  // by rotation, not libm (phasor.h)
+    const double cc = cage.c, sc = cage.s;
+    const Phasor shaft = phasor(inner_speed_ * t);
+    fr.cos_shaft = shaft.c;
+    fr.sin_shaft = shaft.s;
     for (int j = 0; j < Z; ++j) {
       fr.cos_theta[j] = base_cos_[j] * cc - base_sin_[j] * sc;
       fr.sin_theta[j] = base_sin_[j] * cc + base_cos_[j] * sc;
