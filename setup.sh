@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # One command on a fresh Debian machine: installs the Debian packages the project needs (only the
-# missing ones, so a second run is fast), configures and builds into ./build, and runs bearing-sim
-# on its built-in default case (a 6308 at 2000 rpm under a radial load).
+# missing ones, so a second run is fast), configures and builds into ./build, and simulates
+# bearing-sim's built-in default case (a 6308 at 2000 rpm under a radial load), printing its
+# summary; the result files go to build/default-run/.
 set -euo pipefail
 cd "$(dirname "$0")"
 
@@ -29,5 +30,5 @@ cmake -S . -B build -G Ninja -DCMAKE_BUILD_TYPE=Release
 cmake --build build -j "$(nproc)"
 
 echo
-echo "setup: bearing-sim info (built-in default case)"
-./build/lumped/bearing-sim info
+echo "setup: bearing-sim run --out build/default-run (built-in default case)"
+./build/lumped/bearing-sim run --out build/default-run

@@ -1,17 +1,26 @@
 // bearing-sim: the command line of the lumped bearing model. Parses, calls the library, prints;
 // no physics here.
 
+#include <unistd.h>
+
+#include <chrono>
 #include <cstdio>
+#include <filesystem>
+#include <fstream>
 #include <iostream>
 #include <string>
 #include <vector>
 
+#include <gsl/gsl_errno.h>
 #include <CLI/CLI.hpp>
 
 #include "bearing/case_file.h"
 #include "bearing/errors.h"
 #include "bearing/info_report.h"
+#include "bearing/output.h"
 #include "bearing/presets.h"
+#include "bearing/simulation.h"
+#include "bearing/sweep.h"
 
 namespace {
 
@@ -19,15 +28,50 @@ constexpr const char* kCaseHelp =
     "TOML case file (see README.md and examples/); without it the built-in default case is used: "
     "a 6308 at 2000 rpm under a 20 N downward radial load";
 
-bearing::Case load(const std::string& path, const std::vector<std::string>& sets) {
-  std::vector<bearing::Override> overrides;
-  for (const auto& s : sets) overrides.push_back(bearing::parse_override(s));
+std::vector<bearing::Override> overrides_of(const std::vector<std::string>& sets) {
+  std::vector<bearing::Override> out;
+  for (const auto& s : sets) out.push_back(bearing::parse_override(s));
+  return out;
+}
+
+bearing::Case load(const std::string& path, const std::vector<bearing::Override>& overrides) {
   return path.empty() ? bearing::default_case(overrides) : bearing::read_case_file(path, overrides);
 }
+
+// The options every command shares: CASE, --set and the key list in the footer.
+void add_case_options(CLI::App* cmd, std::string& path, std::vector<std::string>& sets) {
+  cmd->add_option("CASE", path, kCaseHelp);
+  cmd->add_option("--set", sets,
+                  "Override one case-file value (repeat for more), e.g. "
+                  "--set operation.speed=\"3000 rpm\" --set bearing.balls=9; keys below")
+      ->type_name("TABLE.KEY=VALUE")
+      ->allow_extra_args(false);
+  cmd->footer("Case-file keys (plain numbers are SI; strings may carry a unit):\n" +
+              bearing::case_keys_help());
+}
+
+// Progress on stderr only for a person watching: not with --quiet, not into a file or pipe.
+struct ProgressLine {
+  bool enabled;
+  std::string label;
+  int last = -1;
+  void operator()(double fraction) {
+    if (!enabled) return;
+    const int percent = static_cast<int>(fraction * 100.0);
+    if (percent == last) return;
+    last = percent;
+    std::fprintf(stderr, "\r%s %3d%%", label.c_str(), percent);
+    if (percent >= 100) std::fprintf(stderr, "\r%*s\r", static_cast<int>(label.size()) + 6, "");
+    std::fflush(stderr);
+  }
+};
 
 }  // namespace
 
 int main(int argc, char** argv) {
+  // GSL's default handler aborts; the library checks GSL's return codes itself.
+  gsl_set_error_handler_off();
+
   CLI::App app{
       "bearing-sim: lumped Hertzian model of a deep-groove ball bearing (vibration and noise).\n"
       "Units: SI in every output (m, N, s, rad, Pa, Hz); case files accept units such as "
@@ -38,27 +82,56 @@ int main(int argc, char** argv) {
   std::string case_path;
   std::vector<std::string> sets;
   bool json = false;
+  bool quiet = false;
+  std::string out_dir;
+  std::vector<std::string> vary;
+  int jobs = 0;
+
   auto* info = app.add_subcommand(
       "info",
       "Contact constants per race (sum rho, F(rho), ellipticity, delta*, K) and of the ball "
       "between both races, bearing frequencies (shaft, FTF, BPFO, BPFI, BSF) and the static "
       "load distribution (deflection, ball loads, Q_max) for a case");
-  info->add_option("CASE", case_path, kCaseHelp);
-  info->add_option("--set", sets,
-                   "Override one case-file value (repeat for more), e.g. "
-                   "--set operation.speed=\"3000 rpm\" --set bearing.balls=9; keys below")
-      ->type_name("TABLE.KEY=VALUE")
-      ->allow_extra_args(false);
-  info->footer("Case-file keys (plain numbers are SI; strings may carry a unit):\n" +
-               bearing::case_keys_help());
+  add_case_options(info, case_path, sets);
   info->add_flag("--json", json,
                  "Print JSON (SI units) with the keys kinematics.{shaft,ftf,bpfo,bpfi,bsf}, "
                  "contact.{inner,outer}.{sum_rho,f_rho,ellipticity,delta_star,K}, contact.K, "
                  "contact.method, static.{deflection,ball_angles,ball_loads,q_max}");
 
+  auto* run = app.add_subcommand(
+      "run",
+      "Simulate a case (model.kind 2dof or 3dof) and write DIR/response.csv (t, then "
+      "x,y,vx,vy,ax,ay "
+      "[,z,vz,az] [,Q1..QZ]), DIR/spectrum.csv (one-sided amplitude spectra after the transient), "
+      "DIR/summary.json (channels.<name>.{rms,ptp,kurtosis,crest}, peaks.<name>[] with frequency, "
+      "amplitude, label) and DIR/case.toml (the fully resolved case); prints the summary");
+  add_case_options(run, case_path, sets);
+  run->add_option("--out", out_dir, "Folder for the result files (created if missing)")->required();
+  run->add_flag("--json", json, "Print summary.json instead of the readable summary");
+  run->add_flag("--quiet", quiet, "No progress on stderr (also off when stderr is not a terminal)");
+
+  auto* sweep = app.add_subcommand(
+      "sweep",
+      "Run a case for every combination of the --vary values, in parallel, and write "
+      "DIR/sweep.csv: "
+      "the varied values (SI), status, error, then each ring channel's rms, ptp, kurtosis, crest "
+      "and largest peak. A failed case is reported in its row; the others go on.");
+  add_case_options(sweep, case_path, sets);
+  sweep
+      ->add_option("--vary", vary,
+                   "KEY=FROM:TO:N, N values from FROM to TO (units allowed), repeat for more keys "
+                   "(Cartesian product), e.g. --vary operation.speed=1000rpm:3000rpm:5")
+      ->required()
+      ->allow_extra_args(false);
+  sweep->add_option("--out", out_dir, "Folder for sweep.csv (created if missing)")->required();
+  sweep->add_option("--jobs", jobs, "Parallel cases (default: all cores)")
+      ->check(CLI::NonNegativeNumber);
+  sweep->add_flag("--quiet", quiet, "No progress on stderr");
+
   auto* presets = app.add_subcommand("presets", "List the catalogue bearings and their sources");
 
   CLI11_PARSE(app, argc, argv);
+  const bool tty = isatty(STDERR_FILENO) && !quiet;
 
   try {
     if (*presets) {
@@ -67,13 +140,61 @@ int main(int argc, char** argv) {
       return 0;
     }
     if (*info) {
-      const bearing::Case c = load(case_path, sets);
+      const bearing::Case c = load(case_path, overrides_of(sets));
       const bearing::InfoReport report = bearing::compute_info(c);
       if (json)
         std::cout << bearing::info_json(report).dump(2) << "\n";
       else
         std::cout << bearing::info_text(report);
       return 0;
+    }
+    if (*run) {
+      const bearing::Case c = load(case_path, overrides_of(sets));
+      ProgressLine progress{tty, "run"};
+      const auto start = std::chrono::steady_clock::now();
+      const bearing::SimulationResult r = bearing::simulate(c, std::ref(progress));
+      const bearing::RunSummary s = bearing::summarize(c, r);
+      bearing::write_run(out_dir, c, r, s);
+      const double seconds =
+          std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+      if (json)
+        std::cout << bearing::summary_json(c, r, s).dump(2) << "\n";
+      else
+        std::cout << bearing::summary_text(c, r, s);
+      if (!quiet) std::fprintf(stderr, "run: wrote %s/ in %.3f s\n", out_dir.c_str(), seconds);
+      return 0;
+    }
+    if (*sweep) {
+      const auto base = overrides_of(sets);
+      std::vector<bearing::SweepAxis> axes;
+      for (const auto& v : vary) axes.push_back(bearing::parse_vary(v));
+      // Check the base case before starting many runs of it.
+      load(case_path, base);
+      const auto points = bearing::sweep_points(axes);
+      const auto loader = [&](const std::vector<bearing::Override>& point) {
+        auto all = base;
+        all.insert(all.end(), point.begin(), point.end());
+        return load(case_path, all);
+      };
+      const auto progress = [&](std::size_t done, std::size_t total) {
+        if (tty) std::fprintf(stderr, "\rsweep %zu/%zu cases", done, total);
+        if (tty && done == total) std::fprintf(stderr, "\n");
+      };
+      const auto rows = bearing::run_sweep(loader, points, jobs, progress);
+      std::filesystem::create_directories(out_dir);
+      const std::filesystem::path file = std::filesystem::path(out_dir) / "sweep.csv";
+      const std::filesystem::path tmp = std::filesystem::path(out_dir) / ".sweep.csv.partial";
+      {
+        std::ofstream f(tmp, std::ios::binary | std::ios::trunc);
+        f << bearing::sweep_csv(axes, rows);
+        if (!f) throw bearing::InputError("--out " + out_dir + ": cannot write sweep.csv");
+      }
+      std::filesystem::rename(tmp, file);
+      std::size_t failed = 0;
+      for (const auto& r : rows) failed += r.ok ? 0 : 1;
+      std::cout << "sweep: " << rows.size() << " cases, " << failed << " failed; wrote "
+                << file.string() << "\n";
+      return failed == rows.size() ? 3 : 0;
     }
   } catch (const bearing::InputError& e) {
     std::cerr << "bearing-sim: error: " << e.what() << "\n";

@@ -1,0 +1,117 @@
+// bearing-sim run and sweep end to end: the files, their keys, reproducibility, and that a failed
+// run leaves no result files behind.
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+namespace {
+
+namespace fs = std::filesystem;
+
+std::string read(const fs::path& p) {
+  std::ifstream f(p, std::ios::binary);
+  std::stringstream s;
+  s << f.rdbuf();
+  return s.str();
+}
+
+int sim(const std::string& args) {
+  const std::string cmd = std::string(BEARING_SIM) + " " + args + " >/dev/null 2>&1";
+  const int status = std::system(cmd.c_str());
+  return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+}
+
+fs::path fresh_dir(const std::string& name) {
+  const fs::path d = fs::path(::testing::TempDir()) / name;
+  fs::remove_all(d);
+  return d;
+}
+
+const std::string kShort = " --set solver.duration=0.3 --set solver.transient=0.1 --quiet";
+
+TEST(CliRun, WritesTheFourFilesWithTheDocumentedKeys) {
+  const fs::path d = fresh_dir("run_default");
+  ASSERT_EQ(sim("run --out " + d.string() + kShort + " --set output.ball_loads=true"), 0);
+  for (const char* f : {"response.csv", "spectrum.csv", "summary.json", "case.toml"})
+    EXPECT_TRUE(fs::exists(d / f)) << f;
+  for (const auto& e : fs::directory_iterator(d))
+    EXPECT_EQ(e.path().filename().string().find(".partial"), std::string::npos);
+
+  const std::string csv = read(d / "response.csv");
+  EXPECT_EQ(csv.substr(0, csv.find('\n')), "t,x,y,vx,vy,ax,ay,Q1,Q2,Q3,Q4,Q5,Q6,Q7,Q8");
+  // 0.3 s at 20 kHz: samples 0 … 6000, plus the header.
+  EXPECT_EQ(std::count(csv.begin(), csv.end(), '\n'), 6002);
+  EXPECT_EQ(csv.find("nan"), std::string::npos);
+
+  const std::string spec = read(d / "spectrum.csv");
+  EXPECT_EQ(spec.substr(0, spec.find('\n')), "frequency,x,y,vx,vy,ax,ay");
+
+  const auto j = nlohmann::json::parse(read(d / "summary.json"));
+  for (const char* ch : {"x", "y", "vx", "vy", "ax", "ay", "Q1"})
+    for (const char* k : {"rms", "ptp", "kurtosis", "crest"})
+      EXPECT_TRUE(j["channels"][ch][k].is_number()) << ch << "." << k;
+  ASSERT_FALSE(j["peaks"]["y"].empty());
+  EXPECT_TRUE(j["peaks"]["y"][0]["frequency"].is_number());
+  EXPECT_TRUE(j["peaks"]["y"][0]["amplitude"].is_number());
+  EXPECT_EQ(j["peaks"]["y"][0]["label"], "BPFO");
+  EXPECT_NEAR(j["frequencies"]["bpfo"].get<double>(), 102.4, 0.05);
+}
+
+// case.toml is the fully resolved case: running it again gives the same response, bit for bit.
+TEST(CliRun, ResolvedCaseRepeatsTheRunExactly) {
+  const fs::path a = fresh_dir("run_a"), b = fresh_dir("run_b");
+  ASSERT_EQ(sim("run --out " + a.string() + kShort + " --set model.kind=3dof" +
+                " --set operation.axial_load=50"),
+            0);
+  ASSERT_EQ(sim("run " + (a / "case.toml").string() + " --out " + b.string() + " --quiet"), 0);
+  EXPECT_EQ(read(a / "response.csv"), read(b / "response.csv"));
+  EXPECT_EQ(read(a / "summary.json").substr(read(a / "summary.json").find("\"channels\"")),
+            read(b / "summary.json").substr(read(b / "summary.json").find("\"channels\"")));
+  EXPECT_EQ(read(a / "response.csv").substr(0, 20).find("t,x,y,z"), 0u);
+}
+
+// A run that blows up (here: a 1 nm displacement bound) fails with status 3 and writes nothing.
+TEST(CliRun, FailedRunLeavesNoResultFiles) {
+  const fs::path d = fresh_dir("run_fail");
+  EXPECT_EQ(sim("run --out " + d.string() + kShort + " --set solver.max_displacement=1e-9"), 3);
+  for (const char* f : {"response.csv", "spectrum.csv", "summary.json", "case.toml"})
+    EXPECT_FALSE(fs::exists(d / f)) << f;
+}
+
+TEST(CliRun, BadInputExitsWithStatusTwo) {
+  EXPECT_EQ(sim("run --out " + fresh_dir("run_bad").string() + " --set solver.dt=0"), 2);
+  EXPECT_NE(sim("run"), 0);  // --out is required
+}
+
+// A sweep runs every combination; a case that fails is reported in its row, the others go on.
+TEST(CliSweep, OneRowPerCaseAndFailuresInTheirRow) {
+  const fs::path d = fresh_dir("sweep");
+  ASSERT_EQ(sim("sweep --vary bearing.balls=2:4:3 --vary operation.speed=1000rpm:2000rpm:2 --out " +
+                d.string() + kShort + " --jobs 2"),
+            0);
+  const std::string csv = read(d / "sweep.csv");
+  std::istringstream lines(csv);
+  std::string header, line;
+  std::getline(lines, header);
+  EXPECT_EQ(header.rfind("bearing.balls,operation.speed,status,error,x.rms", 0), 0u) << header;
+  int rows = 0, failed = 0;
+  while (std::getline(lines, line)) {
+    ++rows;
+    if (line.find(",failed,") != std::string::npos) {
+      ++failed;
+      EXPECT_EQ(line.rfind("2,", 0), 0u) << line;  // Z = 2 is the invalid one
+      EXPECT_NE(line.find("at least 3 balls"), std::string::npos) << line;
+    }
+  }
+  EXPECT_EQ(rows, 6);
+  EXPECT_EQ(failed, 2);
+  EXPECT_NE(sim("sweep --vary model.kind=1:2:2 --out " + d.string()), 0);  // not numeric
+}
+
+}  // namespace
