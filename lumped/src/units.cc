@@ -115,10 +115,10 @@ std::string join(const std::vector<std::string>& items) {
 
 // The dimension a unit belongs to, if any other than `dim` knows it (for a clearer message).
 const char* other_dimension(const std::string& unit, Dimension dim) {
-  for (Dimension d : {Dimension::length, Dimension::angle, Dimension::angular_speed,
-                      Dimension::force, Dimension::pressure, Dimension::mass, Dimension::density,
-                      Dimension::time, Dimension::frequency, Dimension::damping,
-                      Dimension::mass_length}) {
+  for (Dimension d :
+       {Dimension::length, Dimension::angle, Dimension::angular_speed, Dimension::force,
+        Dimension::pressure, Dimension::mass, Dimension::density, Dimension::time,
+        Dimension::frequency, Dimension::damping, Dimension::mass_length}) {
     if (d == dim) continue;
     for (const auto& e : table(d))
       if (unit == e.name) return dimension_name(d).data();

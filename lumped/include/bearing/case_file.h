@@ -1,9 +1,9 @@
 #pragma once
 // Case files: TOML with units (DESIGN.md "Case file"), resolved into SI values.
 //
-// Precedence, lowest first: built-in defaults, the `bearing.preset` catalogue entry, the keys in the
-// file, then `--set table.key=value` overrides. Unknown tables and keys are errors that suggest the
-// nearest valid name; every error names the key, the value and what is allowed.
+// Precedence, lowest first: built-in defaults, the `bearing.preset` catalogue entry, the keys in
+// the file, then `--set table.key=value` overrides. Unknown tables and keys are errors that suggest
+// the nearest valid name; every error names the key, the value and what is allowed.
 
 #include <cstdint>
 #include <string>
@@ -93,8 +93,8 @@ struct Override {
 /// Parses "table.key=value"; throws InputError if there is no '=' or no dotted key.
 Override parse_override(std::string_view text);
 
-/// Reads and resolves a case file. Throws InputError ("<path>: <key> = <value>: <what is allowed>").
-/// Waviness tables are found relative to the case file's folder.
+/// Reads and resolves a case file. Throws InputError ("<path>: <key> = <value>: <what is
+/// allowed>"). Waviness tables are found relative to the case file's folder.
 Case read_case_file(const std::string& path, const std::vector<Override>& overrides = {});
 
 /// Resolves a case from TOML text; `source` names it in messages; relative table paths are taken
