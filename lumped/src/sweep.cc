@@ -4,6 +4,7 @@
 #include <charconv>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <mutex>
 #include <thread>
 
@@ -67,17 +68,32 @@ SweepAxis parse_vary(std::string_view text) {
   const auto c2 = c1 == std::string::npos ? std::string::npos : range.find(':', c1 + 1);
   if (c2 == std::string::npos || range.find(':', c2 + 1) != std::string::npos)
     throw InputError("--vary " + t + ": expected KEY=FROM:TO:N (three fields after '=')");
-  const double from = parse_end(range.substr(0, c1), axis, "FROM");
-  const double to = parse_end(range.substr(c1 + 1, c2 - c1 - 1), axis, "TO");
+  const std::string from_text = range.substr(0, c1), to_text = range.substr(c1 + 1, c2 - c1 - 1);
+  const double from = parse_end(from_text, axis, "FROM");
+  const double to = parse_end(to_text, axis, "TO");
   long long n = 0;
   const std::string ns = range.substr(c2 + 1);
   const auto res = std::from_chars(ns.data(), ns.data() + ns.size(), n);
   if (res.ec != std::errc() || res.ptr != ns.data() + ns.size() || n < 1 || n > 100000)
     throw InputError("--vary " + t + ": N = \"" + ns +
                      "\" must be a whole number from 1 to 100000");
+  // Interpolate in the user's unit when both ends share one, so "0um:20um:3" gives exactly what
+  // the case reader makes of "10 um"; otherwise in SI.
+  double a = from, b = to;
+  std::string unit;
+  if (!axis.integer) {
+    char* end_a = nullptr;
+    char* end_b = nullptr;
+    const double na = std::strtod(from_text.c_str(), &end_a);
+    const double nb = std::strtod(to_text.c_str(), &end_b);
+    std::string ua(end_a), ub(end_b);
+    ua.erase(0, ua.find_first_not_of(' '));
+    ub.erase(0, ub.find_first_not_of(' '));
+    if (ua == ub && !ua.empty()) a = na, b = nb, unit = ua;
+  }
   for (long long i = 0; i < n; ++i) {
-    const double v =
-        n == 1 ? from : from + (to - from) * static_cast<double>(i) / static_cast<double>(n - 1);
+    const double u = n == 1 ? a : a + (b - a) * static_cast<double>(i) / static_cast<double>(n - 1);
+    const double v = unit.empty() ? u : to_si(u, unit, axis.dimension, "--vary " + t);
     if (axis.integer && std::fabs(v - std::round(v)) > 1e-9)
       throw InputError("--vary " + t + ": " + axis.key + " takes whole numbers, but step " +
                        std::to_string(i) + " gives " + std::to_string(v) +

@@ -238,6 +238,14 @@ double unit_factor(std::string_view unit, Dimension dim, const std::string& key)
   throw InputError(msg + "; accepted units: " + join(accepted_units(dim)));
 }
 
+double to_si(double number, std::string_view unit, Dimension dim, const std::string& key) {
+  const double factor = unit_factor(unit, dim, key);
+  const double inverse = std::round(1.0 / factor);
+  const bool exact_inverse = factor < 1.0 && std::fabs(inverse * factor - 1.0) < 1e-15 &&
+                             inverse <= 1e22 && std::fmod(inverse, 10.0) == 0.0;
+  return exact_inverse ? number / inverse : number * factor;
+}
+
 double parse_quantity(std::string_view text, Dimension dim, const std::string& key) {
   const std::string s(text);
   const char* begin = s.c_str();
@@ -279,7 +287,21 @@ double parse_quantity(std::string_view text, Dimension dim, const std::string& k
                        ")");
     return number;
   }
-  const double si = number * unit_factor(unit, dim, key + " = " + quoted);
+  // A power-of-ten unit shifts the decimal exponent of the text, so strtod rounds once and
+  // "15.081 mm" is exactly the double nearest 0.015081.
+  const double factor = unit_factor(unit, dim, key + " = " + quoted);
+  const int k = static_cast<int>(std::lround(std::log10(factor)));
+  double si;
+  if (std::fabs(factor / std::pow(10.0, k) - 1.0) < 1e-15) {
+    std::string digits(begin, static_cast<const char*>(end));
+    const auto e = digits.find_first_of("eE");
+    const long exponent =
+        e == std::string::npos ? 0 : std::strtol(digits.c_str() + e + 1, nullptr, 10);
+    if (e != std::string::npos) digits.resize(e);
+    si = std::strtod((digits + "e" + std::to_string(exponent + k)).c_str(), nullptr);
+  } else {
+    si = number * factor;
+  }
   if (!std::isfinite(si))
     throw InputError(key + " = " + quoted + ": the value overflows when converted to SI");
   return si;

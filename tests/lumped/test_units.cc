@@ -104,3 +104,14 @@ TEST(Units, MessagesNameKeyValueAndAllowedUnits) {
     EXPECT_NE(m.find("rpm"), std::string::npos) << m;
   }
 }
+
+// Sub-multiples divide by an exact power of ten, so a decimal in mm or um gives the double the
+// user wrote (10 * 1e-6 would be 9.999999999999999e-06).
+TEST(Units, DecimalSubMultiplesAreExact) {
+  EXPECT_EQ(parse_quantity("10 um", Dimension::length, "k"), 1e-5);
+  EXPECT_EQ(parse_quantity("15.081 mm", Dimension::length, "k"), 0.015081);
+  EXPECT_EQ(parse_quantity("14 um", Dimension::length, "k"), 14e-6);
+  EXPECT_EQ(parse_quantity("5 us", Dimension::time, "k"), 5e-6);
+  EXPECT_EQ(bearing::to_si(0.3, "um", Dimension::length, "k"), 3e-7);
+  EXPECT_EQ(parse_quantity("0.05 kN", Dimension::force, "k"), 50.0);
+}

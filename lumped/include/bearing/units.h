@@ -39,6 +39,10 @@ bool bare_number_is_si(Dimension dim);
 /// unknown or of another dimension, listing the accepted units.
 double unit_factor(std::string_view unit, Dimension dim, const std::string& key);
 
+/// `number` in `unit` converted to SI. Sub-multiples 10^-k are applied as a division by the exact
+/// 10^k, so "10 um" is the double nearest 1e-5. Throws as unit_factor.
+double to_si(double number, std::string_view unit, Dimension dim, const std::string& key);
+
 /// Parses "<number> <unit>" (space optional) into SI. A string without a unit is accepted only for
 /// dimensionless fields. Throws InputError naming `key`, the text and what is allowed.
 double parse_quantity(std::string_view text, Dimension dim, const std::string& key);
