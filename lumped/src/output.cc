@@ -1,11 +1,14 @@
 #include "bearing/output.h"
 
+#include <cerrno>
 #include <charconv>
 #include <cmath>
 #include <cstdio>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
+#include <string_view>
 #include <system_error>
 
 #include "bearing/errors.h"
@@ -17,12 +20,52 @@ namespace fs = std::filesystem;
 
 namespace {
 
-// Shortest text that reads back to the same double (std::to_chars), for CSV.
-void append(std::string& line, double v) {
-  char buf[32];
-  const auto res = std::to_chars(buf, buf + sizeof buf, v);
-  line.append(buf, res.ptr);
-}
+// A file written through a 1 MB buffer; numbers in the shortest form that reads back exactly
+// (std::to_chars). Streaming keeps a 24 000-row response from being built as one big string.
+class BufferedFile {
+ public:
+  explicit BufferedFile(const fs::path& path) : path_(path), file_(std::fopen(path.c_str(), "wb")) {
+    if (!file_)
+      throw InputError("cannot write " + path.string() + " (" + std::strerror(errno) + ")");
+    buffer_.reserve(kChunk + 64);
+  }
+  ~BufferedFile() {
+    if (file_) std::fclose(file_);
+  }
+  BufferedFile(const BufferedFile&) = delete;
+  BufferedFile& operator=(const BufferedFile&) = delete;
+
+  void text(std::string_view s) {
+    buffer_.append(s);
+    if (buffer_.size() >= kChunk) flush();
+  }
+  void number(double v) {
+    char buf[32];
+    const auto res = std::to_chars(buf, buf + sizeof buf, v);
+    buffer_.append(buf, res.ptr);
+  }
+  void character(char c) {
+    buffer_.push_back(c);
+    if (buffer_.size() >= kChunk) flush();
+  }
+  void close() {
+    flush();
+    const bool failed = std::fclose(file_) != 0;
+    file_ = nullptr;
+    if (failed) throw InputError("cannot write " + path_.string() + " (disk full?)");
+  }
+
+ private:
+  static constexpr std::size_t kChunk = 1 << 20;
+  void flush() {
+    if (!buffer_.empty() && std::fwrite(buffer_.data(), 1, buffer_.size(), file_) != buffer_.size())
+      throw InputError("cannot write " + path_.string() + " (disk full?)");
+    buffer_.clear();
+  }
+  fs::path path_;
+  std::FILE* file_;
+  std::string buffer_;
+};
 
 // `what` builds the message only when it is needed (the check runs for every value written).
 template <class What>
@@ -30,51 +73,49 @@ void require_finite_value(double v, const What& what) {
   if (!std::isfinite(v)) throw SolverError(what() + " is not finite; no result files were written");
 }
 
-std::string response_csv(const Response& r) {
-  std::string out = "t";
-  for (std::size_t i = 0; i < r.channels.size(); ++i) out += "," + r.channels[i];
-  out += "\n";
-  out.reserve(out.size() + r.time.size() * (r.channels.size() + 1) * 14);
+void write_response_csv(const fs::path& path, const Response& r) {
+  BufferedFile f(path);
+  f.text("t");
+  for (const auto& name : r.channels) f.character(','), f.text(name);
+  f.character('\n');
   for (std::size_t k = 0; k < r.time.size(); ++k) {
-    append(out, r.time[k]);
+    f.number(r.time[k]);
     for (std::size_t i = 0; i < r.channels.size(); ++i) {
       const double v = r.values[i][k];
       require_finite_value(v, [&] {
         return "response " + r.channels[i] + " at t = " + std::to_string(r.time[k]) + " s";
       });
-      out += ',';
-      append(out, v);
+      f.character(',');
+      f.number(v);
     }
-    out += '\n';
+    f.character('\n');
   }
-  return out;
+  f.close();
 }
 
-std::string spectrum_csv(const RunSummary& s) {
-  std::string out = "frequency";
-  for (const auto& name : s.spectrum_channels) out += "," + name;
-  out += "\n";
-  if (s.spectra.empty()) return out;
-  const std::size_t bins = s.spectra.front().frequency.size();
+void write_spectrum_csv(const fs::path& path, const RunSummary& s) {
+  BufferedFile f(path);
+  f.text("frequency");
+  for (const auto& name : s.spectrum_channels) f.character(','), f.text(name);
+  f.character('\n');
+  const std::size_t bins = s.spectra.empty() ? 0 : s.spectra.front().frequency.size();
   for (std::size_t b = 0; b < bins; ++b) {
-    append(out, s.spectra.front().frequency[b]);
+    f.number(s.spectra.front().frequency[b]);
     for (std::size_t i = 0; i < s.spectra.size(); ++i) {
       const double v = s.spectra[i].amplitude[b];
       require_finite_value(v, [&] { return "spectrum of " + s.spectrum_channels[i]; });
-      out += ',';
-      append(out, v);
+      f.character(',');
+      f.number(v);
     }
-    out += '\n';
+    f.character('\n');
   }
-  return out;
+  f.close();
 }
 
-void write_file(const fs::path& path, const std::string& text) {
-  std::ofstream f(path, std::ios::binary | std::ios::trunc);
-  if (!f) throw InputError("cannot write " + path.string());
-  f << text;
+void write_text(const fs::path& path, const std::string& text) {
+  BufferedFile f(path);
+  f.text(text);
   f.close();
-  if (!f) throw InputError("cannot write " + path.string() + " (disk full?)");
 }
 
 }  // namespace
@@ -159,24 +200,25 @@ std::string summary_text(const Case& c, const SimulationResult& r, const RunSumm
 
 void write_run(const std::string& dir, const Case& c, const SimulationResult& r,
                const RunSummary& s) {
-  // Everything is formatted (and checked for non-finite values) before anything is written.
-  const std::vector<std::pair<std::string, std::string>> files = {
-      {"response.csv", response_csv(r.response)},
-      {"spectrum.csv", spectrum_csv(s)},
-      {"summary.json", summary_json(c, r, s).dump(2) + "\n"},
-      {"case.toml", case_to_toml(c)}};
+  // The small files are formatted (and checked for non-finite values) first; the large ones are
+  // checked while they stream. Every file goes to a temporary name; the set is renamed into place
+  // only when all are complete, and a failure removes what was written.
+  const std::string summary = summary_json(c, r, s).dump(2) + "\n";
+  const std::string resolved = case_to_toml(c);
   std::error_code ec;
   fs::create_directories(dir, ec);
   if (ec) throw InputError("--out " + dir + ": cannot create the folder (" + ec.message() + ")");
+  const std::vector<std::string> names = {"response.csv", "spectrum.csv", "summary.json",
+                                          "case.toml"};
   std::vector<fs::path> temporary;
+  for (const auto& name : names) temporary.push_back(fs::path(dir) / ("." + name + ".partial"));
   try {
-    for (const auto& [name, text] : files) {
-      const fs::path tmp = fs::path(dir) / ("." + name + ".partial");
-      temporary.push_back(tmp);
-      write_file(tmp, text);
-    }
-    for (std::size_t i = 0; i < files.size(); ++i)
-      fs::rename(temporary[i], fs::path(dir) / files[i].first);
+    write_response_csv(temporary[0], r.response);
+    write_spectrum_csv(temporary[1], s);
+    write_text(temporary[2], summary);
+    write_text(temporary[3], resolved);
+    for (std::size_t i = 0; i < names.size(); ++i)
+      fs::rename(temporary[i], fs::path(dir) / names[i]);
   } catch (const fs::filesystem_error& e) {
     for (const auto& t : temporary) fs::remove(t, ec);
     throw InputError("--out " + dir + ": " + e.what());

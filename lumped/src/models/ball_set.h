@@ -333,6 +333,8 @@ class BallSet {
       : balls_(in.bearing.balls),
         cage_speed_(cage_speed),
         inner_speed_(in.inner_speed),
+        // Only the inner-race waviness and the unbalance turn with the shaft.
+        needs_shaft_(!in.inner_waviness.empty() || in.unbalance != 0.0),
         K_(in.contact.K),
         exponent_(in.contact.exponent) {
     const int Z = balls_;
@@ -372,7 +374,7 @@ class BallSet {
     const int Z = balls_;
     const Phasor cage = phasor(cage_speed_ * t);  // by rotation, not libm (phasor.h)
     const double cc = cage.c, sc = cage.s;
-    const Phasor shaft = phasor(inner_speed_ * t);
+    const Phasor shaft = needs_shaft_ ? phasor(inner_speed_ * t) : Phasor{1.0, 0.0};
     fr.cos_shaft = shaft.c;
     fr.sin_shaft = shaft.s;
     for (int j = 0; j < Z; ++j) {
@@ -442,6 +444,7 @@ class BallSet {
   int balls_;
   double cage_speed_;
   double inner_speed_;
+  bool needs_shaft_;
   double K_;
   double exponent_;
   std::vector<double> base_cos_, base_sin_, size_error_;
