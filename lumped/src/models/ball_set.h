@@ -50,6 +50,9 @@
 #include <vector>
 #include "phasor.h"
 
+#include <atomic>
+#include <cstdint>
+
 #include "bearing/bearing.h"
 #include "bearing/contact.h"
 #include "bearing/errors.h"
@@ -369,6 +372,25 @@ class BallSet {
   double exponent() const { return exponent_; }
   bool tvds() const { return inner_stiffness_.varies || outer_stiffness_.varies; }
 
+  /// The frame at time t [s], memoised per thread for the last (ball set, t). RK4 evaluates twice
+  /// at t + h/2 and starts each step at the previous step's end time, so half its force calls
+  /// reuse the frame. The memo is keyed by a per-object id, never by address, and each thread
+  /// has its own, so force() stays const and thread-safe. The reference is valid until the next
+  /// call of frame() on this thread.
+  const BallFrame& frame(double t) const {
+    thread_local struct {
+      std::uint64_t owner = 0;
+      double t = 0.0;
+      BallFrame frame;
+    } memo;
+    if (memo.owner != id_ || memo.t != t) {
+      evaluate(t, memo.frame);
+      memo.owner = id_;
+      memo.t = t;
+    }
+    return memo.frame;
+  }
+
   /// Fills `fr` for time t [s].
   void evaluate(double t, BallFrame& fr) const {
     const int Z = balls_;
@@ -441,6 +463,12 @@ class BallSet {
     rs.varies = true;
   }
 
+  static std::uint64_t next_id() {
+    static std::atomic<std::uint64_t> counter{0};
+    return ++counter;
+  }
+
+  std::uint64_t id_ = next_id();  ///< identifies this ball set in the per-thread frame memo
   int balls_;
   double cage_speed_;
   double inner_speed_;

@@ -159,8 +159,7 @@ class ThreeDofModel final : public BearingModel {
   }
 
   void force(double t, const double* q, const double* v, double* f) const override {
-    detail::BallFrame fr;
-    set_.evaluate(t, fr);
+    const detail::BallFrame& fr = set_.frame(t);
     const double x = q[0], y = q[1], z = q[2], n = set_.exponent();
     const double w = geometry_.w0 + z;
     double fx = load_x_ + unbalance_force_ * fr.cos_shaft - damping_ * v[0];
@@ -186,8 +185,7 @@ class ThreeDofModel final : public BearingModel {
 
   void force_jacobian(double t, const double* q, const double* /*v*/, double* dfdq,
                       double* dfdv) const override {
-    detail::BallFrame fr;
-    set_.evaluate(t, fr);
+    const detail::BallFrame& fr = set_.frame(t);
     contact_stiffness(fr, q, dfdq);
     for (int i = 0; i < 9; ++i) dfdq[i] = -dfdq[i];
     for (int i = 0; i < 9; ++i) dfdv[i] = 0.0;

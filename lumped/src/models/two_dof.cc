@@ -38,8 +38,7 @@ class TwoDofModel final : public BearingModel {
 
   // Contact loop: δ_j from the rotated ball directions, Q_j = K_j δ_j^n, summed on the ring.
   void force(double t, const double* q, const double* v, double* f) const override {
-    detail::BallFrame fr;
-    set_.evaluate(t, fr);
+    const detail::BallFrame& fr = set_.frame(t);
     const double x = q[0], y = q[1], n = set_.exponent();
     double fx = load_x_ + unbalance_force_ * fr.cos_shaft - damping_ * v[0];
     double fy = load_y_ + unbalance_force_ * fr.sin_shaft - damping_ * v[1];
@@ -60,8 +59,7 @@ class TwoDofModel final : public BearingModel {
   // ∂f/∂v = −c I.
   void force_jacobian(double t, const double* q, const double* /*v*/, double* dfdq,
                       double* dfdv) const override {
-    detail::BallFrame fr;
-    set_.evaluate(t, fr);
+    const detail::BallFrame& fr = set_.frame(t);
     const double x = q[0], y = q[1], n = set_.exponent();
     double kxx = 0, kxy = 0, kyy = 0;
     const int Z = set_.balls();
