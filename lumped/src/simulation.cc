@@ -1,5 +1,6 @@
 #include "bearing/simulation.h"
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
@@ -67,14 +68,23 @@ SimulationResult simulate(const Case& c, const Progress& progress) {
   r.contact = contact_constants(c.bearing, *make_hertz_solution(c.model.contact));
   r.frequencies = run_frequencies(c);
 
+  const int n = model->dofs();
+  const std::vector<double> q0 = model->initial_displacement();
+  const std::vector<double> v0(static_cast<std::size_t>(n), 0.0);
+
+  // One tolerance for the user: the absolute tolerance on displacements is solver.tolerance times
+  // the displacement scale of the problem (the static deflection, the per-ball gap, at least
+  // 1 µm), so tightening the tolerance is never capped by a fixed absolute floor.
+  double scale = std::max(1e-6, c.bearing.ball_gap());
+  for (double q : q0) scale = std::max(scale, std::fabs(q));
   IntegratorSettings settings;
   settings.method = c.solver.method;
   settings.dt = c.solver.dt;
   settings.rtol = c.solver.tolerance;
+  settings.atol = c.solver.tolerance * scale;
   settings.max_displacement = c.solver.max_displacement;
   const auto integrator = make_integrator(settings);
 
-  const int n = model->dofs();
   const int Z = model->balls();
   const auto names = model->dof_names();
   Response& out = r.response;
@@ -110,8 +120,6 @@ SimulationResult simulate(const Case& c, const Progress& progress) {
     }
     ++k;
   };
-  const std::vector<double> q0 = model->initial_displacement();
-  const std::vector<double> v0(static_cast<std::size_t>(n), 0.0);
   r.stats = integrator->integrate(*model, 0.0, q0, v0, out.time, observe, progress);
   if (k != samples)
     throw SolverError("the integrator delivered " + std::to_string(k) + " of " +

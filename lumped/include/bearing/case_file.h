@@ -58,7 +58,8 @@ struct SolverOptions {
   double dt = 5e-6;                ///< step (fixed-step methods) or first step [s]
   double duration = 1.2;           ///< simulated time [s]
   double transient = 0.2;          ///< discarded before statistics and spectra [s]
-  double tolerance = 1e-6;         ///< relative tolerance (adaptive, bdf, Newton) [-]
+  double tolerance = 1e-6;         ///< relative tolerance (adaptive, bdf, Newton) [-]; the
+                                   ///< absolute one on displacements is tolerance × max(|q0|, P_d/2, 1 um)
   double output_rate = 20000.0;    ///< samples per second written [Hz]
   double max_displacement = 1e-3;  ///< blow-up bound on the ring displacement [m]
 };
