@@ -78,6 +78,11 @@ struct BallFrame {
   double sin_shaft = 0;          ///< sin ω_i t
 };
 
+/// Q = K δ^n for δ > 0 (fast path for n = 3/2).
+inline double contact_load(double K, double n, double delta) {
+  return n == 1.5 ? K * delta * std::sqrt(delta) : K * std::pow(delta, n);
+}
+
 /// The relative compliance g(Δ) = K(Δ)^{−2/3} / K₀^{−2/3} = [δ*(F(Δ))/δ*(F₀)] · (1 + Δ/Σρ₀)^{1/3}
 /// of one race contact whose rolling-direction curvature changed by Δ [1/m], with
 /// F(Δ) = (num₀ + Δ)/(Σρ₀ + Δ): a function of Δ alone, tabulated once on a uniform grid through
@@ -391,6 +396,32 @@ class BallSet {
     return memo.frame;
   }
 
+  /// Each ball's load Q_j = K_j [δ_j]_+^n at time t [N], with δ_j = approach(j, frame) [m] the
+  /// model's own geometry (shared by the models' ball_loads()).
+  template <class Approach>
+  void ball_loads(double t, const Approach& approach, double* loads) const {
+    BallFrame fr;
+    evaluate(t, fr);
+    for (int j = 0; j < balls_; ++j) {
+      const double delta = approach(j, fr);
+      loads[j] = delta > 0 ? contact_load(fr.stiffness[j], exponent_, delta) : 0.0;
+    }
+  }
+
+  /// The contact potential Σ_j K_j/(n+1) [δ_j]_+^{n+1} at time t [J], δ_j as in ball_loads().
+  template <class Approach>
+  double potential_energy(double t, const Approach& approach) const {
+    BallFrame fr;
+    evaluate(t, fr);
+    double energy = 0;
+    for (int j = 0; j < balls_; ++j) {
+      const double delta = approach(j, fr);
+      if (delta > 0)
+        energy += fr.stiffness[j] / (exponent_ + 1.0) * std::pow(delta, exponent_ + 1.0);
+    }
+    return energy;
+  }
+
   /// Fills `fr` for time t [s].
   void evaluate(double t, BallFrame& fr) const {
     const int Z = balls_;
@@ -480,10 +511,5 @@ class BallSet {
   RaceExcitation inner_, outer_;
   RaceStiffness inner_stiffness_, outer_stiffness_;
 };
-
-/// Q = K δ^n for δ > 0 (fast path for n = 3/2).
-inline double contact_load(double K, double n, double delta) {
-  return n == 1.5 ? K * delta * std::sqrt(delta) : K * std::pow(delta, n);
-}
 
 }  // namespace bearing::detail

@@ -197,33 +197,25 @@ class ThreeDofModel final : public BearingModel {
   int balls() const override { return set_.balls(); }
 
   void ball_loads(double t, const double* q, double* loads) const override {
-    detail::BallFrame fr;
-    set_.evaluate(t, fr);
-    for (int j = 0; j < set_.balls(); ++j) {
-      const double r = q[0] * fr.cos_theta[j] + q[1] * fr.sin_theta[j] + fr.excitation[j];
-      double L;
-      const double delta = approach(geometry_, r, q[2], L);
-      loads[j] = delta > 0 ? detail::contact_load(fr.stiffness[j], set_.exponent(), delta) : 0.0;
-    }
+    set_.ball_loads(
+        t, [&](int j, const detail::BallFrame& fr) { return ball_approach(q, fr, j); }, loads);
   }
 
   double potential_energy(double t, const double* q) const override {
-    detail::BallFrame fr;
-    set_.evaluate(t, fr);
-    const double n = set_.exponent();
-    double energy = 0;
-    for (int j = 0; j < set_.balls(); ++j) {
-      const double r = q[0] * fr.cos_theta[j] + q[1] * fr.sin_theta[j] + fr.excitation[j];
-      double L;
-      const double delta = approach(geometry_, r, q[2], L);
-      if (delta > 0) energy += fr.stiffness[j] / (n + 1.0) * std::pow(delta, n + 1.0);
-    }
-    return energy;
+    return set_.potential_energy(
+        t, [&](int j, const detail::BallFrame& fr) { return ball_approach(q, fr, j); });
   }
 
   std::vector<double> initial_displacement() const override;
 
  private:
+  // δ_j of the 3-DOF geometry (MODEL.md §4), r_j = x cos θ_j + y sin θ_j + e_j.
+  double ball_approach(const double* q, const detail::BallFrame& fr, int j) const {
+    const double r = q[0] * fr.cos_theta[j] + q[1] * fr.sin_theta[j] + fr.excitation[j];
+    double L;
+    return approach(geometry_, r, q[2], L);
+  }
+
   static GrooveGeometry checked_geometry(const ModelInputs& in) {
     detail::validate_common_inputs(in);
     validate_axial(in);

@@ -87,26 +87,13 @@ class TwoDofModel final : public BearingModel {
   int balls() const override { return set_.balls(); }
 
   void ball_loads(double t, const double* q, double* loads) const override {
-    detail::BallFrame fr;
-    set_.evaluate(t, fr);
-    for (int j = 0; j < set_.balls(); ++j) {
-      const double delta =
-          q[0] * fr.cos_theta[j] + q[1] * fr.sin_theta[j] - gap_ + fr.excitation[j];
-      loads[j] = delta > 0 ? detail::contact_load(fr.stiffness[j], set_.exponent(), delta) : 0.0;
-    }
+    set_.ball_loads(
+        t, [&](int j, const detail::BallFrame& fr) { return approach(q, fr, j); }, loads);
   }
 
   double potential_energy(double t, const double* q) const override {
-    detail::BallFrame fr;
-    set_.evaluate(t, fr);
-    const double n = set_.exponent();
-    double energy = 0;
-    for (int j = 0; j < set_.balls(); ++j) {
-      const double delta =
-          q[0] * fr.cos_theta[j] + q[1] * fr.sin_theta[j] - gap_ + fr.excitation[j];
-      if (delta > 0) energy += fr.stiffness[j] / (n + 1.0) * std::pow(delta, n + 1.0);
-    }
-    return energy;
+    return set_.potential_energy(
+        t, [&](int j, const detail::BallFrame& fr) { return approach(q, fr, j); });
   }
 
   std::vector<double> initial_displacement() const override {
@@ -119,6 +106,11 @@ class TwoDofModel final : public BearingModel {
   }
 
  private:
+  // δ_j = x cos θ_j + y sin θ_j − γ + e_j (MODEL.md §1).
+  double approach(const double* q, const detail::BallFrame& fr, int j) const {
+    return q[0] * fr.cos_theta[j] + q[1] * fr.sin_theta[j] - gap_ + fr.excitation[j];
+  }
+
   detail::BallSet set_;
   double mass_;
   double damping_;
