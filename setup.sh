@@ -10,7 +10,7 @@ packages=(
   build-essential cmake ninja-build ccache pkg-config git
   libeigen3-dev libgsl-dev libtomlplusplus-dev nlohmann-json3-dev libcli11-dev   # lumped/
   googletest libgtest-dev libgmock-dev libbenchmark-dev                          # tests/, bench/
-  libdeal.ii-dev petsc-dev gmsh                                                  # fem/, meshes/
+  libdeal.ii-dev petsc-dev mpi-default-bin gmsh                                  # fem/, meshes/
 )
 
 missing=()
