@@ -377,12 +377,23 @@ TEST(SignalPeaks, NamesEveryHarmonicInOrder) {
                                            "3xFTF",  "BPFO",   "2xBPFO", "3xBPFO", "BPFI",
                                            "2xBPFI", "3xBPFI", "BSF",    "2xBSF",  "3xBSF"};
   const std::vector<double> base = {25, 10, 89.5, 135.5, 59};
-  ASSERT_EQ(names.size(), labels.size());
-  for (std::size_t i = 0; i < names.size(); ++i) {
+  // The plain harmonics first, then the inner race's shaft sidebands k·BPFI ± f_r.
+  ASSERT_EQ(names.size(), labels.size() + 6);
+  for (std::size_t i = 0; i < labels.size(); ++i) {
     EXPECT_EQ(names[i].label, labels[i]);
     EXPECT_DOUBLE_EQ(names[i].frequency, base[i / 3] * static_cast<double>(i % 3 + 1));
   }
-  EXPECT_EQ(bearing_frequency_names(25, 10, 89.5, 135.5, 59).size(), 25u);  // default 5
+  const std::vector<std::string> sidebands = {"BPFI-fr",   "BPFI+fr",   "2xBPFI-fr",
+                                              "2xBPFI+fr", "3xBPFI-fr", "3xBPFI+fr"};
+  for (std::size_t i = 0; i < sidebands.size(); ++i) {
+    EXPECT_EQ(names[labels.size() + i].label, sidebands[i]);
+    const double k = static_cast<double>(i / 2 + 1);
+    EXPECT_DOUBLE_EQ(names[labels.size() + i].frequency, k * 135.5 + (i % 2 ? 25.0 : -25.0));
+  }
+  EXPECT_EQ(bearing_frequency_names(25, 10, 89.5, 135.5, 59).size(), 35u);  // default 5
+  // No inner-race sidebands without a BPFI (nothing to modulate).
+  for (const auto& n : bearing_frequency_names(25, 10, 89.5, 0, 59))
+    EXPECT_EQ(n.label.find("BPFI"), std::string::npos) << n.label;
 }
 
 TEST(SignalPeaks, SkipsZeroFrequenciesAndRejectsBadOnes) {
@@ -534,3 +545,22 @@ TEST(SignalPeaks, RejectsBadArguments) {
 
 }  // namespace
 }  // namespace bearing
+
+// The inner race turns with the shaft: its lines carry shaft-rate sidebands k·BPFI ± f_r. The
+// 6308 at 2000 rpm has BPFI − f_r = 130.94 Hz, 2.4 Hz from 4·f_r = 133.33 Hz: the sideband is the
+// nearer name and wins; a tone exactly on 4·f_r stays "4xfr".
+TEST(SignalPeaks, LabelsInnerRaceShaftSidebands) {
+  const double fr = 2000.0 / 60.0, bpfi = 164.269, ftf = 12.8, bpfo = 102.4, bsf = 67.967;
+  const auto names = bearing::bearing_frequency_names(fr, ftf, bpfo, bpfi, bsf);
+  const auto label_of = [&](double f) {
+    const double rate = 8192.0, n = 8192.0 * 4;  // 0.25 Hz bins
+    std::vector<double> x(static_cast<std::size_t>(n));
+    for (std::size_t j = 0; j < x.size(); ++j) x[j] = std::sin(2 * M_PI * f * j / rate);
+    const auto s = bearing::amplitude_spectrum(x, rate, bearing::Window::hann);
+    return bearing::find_peaks(s, names, 1).at(0).label;
+  };
+  EXPECT_EQ(label_of(bpfi - fr), "BPFI-fr");
+  EXPECT_EQ(label_of(2 * bpfi + fr), "2xBPFI+fr");
+  EXPECT_EQ(label_of(4 * fr), "4xfr");
+  for (const auto& n : names) EXPECT_GT(n.frequency, 0.0) << n.label;
+}

@@ -63,6 +63,15 @@ std::vector<NamedFrequency> bearing_frequency_names(double shaft, double ftf, do
   add_harmonics(names, "BPFO", bpfo, max_harmonic);
   add_harmonics(names, "BPFI", bpfi, max_harmonic);
   add_harmonics(names, "BSF", bsf, max_harmonic);
+  // The inner race turns with the shaft, so its lines come with shaft-rate sidebands
+  // k·BPFI ± f_r (e.g. inner-race waviness under a fixed load zone). Listed after the plain
+  // harmonics: a tie goes to the simpler name.
+  if (shaft > 0 && bpfi > 0)
+    for (int k = 1; k <= max_harmonic; ++k) {
+      const std::string base = (k == 1 ? std::string() : std::to_string(k) + "x") + "BPFI";
+      if (k * bpfi - shaft > 0) names.push_back({base + "-fr", k * bpfi - shaft});
+      names.push_back({base + "+fr", k * bpfi + shaft});
+    }
   return names;
 }
 

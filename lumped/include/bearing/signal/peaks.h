@@ -16,7 +16,8 @@ struct NamedFrequency {
 };
 
 /// The bearing frequencies and their harmonics 1 … max_harmonic, in this order: "fr", "2xfr", …,
-/// "FTF", "2xFTF", …, "BPFO", …, "BPFI", …, "BSF", … (the fundamental has no "1x" prefix).
+/// "FTF", "2xFTF", …, "BPFO", …, "BPFI", …, "BSF", … (the fundamental has no "1x" prefix), then
+/// the inner race's shaft-rate sidebands "BPFI-fr", "BPFI+fr", "2xBPFI-fr", … (k·BPFI ± f_r).
 /// Arguments are the plain numbers (shaft rotation, cage, outer- and inner-race ball-pass and
 /// ball-spin frequencies [Hz], e.g. from bearing_frequencies()), so this layer does not depend on
 /// kinematics. A zero frequency (e.g. a stationary shaft) contributes no names.
