@@ -1,16 +1,18 @@
 #include "bearing/output.h"
 
+#include <algorithm>
 #include <cerrno>
-#include <charconv>
 #include <cmath>
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <memory>
 #include <sstream>
 #include <string_view>
 #include <system_error>
 
+#include "bearing/decimal.h"
 #include "bearing/errors.h"
 #include "bearing/info_report.h"
 
@@ -20,14 +22,20 @@ namespace fs = std::filesystem;
 
 namespace {
 
-// A file written through a 1 MB buffer; numbers in the shortest form that reads back exactly
-// (std::to_chars). Streaming keeps a 24 000-row response from being built as one big string.
+// Significant digits of the numbers in response.csv and spectrum.csv: a relative resolution of
+// 5e-12, far below the integrators' error, and the same text as printf("%.12g").
+constexpr int kCsvDigits = 12;
+
+// A file written through a 1 MB buffer; numbers with kCsvDigits significant digits (decimal.h:
+// ~20 ns each, where the shortest exact form costs ~45 ns and needs 17 digits for simulated data),
+// formatted straight into the buffer. Streaming keeps a 24 000-row response from being built as
+// one big string.
 class BufferedFile {
  public:
-  explicit BufferedFile(const fs::path& path) : path_(path), file_(std::fopen(path.c_str(), "wb")) {
+  explicit BufferedFile(const fs::path& path)
+      : path_(path), file_(std::fopen(path.c_str(), "wb")), buffer_(new char[kCapacity]) {
     if (!file_)
       throw InputError("cannot write " + path.string() + " (" + std::strerror(errno) + ")");
-    buffer_.reserve(kChunk + 64);
   }
   ~BufferedFile() {
     if (file_) std::fclose(file_);
@@ -36,17 +44,22 @@ class BufferedFile {
   BufferedFile& operator=(const BufferedFile&) = delete;
 
   void text(std::string_view s) {
-    buffer_.append(s);
-    if (buffer_.size() >= kChunk) flush();
+    while (!s.empty()) {
+      room(1);
+      const std::size_t n = std::min(s.size(), kCapacity - used_);
+      std::memcpy(buffer_.get() + used_, s.data(), n);
+      used_ += n;
+      s.remove_prefix(n);
+    }
   }
   void number(double v) {
-    char buf[32];
-    const auto res = std::to_chars(buf, buf + sizeof buf, v);
-    buffer_.append(buf, res.ptr);
+    room(kDecimalBufferSize);
+    used_ = static_cast<std::size_t>(write_decimal(buffer_.get() + used_, v, kCsvDigits) -
+                                     buffer_.get());
   }
   void character(char c) {
-    buffer_.push_back(c);
-    if (buffer_.size() >= kChunk) flush();
+    room(1);
+    buffer_[used_++] = c;
   }
   void close() {
     flush();
@@ -56,15 +69,19 @@ class BufferedFile {
   }
 
  private:
-  static constexpr std::size_t kChunk = 1 << 20;
+  static constexpr std::size_t kCapacity = 1 << 20;
+  void room(std::size_t n) {
+    if (used_ + n > kCapacity) flush();
+  }
   void flush() {
-    if (!buffer_.empty() && std::fwrite(buffer_.data(), 1, buffer_.size(), file_) != buffer_.size())
+    if (used_ > 0 && std::fwrite(buffer_.get(), 1, used_, file_) != used_)
       throw InputError("cannot write " + path_.string() + " (disk full?)");
-    buffer_.clear();
+    used_ = 0;
   }
   fs::path path_;
   std::FILE* file_;
-  std::string buffer_;
+  std::unique_ptr<char[]> buffer_;
+  std::size_t used_ = 0;
 };
 
 // `what` builds the message only when it is needed (the check runs for every value written).
@@ -217,6 +234,9 @@ void write_run(const std::string& dir, const Case& c, const SimulationResult& r,
     write_spectrum_csv(temporary[1], s);
     write_text(temporary[2], summary);
     write_text(temporary[3], resolved);
+    // The previous run's files are removed first: renaming onto an existing file makes ext4 write
+    // the new file's blocks out at once (its auto_da_alloc safeguard), ~3 ms here.
+    for (std::size_t i = 0; i < names.size(); ++i) fs::remove(fs::path(dir) / names[i]);
     for (std::size_t i = 0; i < names.size(); ++i)
       fs::rename(temporary[i], fs::path(dir) / names[i]);
   } catch (const fs::filesystem_error& e) {
