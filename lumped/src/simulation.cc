@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <memory>
 #include <stdexcept>
 
 #include "bearing/errors.h"
@@ -134,6 +135,7 @@ RunSummary summarize(const Case& c, const SimulationResult& result) {
   const double rate = c.solver.output_rate;
   const auto& f = result.frequencies;
   const auto names = bearing_frequency_names(f.shaft, f.ftf, f.bpfo, f.bpfi, f.bsf);
+  std::unique_ptr<SpectrumPlan> plan;  // one window and FFT table for all channels
   for (std::size_t i = 0; i < resp.channels.size(); ++i) {
     ChannelSummary ch;
     ch.name = resp.channels[i];
@@ -141,7 +143,8 @@ RunSummary summarize(const Case& c, const SimulationResult& result) {
     const std::vector<double> x = resp.steady(ch.name);
     ch.statistics = channel_statistics(x);
     if (ch.name.front() != 'Q') {
-      Spectrum spectrum = amplitude_spectrum(x, rate, window);
+      if (!plan) plan = std::make_unique<SpectrumPlan>(x.size(), rate, window);
+      Spectrum spectrum = (*plan)(x);
       ch.peaks = find_peaks(spectrum, names, c.output.peaks);
       s.spectrum_channels.push_back(ch.name);
       s.spectra.push_back(std::move(spectrum));
