@@ -89,14 +89,16 @@ int main(int argc, char** argv) {
 
   auto* info = app.add_subcommand(
       "info",
-      "Contact constants per race (sum rho, F(rho), ellipticity, delta*, K) and of the ball "
-      "between both races, bearing frequencies (shaft, FTF, BPFO, BPFI, BSF) and the static "
-      "load distribution (deflection, ball loads, Q_max) for a case");
+      "The contact law in use (a Hertz method, or the FE-calibrated constants of "
+      "model.calibration), contact constants per race (sum rho, F(rho), ellipticity, delta*, K, "
+      "exponent) and of the ball between both races, bearing frequencies (shaft, FTF, BPFO, "
+      "BPFI, BSF) and the static load distribution (deflection, ball loads, Q_max) for a case");
   add_case_options(info, case_path, sets);
   info->add_flag("--json", json,
                  "Print JSON (SI units) with the keys kinematics.{shaft,ftf,bpfo,bpfi,bsf}, "
-                 "contact.{inner,outer}.{sum_rho,f_rho,ellipticity,delta_star,K}, contact.K, "
-                 "contact.method, static.{deflection,ball_angles,ball_loads,q_max}");
+                 "contact.{inner,outer}.{sum_rho,f_rho,ellipticity,delta_star,K,exponent}, "
+                 "contact.{K,exponent,method}, contact.calibration (calibrated law), "
+                 "static.{deflection,ball_angles,ball_loads,q_max}");
 
   auto* run = app.add_subcommand(
       "run",

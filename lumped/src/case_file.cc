@@ -5,12 +5,14 @@
 #include <cmath>
 #include <cstdio>
 #include <cstring>
+#include <filesystem>
 #include <fstream>
 #include <optional>
 #include <sstream>
 
 #include <toml++/toml.h>
 
+#include "bearing/calibration.h"
 #include "bearing/errors.h"
 #include "bearing/hertz.h"
 #include "bearing/presets.h"
@@ -94,7 +96,9 @@ const std::vector<KeySpec>& schema() {
       {"ball_errors.seed", Kind::integer, D::dimensionless, "seed of the band draw (default 1)"},
       {"model.kind", Kind::text, D::dimensionless, "2dof | 3dof"},
       {"model.contact", Kind::text, D::dimensionless,
-       "Hertz method: exact | hamrock-brewe | harris-table"},
+       "contact law: exact | hamrock-brewe | harris-table | calibrated"},
+      {"model.calibration", Kind::text, D::dimensionless,
+       "FE constants for contact = \"calibrated\": the JSON of bearing-fem calibrate"},
       {"model.waviness_stiffness", Kind::boolean, D::dimensionless,
        "TVDS: contact stiffness follows the waviness curvature (default false: TVD)"},
       {"solver.method", Kind::text, D::dimensionless, "rk4 | rkf45 | rk8pd | newmark | bdf"},
@@ -587,13 +591,39 @@ Case resolve(const toml::table& doc, const std::string& source, const std::strin
     c.model.kind = *v;
   }
   if (auto v = model.text("contact")) {
-    if (*v == "calibrated")
-      throw InputError(
-          "model.contact = \"calibrated\": the FE-calibrated law is not available in "
-          "this version (it needs bearing-fem calibrate); allowed: exact, "
-          "hamrock-brewe, harris-table");
-    make_hertz_solution(*v, "model.contact");  // throws for an unknown name, listing the allowed
+    if (*v != "calibrated") {
+      try {
+        make_hertz_solution(*v, "model.contact");  // throws for an unknown name
+      } catch (const InputError& e) {
+        if (detail::edit_distance(*v, "calibrated") <= 3)
+          throw InputError("model.contact = \"" + *v +
+                           "\": unknown contact law (did you mean \"calibrated\"?); allowed: "
+                           "\"exact\", \"hamrock-brewe\", \"harris-table\", \"calibrated\"");
+        throw InputError(std::string(e.what()) +
+                         "; or \"calibrated\" (FE constants, with model.calibration)");
+      }
+    }
     c.model.contact = *v;
+  }
+  // The FE constants: found relative to the case file, checked against the bearing now, so a
+  // calibration for another bearing never reaches a model. An empty string means none (so that
+  // `--set 'model.calibration=""'` can switch a calibrated case back to a Hertz method).
+  const auto calibration = model.text("calibration");
+  const bool calibrated = c.model.contact == "calibrated";
+  if (calibration && !calibration->empty()) {
+    const std::string shown = "model.calibration = \"" + *calibration + "\"";
+    if (!calibrated)
+      throw InputError(shown +
+                       ": a calibration file is only used with model.contact = "
+                       "\"calibrated\" (the case has model.contact = \"" +
+                       c.model.contact + "\"); set both, or remove model.calibration");
+    c.model.calibration = read_calibration(join_path(base_dir, *calibration), shown);
+    check_calibration_bearing(*c.model.calibration, b, shown);
+  } else if (calibrated) {
+    throw InputError(
+        "model.contact = \"calibrated\" needs model.calibration = \"calibration.json\", the FE "
+        "constants written by bearing-fem calibrate for this bearing (a path relative to the case "
+        "file)");
   }
   if (auto v = model.boolean("waviness_stiffness")) c.model.waviness_stiffness = *v;
   model.finish();
@@ -684,6 +714,12 @@ void apply_override(toml::table& doc, const Override& o) {
   if (!t) throw InputError(where + "\"" + parts[parts.size() - 2] + "\" is not a table");
   toml::table parsed = override_value(o.value);
   t->insert_or_assign(parts.back(), std::move(*parsed.get("v")));
+  // A file named on the command line is relative to the working directory, not to the case
+  // file's folder: make it absolute here, before the case resolves relative paths.
+  if (o.key == "model.calibration")
+    if (auto* path = t->get(parts.back())->as_string();
+        path && !path->get().empty() && path->get().front() != '/')
+      *path = std::filesystem::absolute(path->get()).lexically_normal().string();
 }
 
 std::string schema_name(const std::string& key) {
@@ -821,8 +857,9 @@ std::string case_to_toml(const Case& c) {
       o << (j ? ", " : "") << num17(-c.excitation.ball_size_errors[j]);
     o << "]\n\n";
   }
-  o << "[model]\nkind = " << quoted(c.model.kind) << "\ncontact = " << quoted(c.model.contact)
-    << "\nwaviness_stiffness = " << (c.model.waviness_stiffness ? "true" : "false") << "\n\n";
+  o << "[model]\nkind = " << quoted(c.model.kind) << "\ncontact = " << quoted(c.model.contact);
+  if (c.model.calibration) o << "\ncalibration = " << quoted(c.model.calibration->path);
+  o << "\nwaviness_stiffness = " << (c.model.waviness_stiffness ? "true" : "false") << "\n\n";
   const SolverOptions& s = c.solver;
   o << "[solver]\nmethod = " << quoted(s.method) << "\ndt = " << num17(s.dt)
     << "\nduration = " << num17(s.duration) << "\ntransient = " << num17(s.transient)
@@ -831,6 +868,19 @@ std::string case_to_toml(const Case& c) {
   o << "[output]\nball_loads = " << (c.output.ball_loads ? "true" : "false")
     << "\nwindow = " << quoted(c.output.window) << "\npeaks = " << c.output.peaks << "\n";
   return o.str();
+}
+
+ContactConstants contact_constants(const Case& c) {
+  if (c.model.contact == "calibrated") {
+    if (!c.model.calibration)
+      throw InputError("model.contact = \"calibrated\" needs model.calibration");
+    return calibrated_contact_constants(c.bearing, *c.model.calibration);
+  }
+  return contact_constants(c.bearing, *make_hertz_solution(c.model.contact));
+}
+
+std::string hertz_shape_method(const ModelOptions& m) {
+  return m.contact == "calibrated" ? "exact" : m.contact;
 }
 
 Dimension key_dimension(const std::string& key) {

@@ -128,6 +128,17 @@ double series_stiffness(double k_inner, double k_outer) {
   return std::pow(std::pow(k_inner, -2.0 / 3.0) + std::pow(k_outer, -2.0 / 3.0), -1.5);
 }
 
+double series_stiffness(double k_inner, double k_outer, double exponent) {
+  if (exponent == 1.5) return series_stiffness(k_inner, k_outer);
+  if (!(std::isfinite(k_inner) && k_inner > 0 && std::isfinite(k_outer) && k_outer > 0 &&
+        std::isfinite(exponent) && exponent > 0))
+    throw InputError(
+        "series_stiffness: K_i = " + format_number(k_inner) + ", K_o = " + format_number(k_outer) +
+        " N/m^n and n = " + format_number(exponent) + " must all be positive and finite");
+  return std::pow(std::pow(k_inner, -1.0 / exponent) + std::pow(k_outer, -1.0 / exponent),
+                  -exponent);
+}
+
 ContactConstants contact_constants(const Bearing& b, const HertzSolution& method) {
   ContactConstants cc;
   cc.method = std::string(method.name());

@@ -5,7 +5,6 @@
 #include <sstream>
 
 #include "bearing/errors.h"
-#include "bearing/hertz.h"
 #include "bearing/presets.h"
 #include "bearing/units.h"
 
@@ -14,11 +13,12 @@ namespace bearing {
 InfoReport compute_info(const Case& c) {
   InfoReport r;
   r.input = c;
-  const auto method = make_hertz_solution(c.model.contact);
-  r.contact = contact_constants(c.bearing, *method);
+  r.contact = contact_constants(c);
   r.frequencies = bearing_frequencies(c.bearing, c.operation.speed);
+  StaticLoadOptions o;
+  o.exponent = r.contact.exponent;
   r.static_load =
-      solve_static_load(c.bearing.balls, r.contact.K, c.bearing.ball_gap(), c.operation.load);
+      solve_static_load(c.bearing.balls, r.contact.K, c.bearing.ball_gap(), c.operation.load, o);
   return r;
 }
 
@@ -34,6 +34,23 @@ void require_finite(const nlohmann::json& j, const std::string& path) {
       require_finite(j[i], path + "[" + std::to_string(i) + "]");
 }
 
+nlohmann::json calibration_json(const ContactCalibration& cal, const ContactConstants& cc) {
+  using nlohmann::json;
+  const auto residual = [](double v) { return v >= 0 ? json(v) : json(nullptr); };
+  json j = {
+      {"file", cal.path},
+      {"designation", cal.bearing.designation},
+      {"geometry", cal.geometry},
+      {"method", cal.method},
+      {"mesh", cal.mesh},
+      {"date", cal.date},
+      {"load_range", cal.has_load_range() ? json{cal.load_min, cal.load_max} : json(nullptr)},
+      {"fit_residual",
+       {{"inner", residual(cal.inner.fit_residual)}, {"outer", residual(cal.outer.fit_residual)}}},
+      {"series_fit_residual", cc.series_fit_residual}};
+  return j;
+}
+
 nlohmann::json info_json(const InfoReport& r) {
   using nlohmann::json;
   const auto race = [](const RaceContact& rc) {
@@ -41,7 +58,8 @@ nlohmann::json info_json(const InfoReport& r) {
                 {"f_rho", rc.f_rho},
                 {"ellipticity", rc.shape.ellipticity},
                 {"delta_star", rc.shape.delta_star},
-                {"K", rc.K}};
+                {"K", rc.K},
+                {"exponent", rc.exponent}};
   };
   const Bearing& b = r.input.bearing;
   json j;
@@ -57,17 +75,26 @@ nlohmann::json info_json(const InfoReport& r) {
   j["contact"] = {{"method", r.contact.method},
                   {"inner", race(r.contact.inner)},
                   {"outer", race(r.contact.outer)},
-                  {"K", r.contact.K}};
+                  {"K", r.contact.K},
+                  {"exponent", r.contact.exponent}};
+  const auto& cal = r.input.model.calibration;
+  if (cal) j["contact"]["calibration"] = calibration_json(*cal, r.contact);
   const auto& s = r.static_load;
   j["static"] = {{"deflection", {s.deflection.x(), s.deflection.y()}},
                  {"ball_angles", s.ball_angles},
                  {"ball_loads", s.ball_loads},
                  {"q_max", s.q_max}};
-  j["units"] = {{"case.speed", "rad/s"},    {"case.load", "N"},
-                {"kinematics", "Hz"},       {"contact.*.sum_rho", "1/m"},
-                {"contact.*.K", "N/m^1.5"}, {"contact.K", "N/m^1.5"},
-                {"static.deflection", "m"}, {"static.ball_angles", "rad"},
-                {"static.ball_loads", "N"}, {"static.q_max", "N"}};
+  // K is in N/m^n with the exponent n beside it (1.5 for the Hertz methods).
+  const std::string k_unit = cal ? "N/m^exponent" : "N/m^1.5";
+  j["units"] = {
+      {"case.speed", "rad/s"},       {"case.load", "N"},         {"kinematics", "Hz"},
+      {"contact.*.sum_rho", "1/m"},  {"contact.*.K", k_unit},    {"contact.K", k_unit},
+      {"contact.*.exponent", "1"},   {"contact.exponent", "1"},  {"static.deflection", "m"},
+      {"static.ball_angles", "rad"}, {"static.ball_loads", "N"}, {"static.q_max", "N"}};
+  if (cal) {
+    j["units"]["contact.calibration.load_range"] = "N";
+    j["units"]["contact.calibration.series_fit_residual"] = "1";
+  }
   require_finite(j);
   return j;
 }
@@ -93,6 +120,39 @@ std::string pad(const std::string& s, std::size_t width) {
 
 std::string rpad(const std::string& s, std::size_t width) {
   return s.size() >= width ? s : std::string(width - s.size(), ' ') + s;
+}
+
+// "Contact law: calibrated (...)" and what it means, for info_text.
+std::string calibrated_law_text(const ContactCalibration& cal, const ContactConstants& cc) {
+  std::ostringstream o;
+  const auto law = [](double K, double n) {
+    return "K = " + num(K) + " N/m^" + num(n) + ", n = " + num(n);
+  };
+  o << "Contact law: calibrated (FE";
+  if (!cal.geometry.empty()) o << ", " << cal.geometry << " geometry";
+  o << ", file " << cal.path;
+  if (!cal.date.empty()) o << ", " << cal.date;
+  o << "): inner " << law(cc.inner.K, cc.inner.exponent) << "; outer "
+    << law(cc.outer.K, cc.outer.exponent) << "; ball between both races " << law(cc.K, cc.exponent)
+    << "\n";
+  if (!cal.method.empty()) o << "  FE method: " << cal.method << "\n";
+  if (!cal.mesh.empty()) o << "  FE mesh: " << cal.mesh << "\n";
+  if (cal.inner.fit_residual >= 0 || cal.outer.fit_residual >= 0) {
+    const auto res = [](double v) { return v >= 0 ? num(v, 3) : std::string("not given"); };
+    o << "  FE fit residual: inner " << res(cal.inner.fit_residual) << ", outer "
+      << res(cal.outer.fit_residual) << "\n";
+  }
+  if (cal.has_load_range())
+    o << "  FE load range: " << num(cal.load_min) << " N to " << num(cal.load_max) << " N\n";
+  if (cal.inner.exponent == cal.outer.exponent)
+    o << "  ball law: exact series of the two races (equal exponents)\n";
+  else
+    o << "  ball law: least-squares fit of the series law delta(Q) = (Q/K_i)^(1/n_i) + "
+         "(Q/K_o)^(1/n_o) over 50 loads in the FE load range, relative RMS residual "
+      << num(cc.series_fit_residual, 3) << "\n";
+  o << "  K and n are the FE constants; curvatures, F(rho), ellipticity, delta* and the contact "
+       "ellipse are the exact Hertz solution's\n";
+  return o.str();
 }
 
 }  // namespace
@@ -126,7 +186,11 @@ std::string info_text(const InfoReport& r) {
 
   const auto& ci = r.contact.inner;
   const auto& co = r.contact.outer;
-  o << "Hertz contact (method: " << r.contact.method << ")\n";
+  const auto& cal = c.model.calibration;
+  if (cal)
+    o << calibrated_law_text(*cal, r.contact);
+  else
+    o << "Hertz contact (method: " << r.contact.method << ")\n";
   o << "  " << pad("", 24) << rpad("inner", 14) << rpad("outer", 14) << "\n";
   const auto row = [&](const std::string& name, const std::string& unit, double a, double bb) {
     o << "  " << pad(name + " [" + unit + "]", 24) << rpad(num(a), 14) << rpad(num(bb), 14) << "\n";
@@ -135,8 +199,15 @@ std::string info_text(const InfoReport& r) {
   row("F(rho)", "-", ci.f_rho, co.f_rho);
   row("ellipticity a/b", "-", ci.shape.ellipticity, co.shape.ellipticity);
   row("delta*", "-", ci.shape.delta_star, co.shape.delta_star);
-  row("K", "N/m^1.5", ci.K, co.K);
-  o << "  ball between both races: K = " << num(r.contact.K) << " N/m^1.5\n\n";
+  if (cal) {
+    row("K", "N/m^n", ci.K, co.K);
+    row("exponent n", "-", ci.exponent, co.exponent);
+    o << "  ball between both races: K = " << num(r.contact.K) << " N/m^" << num(r.contact.exponent)
+      << ", n = " << num(r.contact.exponent) << "\n\n";
+  } else {
+    row("K", "N/m^1.5", ci.K, co.K);
+    o << "  ball between both races: K = " << num(r.contact.K) << " N/m^1.5\n\n";
+  }
 
   const auto& s = r.static_load;
   o << "Static load distribution\n";

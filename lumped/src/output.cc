@@ -150,6 +150,14 @@ nlohmann::json summary_json(const Case& c, const SimulationResult& r, const RunS
                {"duration", c.solver.duration},
                {"transient", c.solver.transient},
                {"output_rate", c.solver.output_rate}};
+  if (c.model.calibration)
+    j["case"]["calibration"] = calibration_json(*c.model.calibration, r.contact);
+  // The contact law the run used: Q = K δ^n per race and for the ball between both races.
+  const auto law = [](double K, double n) { return json{{"K", K}, {"exponent", n}}; };
+  j["contact"] = law(r.contact.K, r.contact.exponent);
+  j["contact"]["method"] = r.contact.method;
+  j["contact"]["inner"] = law(r.contact.inner.K, r.contact.inner.exponent);
+  j["contact"]["outer"] = law(r.contact.outer.K, r.contact.outer.exponent);
   const auto& f = r.frequencies;
   j["frequencies"] = {
       {"shaft", f.shaft}, {"ftf", f.ftf}, {"bpfo", f.bpfo}, {"bpfi", f.bpfi}, {"bsf", f.bsf}};
@@ -171,11 +179,16 @@ nlohmann::json summary_json(const Case& c, const SimulationResult& r, const RunS
                  {"steps", r.stats.steps},
                  {"rejected_steps", r.stats.rejected_steps},
                  {"force_evaluations", r.stats.force_evaluations}};
-  j["units"] = {
-      {"frequencies", "Hz"},     {"channels", "see channels.<name>.unit (kurtosis and crest: 1)"},
-      {"peaks.frequency", "Hz"}, {"peaks.amplitude", "unit of the channel"},
-      {"case.speed", "rad/s"},   {"case.load", "N"},
-      {"case.duration", "s"}};
+  j["units"] = {{"frequencies", "Hz"},
+                {"channels", "see channels.<name>.unit (kurtosis and crest: 1)"},
+                {"peaks.frequency", "Hz"},
+                {"peaks.amplitude", "unit of the channel"},
+                {"case.speed", "rad/s"},
+                {"case.load", "N"},
+                {"case.duration", "s"},
+                {"contact.K", "N/m^exponent (contact.exponent)"},
+                {"contact.*.K", "N/m^exponent"}};
+  if (c.model.calibration) j["units"]["case.calibration.load_range"] = "N";
   require_finite(j);
   return j;
 }

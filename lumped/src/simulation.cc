@@ -6,7 +6,6 @@
 #include <stdexcept>
 
 #include "bearing/errors.h"
-#include "bearing/hertz.h"
 #include "bearing/models/three_dof.h"
 #include "bearing/models/two_dof.h"
 
@@ -26,8 +25,8 @@ std::vector<double> Response::steady(const std::string& name) const {
 ModelInputs model_inputs(const Case& c) {
   ModelInputs in;
   in.bearing = c.bearing;
-  in.hertz_method = c.model.contact;
-  in.contact = contact_constants(c.bearing, *make_hertz_solution(c.model.contact));
+  in.hertz_method = hertz_shape_method(c.model);
+  in.contact = contact_constants(c);
   in.inner_speed = c.operation.speed;
   in.load = c.operation.load;
   in.axial_load = c.operation.axial_load;
@@ -66,7 +65,7 @@ BearingFrequencies run_frequencies(const Case& c) {
 SimulationResult simulate(const Case& c, const Progress& progress) {
   SimulationResult r;
   const auto model = make_model(c);
-  r.contact = contact_constants(c.bearing, *make_hertz_solution(c.model.contact));
+  r.contact = contact_constants(c);
   r.frequencies = run_frequencies(c);
 
   const int n = model->dofs();

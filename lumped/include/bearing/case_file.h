@@ -6,6 +6,7 @@
 // the nearest valid name; every error names the key, the value and what is allowed.
 
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -13,6 +14,8 @@
 #include <Eigen/Dense>
 
 #include "bearing/bearing.h"
+#include "bearing/calibration.h"
+#include "bearing/contact.h"
 #include "bearing/excitation.h"
 #include "bearing/units.h"
 
@@ -46,20 +49,26 @@ struct Excitations {
 
 /// Model choices.
 struct ModelOptions {
-  std::string kind = "2dof";        ///< "2dof" | "3dof"
-  std::string contact = "exact";    ///< Hertz method: "exact" | "hamrock-brewe" | "harris-table"
+  std::string kind = "2dof";  ///< "2dof" | "3dof"
+  /// Contact law: a Hertz method "exact" | "hamrock-brewe" | "harris-table", or "calibrated"
+  /// (the FE constants of `calibration`).
+  std::string contact = "exact";
+  /// `model.calibration`, read and checked against the bearing when the case is parsed: present
+  /// exactly when contact == "calibrated". Its path is absolute.
+  std::optional<ContactCalibration> calibration;
   bool waviness_stiffness = false;  ///< TVDS (seed 002): K follows the waviness curvature
 };
 
 /// Time integration. Defaults: RK4 at 5 µs (seeds 002/003) for 1.2 s, the first 0.2 s discarded
 /// as transient, output at 20 kHz.
 struct SolverOptions {
-  std::string method = "rk4";      ///< "rk4" | "rkf45" | "rk8pd" | "newmark" | "bdf"
-  double dt = 5e-6;                ///< step (fixed-step methods) or first step [s]
-  double duration = 1.2;           ///< simulated time [s]
-  double transient = 0.2;          ///< discarded before statistics and spectra [s]
-  double tolerance = 1e-6;         ///< relative tolerance (adaptive, bdf, Newton) [-]; the
-                                   ///< absolute one on displacements is tolerance × max(|q0|, P_d/2, 1 um)
+  std::string method = "rk4";  ///< "rk4" | "rkf45" | "rk8pd" | "newmark" | "bdf"
+  double dt = 5e-6;            ///< step (fixed-step methods) or first step [s]
+  double duration = 1.2;       ///< simulated time [s]
+  double transient = 0.2;      ///< discarded before statistics and spectra [s]
+  /// Relative tolerance (adaptive, bdf, Newton) [-]; the absolute one on displacements is
+  /// tolerance × max(|q0|, P_d/2, 1 um).
+  double tolerance = 1e-6;
   double output_rate = 20000.0;    ///< samples per second written [Hz]
   double max_displacement = 1e-3;  ///< blow-up bound on the ring displacement [m]
 };
@@ -83,6 +92,15 @@ struct Case {
   OutputOptions output;
 };
 
+/// The contact constants of the case's law (the one place models, the static solution and `info`
+/// get them from): contact_constants(bearing, Hertz method) for a Hertz method,
+/// calibrated_contact_constants(bearing, calibration) for "calibrated".
+ContactConstants contact_constants(const Case& c);
+
+/// The Hertz method behind the curvatures and ellipse shape of the case's law (for TVDS): the
+/// method itself, or "exact" for "calibrated".
+std::string hertz_shape_method(const ModelOptions& m);
+
 /// One command-line override `table.key=value` (the value is TOML, or else taken as a string, so
 /// `operation.speed=3000 rpm` and `model.contact=exact` need no quotes). A numeric path part
 /// indexes an array of tables: `waviness.inner.0.amplitude=1um`.
@@ -95,7 +113,8 @@ struct Override {
 Override parse_override(std::string_view text);
 
 /// Reads and resolves a case file. Throws InputError ("<path>: <key> = <value>: <what is
-/// allowed>"). Waviness tables are found relative to the case file's folder.
+/// allowed>"). Waviness tables and model.calibration are found relative to the case file's
+/// folder; a model.calibration given by an override relative to the working directory.
 Case read_case_file(const std::string& path, const std::vector<Override>& overrides = {});
 
 /// Resolves a case from TOML text; `source` names it in messages; relative table paths are taken

@@ -33,12 +33,13 @@ struct RaceContact {
   double f_rho = 0;       ///< F(ρ) [-]
   double compliance = 0;  ///< η = (1−ν_b²)/E_b + (1−ν_r²)/E_r [1/Pa]
   HertzShape shape;       ///< κ, K(e), E(e), δ*, a*, b*
-  double K = 0;           ///< load–deflection constant, Q = K δ^{3/2} [N/m^1.5]
-  double exponent = 1.5;  ///< load–deflection exponent n [-] (1.5 for Hertz)
+  double K = 0;           ///< load–deflection constant, Q = K δ^n [N/m^n] (N/m^1.5 for Hertz)
+  double exponent = 1.5;  ///< load–deflection exponent n [-] (1.5 for Hertz; FE-calibrated: any)
 
-  /// Elastic approach δ under normal load Q ≥ 0 [m].
+  /// Elastic approach δ = (Q/K)^{1/n} under normal load Q ≥ 0 [m].
   double approach(double load) const;
-  /// Major semi-axis a of the contact ellipse under load Q [m] (transverse to rolling).
+  /// Major semi-axis a of the contact ellipse under load Q [m] (transverse to rolling). The
+  /// semi-axes and the pressure are Hertz's, whatever K and n are (calibration.h).
   double semi_major(double load) const;
   /// Minor semi-axis b under load Q [m] (along the rolling direction).
   double semi_minor(double load) const;
@@ -53,15 +54,27 @@ RaceContact race_contact(const Bearing& b, Race race, const HertzSolution& metho
 /// K = (K_i^{−2/3} + K_o^{−2/3})^{−3/2} [N/m^1.5].
 double series_stiffness(double k_inner, double k_outer);
 
+/// Series stiffness of a ball between two races with the same exponent n, Q = K_r δ_r^n:
+/// the approaches add, (Q/K)^{1/n} = (Q/K_i)^{1/n} + (Q/K_o)^{1/n}, so
+/// K = (K_i^{−1/n} + K_o^{−1/n})^{−n} [N/m^n]. For n = 3/2 exactly the same number as
+/// series_stiffness(k_inner, k_outer).
+double series_stiffness(double k_inner, double k_outer, double exponent);
+
 /// Contact constants of the whole bearing: both races and the ball between them.
 struct ContactConstants {
-  std::string method;  ///< "exact", "hamrock-brewe", "harris-table" (later "calibrated")
+  std::string method;  ///< "exact", "hamrock-brewe", "harris-table" or "calibrated"
   RaceContact inner;
   RaceContact outer;
-  double K = 0;           ///< series constant of one ball between both races [N/m^1.5]
-  double exponent = 1.5;  ///< load–deflection exponent of the series law [-]
+  double K = 0;           ///< series constant of one ball between both races [N/m^n]
+  double exponent = 1.5;  ///< load–deflection exponent n of the series law [-]
+  /// Relative RMS residual of the ball's law Q = K δ^n when it is a least-squares fit of the
+  /// series law of two races with different exponents (calibration.h); 0 when it is exact [-].
+  double series_fit_residual = 0;
 };
 
+/// Hertz constants of both races and of the ball between them by one Hertz method (exponent 3/2).
+/// The FE-calibrated law: calibrated_contact_constants (calibration.h); the law a case selects:
+/// contact_constants(const Case&) (case_file.h).
 ContactConstants contact_constants(const Bearing& b, const HertzSolution& method);
 
 }  // namespace bearing

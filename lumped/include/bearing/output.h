@@ -9,7 +9,9 @@
 
 namespace bearing {
 
-/// summary.json: `case`, `frequencies` [Hz], `channels.<name>.{mean,rms,ptp,kurtosis,crest}` (SI),
+/// summary.json: `case` (with `case.calibration` for a calibrated law, see calibration_json),
+/// `contact` (the law: `method`, `K` [N/m^n] and `exponent` n of the ball between both races and
+/// of each race), `frequencies` [Hz], `channels.<name>.{mean,rms,ptp,kurtosis,crest}` (SI),
 /// `peaks.<name>[]` with `frequency` [Hz], `amplitude` (SI) and `label`, `solver` (method, steps,
 /// force evaluations) and `units`. Throws SolverError if any value is not finite.
 nlohmann::json summary_json(const Case& c, const SimulationResult& r, const RunSummary& s);

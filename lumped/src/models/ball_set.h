@@ -459,7 +459,17 @@ class BallSet {
 
  private:
   void setup_tvds(const ModelInputs& in) {
-    if (in.contact.exponent != 1.5)
+    const bool hertz_exponents = in.contact.exponent == 1.5 && in.contact.inner.exponent == 1.5 &&
+                                 in.contact.outer.exponent == 1.5;
+    if (!hertz_exponents && in.contact.method == "calibrated")
+      throw InputError(
+          "model.waviness_stiffness = true (TVDS) needs the Hertz exponent 3/2 on both races, but "
+          "the calibrated contact law (model.calibration) has n = " +
+          format_number(in.contact.inner.exponent) + " (inner), " +
+          format_number(in.contact.outer.exponent) +
+          " (outer): use waviness_stiffness = false (TVD) with this calibration, or a calibration "
+          "fitted with the exponent fixed at 1.5");
+    if (!hertz_exponents)
       throw InputError(
           "model.waviness_stiffness: TVDS needs the Hertz exponent 3/2 (the contact "
           "law has " +

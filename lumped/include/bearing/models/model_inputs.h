@@ -13,24 +13,25 @@
 namespace bearing {
 
 struct ModelInputs {
-  Bearing bearing;             ///< geometry and materials
-  ContactConstants contact;    ///< Hertz constants per race and in series (the chosen method)
-  std::string hertz_method = "exact";  ///< for TVDS: recompute K with the same method
+  Bearing bearing;           ///< geometry and materials
+  ContactConstants contact;  ///< constants per race and in series (the case's contact law)
+  std::string hertz_method = "exact";  ///< TVDS: the Hertz method of the curvature–compliance
+                                       ///< table ("exact" for an FE-calibrated law)
 
-  double inner_speed = 0.0;    ///< ω_i [rad/s], outer ring fixed
-  double cage_phase = 0.0;     ///< φ₀, angle of ball 0 at t = 0 [rad]
+  double inner_speed = 0.0;                        ///< ω_i [rad/s], outer ring fixed
+  double cage_phase = 0.0;                         ///< φ₀, angle of ball 0 at t = 0 [rad]
   Eigen::Vector2d load = Eigen::Vector2d::Zero();  ///< constant radial load (F_x, F_y) [N]
-  double axial_load = 0.0;     ///< F_z on the inner ring [N] (3-DOF)
-  double unbalance = 0.0;      ///< m_u e [kg m]; F_u = m_u e ω_i², rotating with the shaft
-  bool gravity = false;        ///< add −m g to F_y (g = 9.80665 m/s²)
+  double axial_load = 0.0;                         ///< F_z on the inner ring [N] (3-DOF)
+  double unbalance = 0.0;  ///< m_u e [kg m]; F_u = m_u e ω_i², rotating with the shaft
+  bool gravity = false;    ///< add −m g to F_y (g = 9.80665 m/s²)
 
   double mass = 0.0;           ///< inner ring + shaft mass m [kg]
   double damping = 0.0;        ///< radial viscous damping c [N s/m]
   double axial_mass = 0.0;     ///< axial mass [kg] (3-DOF; 0 → same as mass)
   double axial_damping = 0.0;  ///< axial damping [N s/m] (3-DOF)
 
-  Waviness inner_waviness;     ///< on the inner race (φ = θ_j − ω_i t)
-  Waviness outer_waviness;     ///< on the outer race (φ = θ_j)
+  Waviness inner_waviness;               ///< on the inner race (φ = θ_j − ω_i t)
+  Waviness outer_waviness;               ///< on the outer race (φ = θ_j)
   std::vector<double> ball_size_errors;  ///< ΔD_j [m], empty or Z entries
   bool waviness_stiffness = false;       ///< TVDS: K varies with the waviness curvature (seed 002)
 };

@@ -9,14 +9,15 @@
 // z = 0 is that touching position (shifted axially by w₀ from the centred one). Moving the inner
 // ring by (x, y, z) moves ball j's inner-groove centre by r_j = x cos θ_j + y sin θ_j + e_j
 // radially (e_j: waviness on both races and the size error, MODEL.md §1) and by z axially, so
-//     L_j = sqrt((w₀ + z)² + (u₀ + r_j)²),   δ_j = L_j − A₀,   Q_j = K_j [δ_j]_+^{3/2},
+//     L_j = sqrt((w₀ + z)² + (u₀ + r_j)²),   δ_j = L_j − A₀,   Q_j = K_j [δ_j]_+^n,
+// (n the exponent of the contact law: 3/2 for Hertz, the fitted one for an FE-calibrated law)
 // and the loaded contact angle follows from the same triangle:
 //     sin α_j = (w₀ + z)/L_j,  cos α_j = (u₀ + r_j)/L_j   (L_j = A₀ + δ_j).
 // The contact force acts along the loaded contact line: on the inner ring
 //     f_x = F_x + F_u cos ω_i t − c ẋ − Σ Q_j cos α_j cos θ_j
 //     f_y = F_y + F_u sin ω_i t − c ẏ − Σ Q_j cos α_j sin θ_j  (− m g with gravity)
 //     f_z = F_z − c_z ż − Σ Q_j sin α_j,
-// which is −∇ of the contact energy Σ K_j/(5/2) [δ_j]_+^{5/2} (∂δ_j/∂r_j = cos α_j,
+// which is −∇ of the contact energy Σ K_j/(n+1) [δ_j]_+^{n+1} (∂δ_j/∂r_j = cos α_j,
 // ∂δ_j/∂z = sin α_j). The geometry is symmetric about the centred position z = −w₀, so a
 // negative axial load loads the other groove shoulder (α < 0) with the same formulas.
 //
@@ -36,7 +37,7 @@
 //      from the 2-DOF one at second order in ζ, and f_z = F_z − ζ Σ Q_j/L_j + O(ζ³): a radially
 //      loaded bearing has the axial stiffness Σ Q_j/(A₀ + δ_j) there, an unloaded one none.
 //  (d) At z = 0 with clearance (balls just touching at α₀): δ_j = r_j cos α₀ + O(r_j²/A₀), so to
-//      first order the radial force is the zero-clearance 2-DOF one with K cos^{5/2} α₀.
+//      first order the radial force is the zero-clearance 2-DOF one with K cos^{n+1} α₀.
 //
 // DOFs {"x", "y", "z"} [m]; the analytic Jacobian is provided.
 
@@ -54,11 +55,11 @@ struct AxialPreload {
   double ball_load = 0;      ///< normal load of each ball Q [N]
 };
 
-/// Solves Z K δ^{3/2} sin α = F_z (with δ = L − A₀, sin α = (w₀ + z)/L, L = sqrt((w₀ + z)² + u₀²))
+/// Solves Z K δ^n sin α = F_z (with δ = L − A₀, sin α = (w₀ + z)/L, L = sqrt((w₀ + z)² + u₀²))
 /// for the axial load `inputs.axial_load` by a bracketed scalar root search on δ (monotone).
 /// For F_z = 0 the balls carry no load anywhere in the dead band −2w₀ ≤ z ≤ 0; the centred
 /// position z = −w₀ (α = 0, where the model is the 2-DOF model) is returned. The equivalent
-/// closed form, Harris's F_z = Z K [A₀ (cos α₀ / cos α − 1)]^{3/2} sin α (seed 001 eq. 2.21 is
+/// closed form, Harris's F_z = Z K [A₀ (cos α₀ / cos α − 1)]^n sin α (seed 001 eq. 2.21 is
 /// its α₀ = 0 case), is checked by the tests. Throws InputError for invalid geometry
 /// (P_d ≥ 2A₀) or loads, SolverError if the root search fails.
 AxialPreload solve_axial_preload(const ModelInputs& inputs);
