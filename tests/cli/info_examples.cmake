@@ -15,7 +15,8 @@ set(number_keys
   "contact inner delta_star" "contact inner K"
   "contact outer sum_rho" "contact outer f_rho" "contact outer ellipticity"
   "contact outer delta_star" "contact outer K"
-  "contact K" "static q_max")
+  "contact inner exponent" "contact outer exponent"
+  "contact K" "contact exponent" "static q_max")
 set(array_keys "static deflection" "static ball_loads")
 
 foreach(case IN LISTS cases)
@@ -46,5 +47,13 @@ foreach(case IN LISTS cases)
     endforeach()
   endforeach()
   string(JSON method GET "${out}" contact method)
+  if(method STREQUAL "calibrated")
+    # The calibrated law names its file and the ball law's fit residual.
+    string(JSON file ERROR_VARIABLE jerr GET "${out}" contact calibration file)
+    string(JSON type ERROR_VARIABLE jerr2 TYPE "${out}" contact calibration series_fit_residual)
+    if(jerr OR jerr2 OR file STREQUAL "" OR NOT type STREQUAL "NUMBER")
+      message(FATAL_ERROR "${case}: contact.calibration.{file,series_fit_residual} missing\n${out}")
+    endif()
+  endif()
   message(STATUS "ok: ${case} (contact method ${method})")
 endforeach()

@@ -114,4 +114,108 @@ TEST(CliSweep, OneRowPerCaseAndFailuresInTheirRow) {
   EXPECT_NE(sim("sweep --vary model.kind=1:2:2 --out " + d.string()), 0);  // not numeric
 }
 
+// Runs bearing-sim with `args`; stdout and stderr into `out` and `err`; returns the exit status.
+int sim_capture(const std::string& args, std::string& out, std::string& err) {
+  const std::string test = ::testing::UnitTest::GetInstance()->current_test_info()->name();
+  const fs::path dir = fs::path(::testing::TempDir());
+  const fs::path o = dir / (test + ".stdout.txt"), e = dir / (test + ".stderr.txt");
+  const std::string cmd =
+      std::string(BEARING_SIM) + " " + args + " >" + o.string() + " 2>" + e.string();
+  const int status = std::system(cmd.c_str());
+  out = read(o);
+  err = read(e);
+  return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+}
+
+const std::string kCalibratedExample =
+    std::string(BEARING_SOURCE_DIR) + "/examples/seed003_6308_calibrated.toml";
+
+// (f) info shows which contact law is in use: the calibrated one with its file, geometry, date and
+// constants, in text and JSON; a file for another bearing stops it with exit status 2.
+TEST(CliCalibrated, InfoShowsTheCalibratedLaw) {
+  std::string out, err;
+  ASSERT_EQ(sim_capture("info " + kCalibratedExample, out, err), 0) << err;
+  for (const char* s : {"Contact law: calibrated (FE, hertz geometry, file ",
+                        "seed003_6308_calibration.json", "inner K = ", "N/m^1.5, n = 1.5",
+                        "ball between both races K = ", "exact Hertz solution", "exponent n"})
+    EXPECT_NE(out.find(s), std::string::npos) << "lacks \"" << s << "\":\n" << out;
+
+  ASSERT_EQ(sim_capture("info " + kCalibratedExample + " --json", out, err), 0) << err;
+  const auto j = nlohmann::json::parse(out);
+  EXPECT_EQ(j["contact"]["method"], "calibrated");
+  EXPECT_EQ(j["contact"]["inner"]["exponent"], 1.5);
+  EXPECT_EQ(j["contact"]["exponent"], 1.5);
+  const auto& cal = j["contact"]["calibration"];
+  EXPECT_TRUE(fs::path(cal["file"].get<std::string>()).is_absolute());
+  EXPECT_EQ(cal["geometry"], "hertz");
+  EXPECT_TRUE(cal["method"].is_string());
+  EXPECT_TRUE(cal["date"].is_string());
+  EXPECT_EQ(cal["load_range"].size(), 2u);
+  EXPECT_EQ(cal["series_fit_residual"], 0.0);
+  EXPECT_EQ(j["units"]["contact.K"], "N/m^exponent");
+
+  // Unequal exponents: the fitted ball law and its residual.
+  nlohmann::json doc = nlohmann::json::parse(
+      read(fs::path(BEARING_SOURCE_DIR) / "examples" / "seed003_6308_calibration.json"));
+  doc["inner"]["exponent"] = 1.5012;
+  doc["outer"]["exponent"] = 1.4996;
+  const fs::path file = fs::path(::testing::TempDir()) / "CliCalibrated.unequal.json";
+  std::ofstream(file) << doc.dump(2);
+  ASSERT_EQ(sim_capture("info " + kCalibratedExample + " --set model.calibration=" + file.string(),
+                        out, err),
+            0)
+      << err;
+  for (const char* s : {"N/m^1.5012, n = 1.5012", "N/m^1.4996, n = 1.4996", "least-squares fit",
+                        "relative RMS residual"})
+    EXPECT_NE(out.find(s), std::string::npos) << "lacks \"" << s << "\":\n" << out;
+  ASSERT_EQ(
+      sim_capture("info " + kCalibratedExample + " --json --set model.calibration=" + file.string(),
+                  out, err),
+      0);
+  const auto k = nlohmann::json::parse(out)["contact"];
+  EXPECT_GT(k["calibration"]["series_fit_residual"].get<double>(), 0.0);
+  EXPECT_GT(k["exponent"].get<double>(), 1.4996);
+  EXPECT_LT(k["exponent"].get<double>(), 1.5012);
+
+  // Another bearing: exit status 2, one line naming the field and both values, nothing on stdout.
+  EXPECT_EQ(
+      sim_capture("info " + kCalibratedExample + " --set bearing.ball_diameter=15.875mm", out, err),
+      2);
+  EXPECT_TRUE(out.empty()) << out;
+  for (const char* s : {"model.calibration", "bearing.ball_diameter = 15.081 mm",
+                        "the case has 15.875 mm", "bearing-fem calibrate"})
+    EXPECT_NE(err.find(s), std::string::npos) << "lacks \"" << s << "\": " << err;
+}
+
+// run records the law in summary.json, and case.toml (with the calibration's absolute path)
+// repeats the run bit for bit from another folder; with the placeholder Hertz constants the run
+// is the exact-law run.
+TEST(CliCalibrated, RunRecordsTheLawAndRepeatsFromCaseToml) {
+  const fs::path a = fresh_dir("cal_run_a"), b = fresh_dir("cal_run_b"),
+                 e = fresh_dir("cal_run_exact");
+  ASSERT_EQ(sim("run " + kCalibratedExample + " --out " + a.string() + kShort), 0);
+  const std::string toml = read(a / "case.toml");
+  EXPECT_NE(toml.find("contact = \"calibrated\""), std::string::npos) << toml;
+  const auto j = nlohmann::json::parse(read(a / "summary.json"));
+  EXPECT_EQ(j["case"]["contact"], "calibrated");
+  EXPECT_EQ(j["contact"]["method"], "calibrated");
+  EXPECT_EQ(j["contact"]["exponent"], 1.5);
+  const std::string file = j["case"]["calibration"]["file"];
+  EXPECT_TRUE(fs::path(file).is_absolute()) << file;
+  EXPECT_NE(toml.find("calibration = \"" + file + "\""), std::string::npos) << toml;
+
+  const fs::path elsewhere = fresh_dir("cal_run_cwd");
+  fs::create_directories(elsewhere);
+  const std::string cmd = "cd " + elsewhere.string() + " && " + BEARING_SIM + " run " +
+                          (a / "case.toml").string() + " --out " + b.string() +
+                          " --quiet >/dev/null 2>&1";
+  ASSERT_EQ(std::system(cmd.c_str()), 0);
+  EXPECT_EQ(read(a / "response.csv"), read(b / "response.csv"));
+
+  ASSERT_EQ(sim("run " + std::string(BEARING_SOURCE_DIR) + "/examples/seed003_6308.toml --out " +
+                e.string() + kShort),
+            0);
+  EXPECT_EQ(read(a / "response.csv"), read(e / "response.csv"));
+}
+
 }  // namespace
