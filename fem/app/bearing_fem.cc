@@ -10,10 +10,13 @@
 #include <deal.II/base/mpi.h>
 
 #include <cmath>
+#include <cstdlib>
+#include <ctime>
 #include <filesystem>
 #include <fstream>
 #include <iomanip>
 #include <iostream>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -35,17 +38,43 @@ struct ContactOptions {
   std::string race = "inner";
   std::string geometry = "hertz";
   std::string out_dir;
-  double cells = 8;       // cells per semi-minor axis b at the largest load
-  double stretch = 2;     // cell aspect h_y/h_x
+  double cells = 8;    // cells per semi-minor axis b at the largest load
+  double stretch = 2;  // cell aspect h_y/h_x
   double grading = 6;
   double domain = 256;
   unsigned int steps = 6;
   double tolerance = 1e-11;
-  double load_min = 0;    // 0: load_max / 10
-  double load_max = 0;    // 0: Q_max of the case
+  double load_min = 0;  // 0: load_max × load_min_fraction
+  double load_min_fraction = 0.1;
+  double load_max = 0;       // 0: Q_max of the case
+  double peak_pressure = 0;  // > 0: load_max = the load whose Hertz peak pressure is this [Pa]
   bool vtu = true;
   bool quiet = false;
+  // --geometry groove
+  std::string gap = "exact";                // exact | paraboloid
+  double groove_depth = 0.2;                // land depth over D
+  double segment_angle = 0;                 // [deg]; 0: 180/Z (half the ball pitch)
+  double bore = 0, outside = 0, width = 0;  // ring dimensions [m]; 0: ISO 15 by designation
 };
+
+// ISO 15 boundary dimensions d × D × B of the presets [m] (the lumped case carries only the
+// ball set's geometry; the groove reference also needs the rings).
+struct RingDimensions {
+  double bore, outside, width;
+};
+bool iso15_dimensions(const std::string& designation, RingDimensions& r) {
+  const struct {
+    const char* name;
+    RingDimensions d;
+  } table[] = {{"608", {8e-3, 22e-3, 7e-3}},
+               {"6304", {20e-3, 52e-3, 15e-3}},
+               {"6308", {40e-3, 90e-3, 23e-3}},
+               {"6205", {25e-3, 52e-3, 15e-3}},
+               {"209", {45e-3, 85e-3, 19e-3}}};
+  for (const auto& e : table)
+    if (designation == e.name) return r = e.d, true;
+  return false;
+}
 
 nlohmann::json step_json(const bearing::fem::ApproachStep& s) {
   return {{"approach", s.approach},
@@ -62,20 +91,83 @@ nlohmann::json step_json(const bearing::fem::ApproachStep& s) {
           {"cg_iterations", s.linear_iterations}};
 }
 
-int run_contact(const ContactOptions& o, MPI_Comm comm) {
+// The ring segment for --geometry groove: dimensions (ISO 15 by designation unless given), the
+// coarse mesh from meshes/raceway_segment.geo by gmsh (rank 0; the others wait), and a JSON record.
+nlohmann::json setup_raceway(const ContactOptions& o, const bearing::Case& c, bearing::Race race,
+                             const std::filesystem::path& out, bool root, MPI_Comm comm,
+                             bearing::fem::RacewaySegment& r) {
+  using namespace bearing;
+  const Bearing& b = c.bearing;
+  RingDimensions dims{o.bore, o.outside, o.width};
+  RingDimensions iso{};
+  const bool known = iso15_dimensions(b.designation, iso);
+  if (dims.bore <= 0) dims.bore = iso.bore;
+  if (dims.outside <= 0) dims.outside = iso.outside;
+  if (dims.width <= 0) dims.width = iso.width;
+  if (!(dims.bore > 0 && dims.outside > 0 && dims.width > 0))
+    throw InputError("--geometry groove needs the ring dimensions: bearing \"" + b.designation +
+                     "\" has no ISO 15 entry here" +
+                     (known ? ""
+                            : " (known: 608, 6304, 6308, "
+                              "6205, 209)") +
+                     "; give --bore, --outside-diameter and --width [m]");
+  const bool outer = race == Race::outer;
+  const double D = b.ball_diameter;
+  r.outer = outer;
+  r.ball_radius = D / 2;
+  r.groove_radius = (outer ? b.outer_conformity : b.inner_conformity) * D;
+  r.groove_bottom = (outer ? b.outer_raceway_diameter() : b.inner_raceway_diameter()) / 2;
+  r.back_radius = (outer ? dims.outside : dims.bore) / 2;
+  r.half_width = dims.width / 2;
+  if (outer ? r.back_radius <= r.groove_bottom + 0.05 * D
+            : r.back_radius >= r.groove_bottom - 0.05 * D)
+    throw InputError(std::string(outer ? "--outside-diameter" : "--bore") + " = " +
+                     std::to_string(2 * r.back_radius) + " m leaves no ring under the groove " +
+                     "(groove-bottom diameter " + std::to_string(2 * r.groove_bottom) + " m)");
+  if (!(o.groove_depth > 0 && o.groove_depth < 0.5))
+    throw InputError("--groove-depth = " + std::to_string(o.groove_depth) +
+                     ": the land depth over D must lie in (0, 0.5)");
+  const double angle = o.segment_angle > 0 ? o.segment_angle * M_PI / 180 : M_PI / b.balls;
+  if (!(angle < M_PI / 2))
+    throw InputError("--segment-angle = " + std::to_string(o.segment_angle) +
+                     " deg: must lie in (0, 90)");
+  r.paraboloid_gap = o.gap == "paraboloid";
+  (void)root;
+  fem::mesh_raceway_segment(r, o.groove_depth * D, angle, (out / "raceway_segment.msh").string(),
+                            comm);
+  return {{"ring", outer ? "outer" : "inner"},
+          {"bore", dims.bore},
+          {"outside_diameter", dims.outside},
+          {"width", dims.width},
+          {"dimensions_source", o.bore > 0 || o.outside > 0 || o.width > 0
+                                    ? "command line (ISO 15 for the rest)"
+                                    : "ISO 15 boundary dimensions of " + b.designation},
+          {"groove_radius", r.groove_radius},
+          {"groove_bottom_radius", r.groove_bottom},
+          {"clamped_radius", r.back_radius},
+          {"land_depth", r.land_depth},
+          {"segment_angle", angle},
+          {"gap", o.gap},
+          {"coarse_mesh", r.coarse_mesh},
+          {"mesh_source", std::string(BEARING_MESH_DIR) + "/raceway_segment.geo"}};
+}
+
+// One race: solve, write DIR/force_approach.csv, DIR/contact.json (and VTU); returns the
+// contact.json object on rank 0 (null elsewhere).
+nlohmann::json run_contact(const ContactOptions& o, MPI_Comm comm) {
   using namespace bearing;
   const bool root = dealii::Utilities::MPI::this_mpi_process(comm) == 0;
   if (o.race != "inner" && o.race != "outer")
     throw InputError("--race = " + o.race + ": must be inner or outer");
-  if (o.geometry == "groove")
-    throw InputError("--geometry = groove: the real groove geometry (meshes/) is not implemented "
-                     "yet; use --geometry hertz");
-  if (o.geometry != "hertz") throw InputError("--geometry = " + o.geometry + ": must be hertz");
+  if (o.geometry != "hertz" && o.geometry != "groove")
+    throw InputError("--geometry = " + o.geometry + ": must be hertz or groove");
+  if (o.gap != "exact" && o.gap != "paraboloid")
+    throw InputError("--gap = " + o.gap + ": must be exact or paraboloid");
 
   std::vector<Override> overrides;
   for (const auto& s : o.sets) overrides.push_back(parse_override(s));
-  const Case c = o.case_path.empty() ? default_case(overrides)
-                                     : read_case_file(o.case_path, overrides);
+  const Case c =
+      o.case_path.empty() ? default_case(overrides) : read_case_file(o.case_path, overrides);
   const Race race = o.race == "inner" ? Race::inner : Race::outer;
   const auto exact = make_exact_hertz();
   const RaceContact rc = race_contact(c.bearing, race, *exact);
@@ -84,16 +176,22 @@ int run_contact(const ContactOptions& o, MPI_Comm comm) {
   // Load range: from light load to the case's largest ball load Q_max (lumped static solution).
   double q_max = o.load_max;
   std::string q_source = "--load-max";
+  if (o.peak_pressure > 0) {
+    if (o.load_max > 0) throw InputError("give --load-max or --peak-pressure, not both");
+    // p₀ ∝ Q^{1/3} in Hertz's theory: scale from any reference load.
+    q_max = std::pow(o.peak_pressure / rc.peak_pressure(1.0), 3.0);
+    q_source = "--peak-pressure " + std::to_string(o.peak_pressure) + " Pa (Hertz, this race)";
+  }
   if (q_max <= 0) {
     const ContactConstants cc = contact_constants(c.bearing, *exact);
-    const auto st = solve_static_load(c.bearing.balls, cc.K, c.bearing.ball_gap(),
-                                      c.operation.load);
+    const auto st =
+        solve_static_load(c.bearing.balls, cc.K, c.bearing.ball_gap(), c.operation.load);
     q_max = st.q_max;
     q_source = "static load distribution of the case (lumped solve_static_load, exact Hertz)";
     if (!(q_max > 0))
       throw InputError("the case's radial load gives no ball load; pass --load-max");
   }
-  const double q_min = o.load_min > 0 ? o.load_min : q_max / 10;
+  const double q_min = o.load_min > 0 ? o.load_min : q_max * o.load_min_fraction;
   if (!(q_min < q_max)) throw InputError("--load-min must be below the largest load");
 
   fem::HertzContactParameters p;
@@ -117,19 +215,25 @@ int run_contact(const ContactOptions& o, MPI_Comm comm) {
   p.solver_tolerance = o.tolerance;
   const std::filesystem::path out(o.out_dir);
   if (root) std::filesystem::create_directories(out);
+  nlohmann::json ring_json;
+  if (o.geometry == "groove") {
+    p.geometry = "groove";
+    ring_json = setup_raceway(o, c, race, out, root, comm, p.raceway);
+  }
   if (o.vtu) {
     p.vtu_directory = (out / "vtu").string();
     if (root) std::filesystem::create_directories(p.vtu_directory);
   }
   MPI_Barrier(comm);
   if (root && !o.quiet)
-    std::cout << "bearing-fem contact: " << o.race << " race, Hertz-reduced, E* = "
-              << p.contact_modulus << " Pa, R_x = " << p.radius_x << " m, R_y = " << p.radius_y
-              << " m, kappa = " << rc.shape.ellipticity << ", loads " << q_min << " .. " << q_max
-              << " N\n";
+    std::cout << "bearing-fem contact: " << o.race << " race, "
+              << (o.geometry == "hertz" ? "Hertz-reduced" : "groove (" + o.gap + " gap)")
+              << ", E* = " << p.contact_modulus << " Pa, R_x = " << p.radius_x
+              << " m, R_y = " << p.radius_y << " m, kappa = " << rc.shape.ellipticity << ", loads "
+              << q_min << " .. " << q_max << " N\n";
 
   const fem::HertzContactResult r = fem::solve_hertz_contact(p, comm);
-  if (!root) return 0;
+  if (!root) return nullptr;
 
   std::vector<double> d, f;
   for (const auto& s : r.steps) {
@@ -161,8 +265,18 @@ int run_contact(const ContactOptions& o, MPI_Comm comm) {
       {"race", o.race},
       {"geometry", o.geometry},
       {"method",
-       "3-D linear elasticity, Q1, quarter block with E = (1-nu^2) E*, rigid paraboloid; "
-       "primal-dual active set; CG + Trilinos ML AMG"},
+       o.geometry == "hertz"
+           ? "3-D linear elasticity, Q1, quarter block with E = (1-nu^2) E*, rigid paraboloid; "
+             "primal-dual active set; CG + Trilinos ML AMG"
+           : std::string("3-D linear elasticity, Q1, quarter ring segment with its true groove "
+                         "(gmsh meshes/raceway_segment.geo, refined on the exact surfaces), "
+                         "E = (1-nu^2) E* (equivalent modulus: the ball's compliance given to the "
+                         "ring), clamped ") +
+                 (race == Race::outer ? "outside diameter" : "bore") +
+                 (o.gap == "exact" ? ", rigid sphere of the ball's radius (exact gap along z)"
+                                   : ", Hertz's paraboloid gap (isolates the finite ring)") +
+                 "; primal-dual active set; CG + Trilinos ML AMG"},
+      {"raceway", ring_json},
       {"load_range", {{"min", q_min}, {"max", q_max}, {"max_source", q_source}}},
       {"fe",
        {{"K", fit.K_three_halves},
@@ -208,8 +322,111 @@ int run_contact(const ContactOptions& o, MPI_Comm comm) {
     std::cout << std::setprecision(6) << "K_FE (n = 1.5) = " << fit.K_three_halves
               << " N/m^1.5, Hertz K = " << rc.K << " (" << 100 * (fit.K_three_halves / rc.K - 1)
               << " %); exponent " << fit.exponent << "; a " << 100 * (last.semi_major / a_h - 1)
-              << " %, b " << 100 * (last.semi_minor / b_h - 1) << " %; " << r.wall_time
-              << " s\n";
+              << " %, b " << 100 * (last.semi_minor / b_h - 1) << " %; " << r.wall_time << " s\n";
+  return j;
+}
+
+// The contact-relevant geometry of the case's bearing, as the lumped side compares it.
+nlohmann::json bearing_json(const bearing::Bearing& b) {
+  const auto material = [](const bearing::Material& m) {
+    return nlohmann::json{{"young", m.young}, {"poisson", m.poisson}};
+  };
+  return {{"designation", b.designation},
+          {"ball_diameter", b.ball_diameter},
+          {"pitch_diameter", b.pitch_diameter},
+          {"inner_conformity", b.inner_conformity},
+          {"outer_conformity", b.outer_conformity},
+          {"contact_angle", b.contact_angle},
+          {"material", {{"ball", material(b.ball)}, {"rings", material(b.rings)}}}};
+}
+
+std::string utc_now() {
+  const std::time_t t = std::time(nullptr);
+  char buf[32];
+  std::strftime(buf, sizeof buf, "%Y-%m-%dT%H:%M:%SZ", std::gmtime(&t));
+  return buf;
+}
+
+// bearing-fem calibrate: both races over the case's load range (light load to Q_max), the power
+// law Q = K δ^n fitted to each (exponent free), written for lumped's contact = "calibrated".
+// The races' own contact.json and force_approach.csv go to <stem>_inner/ and <stem>_outer/ next
+// to the calibration file.
+int run_calibrate(const ContactOptions& base, const std::string& out_file, MPI_Comm comm) {
+  using namespace bearing;
+  const bool root = dealii::Utilities::MPI::this_mpi_process(comm) == 0;
+  if (out_file.empty()) throw InputError("--out: give the calibration file to write");
+  const std::filesystem::path file(out_file);
+  const std::filesystem::path dir = file.has_parent_path() ? file.parent_path() : ".";
+  nlohmann::json races;
+  double q_min = 0, q_max = 0;
+  std::string mesh;
+  for (const char* race : {"inner", "outer"}) {
+    ContactOptions o = base;
+    o.race = race;
+    o.vtu = false;
+    o.out_dir = (dir / (file.stem().string() + "_" + race)).string();
+    const nlohmann::json j = run_contact(o, comm);
+    if (!root) continue;
+    const double residual = j["fe"]["fit_residual"];
+    races[race] = {{"K", j["fe"]["K_free_exponent"]},
+                   {"exponent", j["fe"]["exponent"]},
+                   {"fit_residual", residual},
+                   {"K_three_halves", j["fe"]["K"]},
+                   {"hertz_K", j["hertz"]["K"]},
+                   {"details", file.stem().string() + "_" + race}};  // next to the file
+    q_min = j["load_range"]["min"];
+    q_max = j["load_range"]["max"];
+    mesh += std::string(mesh.empty() ? "" : "; ") + race + ": " +
+            std::to_string(j["mesh"]["cells"].get<unsigned long>()) + " cells, " +
+            std::to_string(j["mesh"]["dofs"].get<unsigned long>()) + " DoFs";
+  }
+  if (!root) return 0;
+  std::vector<Override> overrides;
+  for (const auto& s : base.sets) overrides.push_back(parse_override(s));
+  const Case c =
+      base.case_path.empty() ? default_case(overrides) : read_case_file(base.case_path, overrides);
+  const std::string geometry = base.geometry == "hertz" ? "hertz" : "groove";
+  std::ostringstream mesh_text;
+  mesh_text << "N_b = " << base.cells << " cells per semi-minor axis at Q_max, grading "
+            << base.grading << ", stretch " << base.stretch << "; ";
+  const nlohmann::json cal = {
+      {"format", "bearing-fem calibration 1"},
+      {"bearing", bearing_json(c.bearing)},
+      {"inner", races["inner"]},
+      {"outer", races["outer"]},
+      {"load_range", {q_min, q_max}},
+      {"geometry", geometry},
+      {"method",
+       std::string("bearing-fem contact per race: 3-D linear elasticity, Q1, primal-dual active "
+                   "set, CG + Trilinos ML; ") +
+           (geometry == "hertz"
+                ? "Hertz-reduced quarter block with E* and a rigid paraboloid"
+                : "ring segment with its true groove (meshes/raceway_segment.geo), E* in the "
+                  "ring, rigid sphere (" +
+                      base.gap + " gap)") +
+           "; Q = K delta^n fitted by least squares of ln Q on ln delta over " +
+           std::to_string(base.steps) + " approach steps from light load to Q_max"},
+      {"mesh", mesh_text.str() + mesh},
+      {"case", c.source},
+      {"date", utc_now()},
+      {"units",
+       {{"K", "N/m^exponent"},
+        {"lengths", "m"},
+        {"young", "Pa"},
+        {"contact_angle", "rad"},
+        {"load_range", "N"}}}};
+  // Complete or nothing: written to a temporary name, then renamed.
+  const std::filesystem::path partial = file.string() + ".partial";
+  {
+    std::ofstream out(partial);
+    out << std::setprecision(17) << cal.dump(2) << '\n';
+    if (!out) throw InputError("cannot write " + partial.string());
+  }
+  std::filesystem::rename(partial, file);
+  if (!base.quiet)
+    std::cout << "calibration written to " << file.string() << ": inner K = " << races["inner"]["K"]
+              << " N/m^" << races["inner"]["exponent"] << ", outer K = " << races["outer"]["K"]
+              << " N/m^" << races["outer"]["exponent"] << '\n';
   return 0;
 }
 
@@ -221,32 +438,75 @@ int main(int argc, char** argv) {
   app.require_subcommand(1);
   ContactOptions o;
   auto* contact = app.add_subcommand(
-      "contact", "Hertz-reduced ball-race contact by FE: force-approach curve, K, exponent, "
-                 "semi-axes, compared with the analytic Hertz solution");
+      "contact",
+      "Hertz-reduced ball-race contact by FE: force-approach curve, K, exponent, "
+      "semi-axes, compared with the analytic Hertz solution");
   contact->add_option("CASE", o.case_path, "TOML case file (default: the built-in 6308 case)");
   contact->add_option("--set", o.sets, "Override a case-file value, TABLE.KEY=VALUE");
   contact->add_option("--race", o.race, "inner | outer")->required();
-  contact->add_option("--geometry", o.geometry, "hertz (groove: not yet)");
+  contact->add_option("--geometry", o.geometry,
+                      "hertz (block + paraboloid) | groove (ring segment with its true groove)");
+  contact->add_option("--gap", o.gap,
+                      "groove: exact (rigid sphere) | paraboloid (Hertz's gap on the real ring)");
+  contact->add_option("--groove-depth", o.groove_depth,
+                      "groove: land depth below the groove edge over D (default 0.2)");
+  contact->add_option("--segment-angle", o.segment_angle,
+                      "groove: segment half-angle [deg] (default 180/Z: half the ball pitch)");
+  contact->add_option("--bore", o.bore, "groove: inner-ring bore d [m] (default: ISO 15)");
+  contact->add_option("--outside-diameter", o.outside,
+                      "groove: outer-ring outside diameter [m] (default: ISO 15)");
+  contact->add_option("--width", o.width, "groove: ring width B [m] (default: ISO 15)");
   contact->add_option("--out", o.out_dir, "Output folder (created if missing)")->required();
   contact->add_option("--cells", o.cells, "Finest cells per semi-minor axis b at the largest load")
       ->check(CLI::PositiveNumber);
-  contact->add_option("--stretch", o.stretch, "Cell aspect h_y/h_x >= 1 (stretched along the major axis)")
+  contact
+      ->add_option("--stretch", o.stretch,
+                   "Cell aspect h_y/h_x >= 1 (stretched along the major axis)")
       ->check(CLI::Range(1.0, 100.0));
-  contact->add_option("--grading", o.grading, "Cell size >= distance / grading away from the patch");
+  contact->add_option("--grading", o.grading,
+                      "Cell size >= distance / grading away from the patch");
   contact->add_option("--domain", o.domain, "Block size over the major semi-axis a (about)");
   contact->add_option("--tolerance", o.tolerance, "CG tolerance relative to the right-hand side");
   contact->add_option("--steps", o.steps, "Approach steps")->check(CLI::Range(2, 100));
-  contact->add_option("--load-min", o.load_min, "Smallest load [N] (default: load-max / 10)");
+  contact->add_option("--load-min", o.load_min,
+                      "Smallest load [N] (default: load-max x --load-min-fraction)");
+  contact
+      ->add_option("--load-min-fraction", o.load_min_fraction,
+                   "Smallest load over the largest when --load-min is not given (default 0.1)")
+      ->check(CLI::Range(1e-6, 0.999));
   contact->add_option("--load-max", o.load_max, "Largest load [N] (default: Q_max of the case)");
+  contact->add_option("--peak-pressure", o.peak_pressure,
+                      "Largest load given as its Hertz peak pressure on this race [Pa], e.g. "
+                      "4.2e9 (ISO 76's static limit)");
   contact->add_flag("!--no-vtu", o.vtu, "Do not write VTU files");
   contact->add_flag("--quiet", o.quiet, "No progress output");
+  ContactOptions co;
+  std::string calibration_file;
+  auto* calibrate = app.add_subcommand(
+      "calibrate",
+      "FE contact constants of both races (Q = K delta^n over light load to Q_max) "
+      "for the lumped model's contact = \"calibrated\"");
+  calibrate->add_option("CASE", co.case_path, "TOML case file (default: the built-in 6308 case)");
+  calibrate->add_option("--set", co.sets, "Override a case-file value, TABLE.KEY=VALUE");
+  calibrate->add_option("--out", calibration_file, "Calibration file to write (JSON)")->required();
+  calibrate->add_option("--geometry", co.geometry, "hertz (default) | groove");
+  calibrate->add_option("--gap", co.gap, "groove: exact | paraboloid");
+  calibrate->add_option("--cells", co.cells, "Finest cells per semi-minor axis b at Q_max")
+      ->check(CLI::PositiveNumber);
+  calibrate->add_option("--grading", co.grading, "Cell size >= distance / grading");
+  calibrate->add_option("--steps", co.steps, "Approach steps per race")->check(CLI::Range(2, 100));
+  calibrate->add_option("--load-min", co.load_min, "Smallest load [N] (default: Q_max / 10)");
+  calibrate->add_option("--load-max", co.load_max, "Largest load [N] (default: Q_max of the case)");
+  calibrate->add_flag("--quiet", co.quiet, "No progress output");
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
     return app.exit(e);
   }
   try {
-    return run_contact(o, MPI_COMM_WORLD);
+    if (*calibrate) return run_calibrate(co, calibration_file, MPI_COMM_WORLD);
+    run_contact(o, MPI_COMM_WORLD);
+    return 0;
   } catch (const bearing::InputError& e) {
     std::cerr << "bearing-fem: input error: " << e.what() << '\n';
     return 2;

@@ -1,5 +1,13 @@
 // The Hertz-reduced contact problem (see hertz_contact.h for the physics and the reduction).
 //
+// The solver is the same for every geometry (contact_geometry.h): the Hertz-reduced block and
+// paraboloid below (HertzBlock, in this file), or the ring segment with its true groove pressed by
+// a rigid sphere (raceway_segment.cc). The geometry supplies the coarse mesh with its boundary ids
+// and manifolds, the depth below the contact surface (for the refinement) and the gap G; the
+// rest — refinement toward the patch, assembly, the active set, the measurements — is shared.
+// What the comments below say about "the block" and "the top surface z = 0" holds for the ring
+// segment with "the groove surface" and the depth below it.
+//
 // Shape of a deal.II tutorial program: one class, HertzContactProblem, with make_grid /
 // refine_grid / setup_system / assemble_system / solve / update_active_set / measure_contact /
 // output_results / run. The numbers a user may change come in through HertzContactParameters
@@ -50,6 +58,9 @@
 
 #include "hertz_contact.h"
 
+#include "contact_geometry.h"
+
+#include <deal.II/base/bounding_box.h>
 #include <deal.II/base/conditional_ostream.h>
 #include <deal.II/base/index_set.h>
 #include <deal.II/base/mpi.h>
@@ -81,6 +92,7 @@
 #include <iomanip>
 #include <limits>
 #include <map>
+#include <memory>
 #include <set>
 #include <stdexcept>
 
@@ -92,16 +104,10 @@ namespace {
 
 constexpr int dim = 3;
 
-// Boundary ids of a colorized box: x_min, x_max, y_min, y_max, z_min, z_max.
-constexpr types::boundary_id symmetry_x = 0;  // x = 0: u_x = 0
-constexpr types::boundary_id symmetry_y = 2;  // y = 0: u_y = 0
-constexpr types::boundary_id bottom = 4;      // z = −L_z: clamped
-constexpr types::boundary_id top = 5;         // z = 0: contact surface
-
-// One vertical DoF on the top surface that may come into contact (not a hanging node).
+// One vertical DoF on the contact surface that may come into contact (not a hanging node).
 struct ContactNode {
   types::global_dof_index dof;
-  double x, y;
+  Point<dim> p;  // undeformed position
   bool owned;
 };
 
@@ -123,10 +129,16 @@ class HertzContactProblem {
   void output_results(unsigned int step) const;
 
   double gap(const ContactNode& node, double approach) const {
-    return node.x * node.x / (2 * prm.radius_x) + node.y * node.y / (2 * prm.radius_y) - approach;
+    return geometry->gap(node.p, approach);
+  }
+  const FullMatrix<double>& cell_matrix(
+      const typename DoFHandler<dim>::active_cell_iterator& cell) const {
+    return geometry->cells_are_level_boxes() ? cell_matrix_of_level.at(cell->level())
+                                             : cell_matrix_of_cell.at(cell->active_cell_index());
   }
 
   HertzContactParameters prm;
+  std::unique_ptr<ContactGeometry> geometry;
   MPI_Comm comm;
   ConditionalOStream pcout;
   mutable TimerOutput timer;
@@ -147,19 +159,20 @@ class HertzContactProblem {
   TrilinosWrappers::SparseMatrix fixed_matrix;   // A without the contact constraints: for the AMG
   TrilinosWrappers::PreconditionAMG amg;
   TrilinosWrappers::MPI::Vector system_rhs;
-  TrilinosWrappers::MPI::Vector solution;        // locally owned, satisfies all constraints
-  TrilinosWrappers::MPI::Vector reaction;        // −A U on locally owned DoFs (Λ at contact DoFs)
-  TrilinosWrappers::MPI::Vector surface_mass;    // m_i = ∫_{z=0} φ_i dA (ghosted)
+  TrilinosWrappers::MPI::Vector solution;      // locally owned, satisfies all constraints
+  TrilinosWrappers::MPI::Vector reaction;      // −A U on locally owned DoFs (Λ at contact DoFs)
+  TrilinosWrappers::MPI::Vector surface_mass;  // m_i = ∫_{z=0} φ_i dA (ghosted)
 
   std::vector<ContactNode> contact_nodes;  // locally relevant
   std::vector<char> active;                // per contact node, same on every process sharing it
 
-  // Geometry of the mesh: coarse cell size, finest cell size, domain.
-  double coarse_hx = 0, coarse_hy = 0, coarse_hz = 0;
+  // Geometry of the mesh: domain, target and actual finest cell sizes near the contact.
+  DomainSize domain;
+  double target_hx = 0;
   double finest_hx = 0, finest_hy = 0;
-  double domain_x = 0, domain_y = 0, domain_z = 0;
   unsigned int refinement_levels = 0;
-  std::map<unsigned int, FullMatrix<double>> cell_matrix_of_level;
+  std::map<unsigned int, FullMatrix<double>> cell_matrix_of_level;  // level boxes
+  std::map<unsigned int, FullMatrix<double>> cell_matrix_of_cell;   // by active cell index
 };
 
 HertzContactProblem::HertzContactProblem(const HertzContactParameters& parameters, MPI_Comm comm_)
@@ -173,32 +186,63 @@ HertzContactProblem::HertzContactProblem(const HertzContactParameters& parameter
       dof_handler(triangulation) {
   if (!(prm.contact_modulus > 0 && prm.radius_x > 0 && prm.radius_y > 0 &&
         prm.design_semi_minor > 0 && prm.design_semi_major > 0 && !prm.approaches.empty()))
-    throw std::invalid_argument("HertzContactParameters: moduli, radii, design semi-axes and "
-                                "approach steps must be positive");
+    throw std::invalid_argument(
+        "HertzContactParameters: moduli, radii, design semi-axes and "
+        "approach steps must be positive");
   if (!(prm.poisson > -1 && prm.poisson < 0.5))
     throw std::invalid_argument("HertzContactParameters: poisson must lie in (-1, 0.5)");
   if (!(prm.finest_cell_fraction > 0 && prm.stretch >= 1 && prm.grading >= 1 &&
         prm.domain_size > 2))
     throw std::invalid_argument("HertzContactParameters: mesh parameters out of range");
+  if (prm.geometry == "hertz")
+    geometry = make_hertz_block(prm);
+  else if (prm.geometry == "groove")
+    geometry = make_raceway_segment(prm);
+  else
+    throw std::invalid_argument("HertzContactParameters: geometry \"" + prm.geometry +
+                                "\" (allowed: hertz, groove)");
 }
 
 // ---------------------------------------------------------------------------------------------
-// The coarse mesh: 2 × 2 × 2 cells of size H × (stretch·H) × H covering
+// The Hertz-reduced block. Coarse mesh: 2 × 2 × 2 cells of size H × (stretch·H) × H covering
 // [0, L_x] × [0, L_y] × [−L_z, 0], with L_x = L_z = 2H and L_y = stretch·L_x. H is the finest
 // cell size h_x = b/N_b times 2^R, R chosen so that L_x ≥ domain_size · a.
+class HertzBlock final : public ContactGeometry {
+ public:
+  explicit HertzBlock(const HertzContactParameters& p) : prm(p) {
+    const double finest = prm.finest_cell_fraction * prm.design_semi_minor;
+    const double target = prm.domain_size * prm.design_semi_major;
+    levels = static_cast<unsigned int>(std::max(0.0, std::ceil(std::log2(target / (2 * finest)))));
+    hx = finest * std::ldexp(1.0, static_cast<int>(levels));
+  }
+  DomainSize make_coarse_grid(parallel::distributed::Triangulation<dim>& tria) const override {
+    const DomainSize d{2 * hx, 2 * prm.stretch * hx, 2 * hx};
+    GridGenerator::subdivided_hyper_rectangle(tria, {2u, 2u, 2u}, Point<dim>(0, 0, -d.z),
+                                              Point<dim>(d.x, d.y, 0), /*colorize=*/true);
+    // Colorized ids: 0/1 x min/max, 2/3 y min/max, 4 z min (the bottom: clamped), 5 z max (the
+    // surface: contact) — the ids of namespace boundary.
+    return d;
+  }
+  unsigned int levels_to(double) const override { return levels; }
+  bool cells_are_level_boxes() const override { return true; }
+  double gap(const Point<dim>& p, double approach) const override {
+    return p[0] * p[0] / (2 * prm.radius_x) + p[1] * p[1] / (2 * prm.radius_y) - approach;
+  }
+  std::string describe() const override {
+    return "Hertz-reduced: quarter block with E = (1-nu^2) E*, rigid paraboloid "
+           "z = x^2/2R_x + y^2/2R_y - delta";
+  }
+
+ private:
+  HertzContactParameters prm;
+  unsigned int levels = 0;
+  double hx = 0;  // coarse cell size in x (and z)
+};
+
 void HertzContactProblem::make_grid() {
-  finest_hx = prm.finest_cell_fraction * prm.design_semi_minor;
-  finest_hy = prm.stretch * finest_hx;
-  const double target = prm.domain_size * prm.design_semi_major;
-  refinement_levels =
-      static_cast<unsigned int>(std::max(0.0, std::ceil(std::log2(target / (2 * finest_hx)))));
-  coarse_hx = coarse_hz = finest_hx * std::ldexp(1.0, static_cast<int>(refinement_levels));
-  coarse_hy = prm.stretch * coarse_hx;
-  domain_x = domain_z = 2 * coarse_hx;
-  domain_y = 2 * coarse_hy;
-  GridGenerator::subdivided_hyper_rectangle(triangulation, {2u, 2u, 2u},
-                                            Point<dim>(0, 0, -domain_z),
-                                            Point<dim>(domain_x, domain_y, 0), /*colorize=*/true);
+  target_hx = prm.finest_cell_fraction * prm.design_semi_minor;
+  domain = geometry->make_coarse_grid(triangulation);
+  refinement_levels = geometry->levels_to(target_hx);
 }
 
 // Refinement toward the contact patch: repeat "refine every cell closer (in the stretched metric)
@@ -212,12 +256,16 @@ void HertzContactProblem::refine_grid() {
     unsigned int flagged = 0;
     for (const auto& cell : triangulation.active_cell_iterators()) {
       if (!cell->is_locally_owned()) continue;
-      const Point<dim> lo = cell->vertex(0), hi = cell->vertex(7);
+      const BoundingBox<dim> box = cell->bounding_box();
+      const Point<dim> lo = box.get_boundary_points().first, hi = box.get_boundary_points().second;
       const double hx = hi[0] - lo[0];
-      if (hx < 1.5 * finest_hx) continue;
+      if (hx < 1.5 * target_hx) continue;
       const double dx = std::max(0.0, lo[0] - patch_x);
       const double dy = std::max(0.0, lo[1] - patch_y) / prm.stretch;
-      const double dz = std::max(0.0, -hi[2]);
+      double depth = std::numeric_limits<double>::max();
+      for (const unsigned int v : cell->vertex_indices())
+        depth = std::min(depth, geometry->depth(cell->vertex(v)));
+      const double dz = std::max(0.0, depth);
       if (std::sqrt(dx * dx + dy * dy + dz * dz) < prm.grading * hx) {
         cell->set_refine_flag();
         ++flagged;
@@ -226,6 +274,17 @@ void HertzContactProblem::refine_grid() {
     if (Utilities::MPI::sum(flagged, comm) == 0) break;
     triangulation.execute_coarsening_and_refinement();
   }
+  // The finest cells (at the contact patch): their sizes enter the semi-axis correction.
+  double hx = std::numeric_limits<double>::max(), hy = hx;
+  for (const auto& cell : triangulation.active_cell_iterators()) {
+    if (!cell->is_locally_owned()) continue;
+    const BoundingBox<dim> box = cell->bounding_box();
+    const auto [lo, hi] = box.get_boundary_points();
+    hx = std::min(hx, hi[0] - lo[0]);
+    hy = std::min(hy, hi[1] - lo[1]);
+  }
+  finest_hx = Utilities::MPI::min(hx, comm);
+  finest_hy = Utilities::MPI::min(hy, comm);
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -247,12 +306,14 @@ void HertzContactProblem::setup_system() {
   constraints_fixed.reinit(locally_relevant_dofs);
   constraints_fixed.merge(constraints_hanging);
   const FEValuesExtractors::Scalar ux(0), uy(1);
-  VectorTools::interpolate_boundary_values(dof_handler, symmetry_x, Functions::ZeroFunction<dim>(dim),
-                                           constraints_fixed, fe.component_mask(ux));
-  VectorTools::interpolate_boundary_values(dof_handler, symmetry_y, Functions::ZeroFunction<dim>(dim),
-                                           constraints_fixed, fe.component_mask(uy));
-  VectorTools::interpolate_boundary_values(dof_handler, bottom, Functions::ZeroFunction<dim>(dim),
-                                           constraints_fixed);
+  VectorTools::interpolate_boundary_values(dof_handler, boundary::symmetry_x,
+                                           Functions::ZeroFunction<dim>(dim), constraints_fixed,
+                                           fe.component_mask(ux));
+  VectorTools::interpolate_boundary_values(dof_handler, boundary::symmetry_y,
+                                           Functions::ZeroFunction<dim>(dim), constraints_fixed,
+                                           fe.component_mask(uy));
+  VectorTools::interpolate_boundary_values(dof_handler, boundary::clamped,
+                                           Functions::ZeroFunction<dim>(dim), constraints_fixed);
   constraints_fixed.close();
 
   // One pattern for both matrices: the hanging-node-condensed pattern keeps every entry the
@@ -272,12 +333,12 @@ void HertzContactProblem::setup_system() {
   for (const auto& cell : dof_handler.active_cell_iterators()) {
     if (cell->is_artificial()) continue;
     for (const auto& face : cell->face_iterators()) {
-      if (!face->at_boundary() || face->boundary_id() != top) continue;
+      if (!face->at_boundary() || face->boundary_id() != boundary::contact) continue;
       for (unsigned int v = 0; v < face->n_vertices(); ++v) {
         const auto dof = face->vertex_dof_index(v, 2);
         if (constraints_hanging.is_constrained(dof)) continue;
         const Point<dim> p = face->vertex(v);
-        nodes.emplace(dof, ContactNode{dof, p[0], p[1], locally_owned_dofs.is_element(dof)});
+        nodes.emplace(dof, ContactNode{dof, p, locally_owned_dofs.is_element(dof)});
       }
     }
   }
@@ -294,7 +355,8 @@ void HertzContactProblem::setup_system() {
   for (const auto& cell : dof_handler.active_cell_iterators()) {
     if (!cell->is_locally_owned()) continue;
     for (const auto f : cell->face_indices()) {
-      if (!cell->face(f)->at_boundary() || cell->face(f)->boundary_id() != top) continue;
+      if (!cell->face(f)->at_boundary() || cell->face(f)->boundary_id() != boundary::contact)
+        continue;
       fe_face.reinit(cell, f);
       cell_mass = 0;
       for (unsigned int i = 0; i < fe.n_dofs_per_cell(); ++i) {
@@ -317,27 +379,15 @@ void HertzContactProblem::setup_system() {
 // box of exactly that size (the same numbers on every process, whatever cells it owns):
 //     A^K_ij = ∫_K λ_L (∇·φ_i)(∇·φ_j) + 2μ ε(φ_i):ε(φ_j) dx,   2×2×2 Gauss points (exact for Q1).
 void HertzContactProblem::assemble_cell_matrices() {
+  TimerOutput::Scope t(timer, "element matrices");
   const double E = (1 - prm.poisson * prm.poisson) * prm.contact_modulus;
   const double nu = prm.poisson;
   const double lambda = E * nu / ((1 + nu) * (1 - 2 * nu));
   const double mu = E / (2 * (1 + nu));
-  std::set<unsigned int> levels;
-  for (const auto& cell : triangulation.active_cell_iterators())
-    if (cell->is_locally_owned()) levels.insert(cell->level());
   const QGauss<dim> quadrature(2);
-  for (const unsigned int level : levels) {
-    if (cell_matrix_of_level.count(level)) continue;
-    const double scale = std::ldexp(1.0, -static_cast<int>(level));
-    Triangulation<dim> box;
-    GridGenerator::hyper_rectangle(
-        box, Point<dim>(0, 0, 0),
-        Point<dim>(coarse_hx * scale, coarse_hy * scale, coarse_hz * scale));
-    DoFHandler<dim> box_dofs(box);
-    box_dofs.distribute_dofs(fe);
-    FEValues<dim> fe_values(fe, quadrature, update_gradients | update_JxW_values);
-    fe_values.reinit(box_dofs.begin_active());
-    const FEValuesExtractors::Vector u(0);
-    const unsigned int n = fe.n_dofs_per_cell();
+  const FEValuesExtractors::Vector u(0);
+  const unsigned int n = fe.n_dofs_per_cell();
+  const auto element_matrix = [&](FEValues<dim>& fe_values) {
     FullMatrix<double> A(n, n);
     for (unsigned int q = 0; q < quadrature.size(); ++q)
       for (unsigned int i = 0; i < n; ++i) {
@@ -346,11 +396,38 @@ void HertzContactProblem::assemble_cell_matrices() {
         for (unsigned int j = 0; j < n; ++j) {
           const auto eps_j = fe_values[u].symmetric_gradient(j, q);
           const double div_j = fe_values[u].divergence(j, q);
-          A(i, j) += (lambda * div_i * div_j + 2 * mu * scalar_product(eps_i, eps_j)) *
-                     fe_values.JxW(q);
+          A(i, j) +=
+              (lambda * div_i * div_j + 2 * mu * scalar_product(eps_i, eps_j)) * fe_values.JxW(q);
         }
       }
-    cell_matrix_of_level.emplace(level, std::move(A));
+    return A;
+  };
+  if (!geometry->cells_are_level_boxes()) {  // curved or distorted cells: one matrix per cell
+    FEValues<dim> fe_values(fe, quadrature, update_gradients | update_JxW_values);
+    for (const auto& cell : dof_handler.active_cell_iterators()) {
+      if (!cell->is_locally_owned()) continue;
+      fe_values.reinit(cell);
+      cell_matrix_of_cell.emplace(cell->active_cell_index(), element_matrix(fe_values));
+    }
+    return;
+  }
+  // Boxes: the 2 × 2 × 2 coarse cells of the block divided by 2^level.
+  std::set<unsigned int> levels;
+  for (const auto& cell : triangulation.active_cell_iterators())
+    if (cell->is_locally_owned()) levels.insert(cell->level());
+  for (const unsigned int level : levels) {
+    if (cell_matrix_of_level.count(level)) continue;
+    const double scale = std::ldexp(1.0, -static_cast<int>(level));
+    Triangulation<dim> box;
+    GridGenerator::hyper_rectangle(
+        box, Point<dim>(0, 0, 0),
+        Point<dim>(domain.x / 2 * scale, domain.y / 2 * scale, domain.z / 2 * scale));
+    DoFHandler<dim> box_dofs(box);
+    box_dofs.distribute_dofs(fe);
+    // A fresh FEValues per box: it must not compare this cell with one of a destroyed mesh.
+    FEValues<dim> fe_values(fe, quadrature, update_gradients | update_JxW_values);
+    fe_values.reinit(box_dofs.begin_active());
+    cell_matrix_of_level.emplace(level, element_matrix(fe_values));
   }
 }
 
@@ -369,7 +446,7 @@ void HertzContactProblem::assemble_stiffness() {
   for (const auto& cell : dof_handler.active_cell_iterators()) {
     if (!cell->is_locally_owned()) continue;
     cell->get_dof_indices(dofs);
-    const auto& A = cell_matrix_of_level.at(cell->level());
+    const auto& A = cell_matrix(cell);
     constraints_hanging.distribute_local_to_global(A, dofs, stiffness);
     constraints_fixed.distribute_local_to_global(A, dofs, fixed_matrix);
   }
@@ -402,8 +479,8 @@ void HertzContactProblem::assemble_system() {
   for (const auto& cell : dof_handler.active_cell_iterators()) {
     if (!cell->is_locally_owned()) continue;
     cell->get_dof_indices(dofs);
-    constraints_all.distribute_local_to_global(cell_matrix_of_level.at(cell->level()), cell_rhs,
-                                               dofs, system_matrix, system_rhs);
+    constraints_all.distribute_local_to_global(cell_matrix(cell), cell_rhs, dofs, system_matrix,
+                                               system_rhs);
   }
   system_matrix.compress(VectorOperation::add);
   system_rhs.compress(VectorOperation::add);
@@ -472,13 +549,13 @@ ApproachStep HertzContactProblem::measure_contact(double approach) const {
     if (!node.owned || !active[k]) continue;
     const double f = reaction(node.dof);
     sum += f;
-    sum_x2 += f * node.x * node.x;
-    sum_y2 += f * node.y * node.y;
+    sum_x2 += f * node.p[0] * node.p[0];
+    sum_y2 += f * node.p[1] * node.p[1];
     ++n_active;
-    if (std::abs(node.x) < on_axis && std::abs(node.y) < on_axis)
+    if (std::abs(node.p[0]) < on_axis && std::abs(node.p[1]) < on_axis)
       centre_pressure = f / surface_mass(node.dof);
-    if (std::abs(node.y) < on_axis) last_active_x = std::max(last_active_x, node.x);
-    if (std::abs(node.x) < on_axis) last_active_y = std::max(last_active_y, node.y);
+    if (std::abs(node.p[1]) < on_axis) last_active_x = std::max(last_active_x, node.p[0]);
+    if (std::abs(node.p[0]) < on_axis) last_active_y = std::max(last_active_y, node.p[1]);
   }
   sum = Utilities::MPI::sum(sum, comm);
   sum_x2 = Utilities::MPI::sum(sum_x2, comm);
@@ -493,10 +570,10 @@ ApproachStep HertzContactProblem::measure_contact(double approach) const {
   for (std::size_t k = 0; k < contact_nodes.size(); ++k) {
     const ContactNode& node = contact_nodes[k];
     if (!node.owned || active[k]) continue;
-    if (std::abs(node.y) < on_axis && node.x > last_active_x)
-      first_free_x = std::min(first_free_x, node.x);
-    if (std::abs(node.x) < on_axis && node.y > last_active_y)
-      first_free_y = std::min(first_free_y, node.y);
+    if (std::abs(node.p[1]) < on_axis && node.p[0] > last_active_x)
+      first_free_x = std::min(first_free_x, node.p[0]);
+    if (std::abs(node.p[0]) < on_axis && node.p[1] > last_active_y)
+      first_free_y = std::min(first_free_y, node.p[1]);
   }
   first_free_x = Utilities::MPI::min(first_free_x, comm);
   first_free_y = Utilities::MPI::min(first_free_y, comm);
@@ -524,8 +601,8 @@ void HertzContactProblem::output_results(unsigned int step) const {
   TrilinosWrappers::MPI::Vector pressure(locally_owned_dofs, comm);
   for (std::size_t k = 0; k < contact_nodes.size(); ++k)
     if (contact_nodes[k].owned && active[k])
-      pressure(contact_nodes[k].dof) = reaction(contact_nodes[k].dof) /
-                                        surface_mass(contact_nodes[k].dof);
+      pressure(contact_nodes[k].dof) =
+          reaction(contact_nodes[k].dof) / surface_mass(contact_nodes[k].dof);
   pressure.compress(VectorOperation::insert);
   TrilinosWrappers::MPI::Vector u_ghosted(locally_owned_dofs, locally_relevant_dofs, comm);
   TrilinosWrappers::MPI::Vector p_ghosted(locally_owned_dofs, locally_relevant_dofs, comm);
@@ -564,12 +641,12 @@ HertzContactResult HertzContactProblem::run() {
   result.dofs = dof_handler.n_dofs();
   result.finest_cell_x = finest_hx;
   result.finest_cell_y = finest_hy;
-  result.domain_x = domain_x;
-  result.domain_y = domain_y;
+  result.domain_x = domain.x;
+  result.domain_y = domain.y;
   result.mpi_processes = Utilities::MPI::n_mpi_processes(comm);
   pcout << "  mesh: " << result.cells << " cells, " << result.dofs << " DoFs, h_x = b/"
-        << 1 / prm.finest_cell_fraction << ", L_x = " << domain_x / prm.design_semi_major
-        << " a, " << result.mpi_processes << " process(es)\n";
+        << prm.design_semi_minor / finest_hx << ", L_x = " << domain.x / prm.design_semi_major
+        << " a, " << result.mpi_processes << " process(es); " << geometry->describe() << "\n";
 
   for (std::size_t k = 0; k < contact_nodes.size(); ++k)
     active[k] = gap(contact_nodes[k], prm.approaches.front()) < 0;
@@ -587,7 +664,7 @@ HertzContactResult HertzContactProblem::run() {
       solution *= ratio;
       const double a = prev.semi_major * std::sqrt(ratio), b = prev.semi_minor * std::sqrt(ratio);
       for (std::size_t k = 0; k < contact_nodes.size(); ++k) {
-        const double x = contact_nodes[k].x / b, y = contact_nodes[k].y / a;
+        const double x = contact_nodes[k].p[0] / b, y = contact_nodes[k].p[1] / a;
         active[k] = x * x + y * y < 1;
       }
     }
@@ -615,18 +692,21 @@ HertzContactResult HertzContactProblem::run() {
     s.active_set_iterations = iterations;
     s.linear_iterations = cg;
     pcout << "  step " << step << ": delta = " << delta << " m, F = " << s.force
-          << " N, a = " << s.semi_major << " m, b = " << s.semi_minor << " m, "
-          << s.active_nodes << " contact nodes, " << iterations << " active-set iterations, "
-          << cg << " CG iterations\n";
+          << " N, a = " << s.semi_major << " m, b = " << s.semi_minor << " m, " << s.active_nodes
+          << " contact nodes, " << iterations << " active-set iterations, " << cg
+          << " CG iterations\n";
     result.steps.push_back(s);
     if (!prm.vtu_directory.empty()) output_results(step);
   }
-  result.wall_time =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  result.wall_time = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   return result;
 }
 
 }  // namespace
+
+std::unique_ptr<ContactGeometry> make_hertz_block(const HertzContactParameters& p) {
+  return std::make_unique<HertzBlock>(p);
+}
 
 HertzContactResult solve_hertz_contact(const HertzContactParameters& parameters, MPI_Comm comm) {
   HertzContactProblem problem(parameters, comm);
