@@ -10,6 +10,9 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include "bearing/presets.h"
+#include "calibration_files.h"
+
 namespace {
 
 namespace fs = std::filesystem;
@@ -130,17 +133,29 @@ int sim_capture(const std::string& args, std::string& out, std::string& err) {
 const std::string kCalibratedExample =
     std::string(BEARING_SOURCE_DIR) + "/examples/seed003_6308_calibrated.toml";
 
+// The example's case with a calibration of the exact Hertz constants (exponent 1.5), written by
+// the test: the law must then run exactly like contact = "exact" (the example's own file holds
+// real FE constants).
+std::string hertz_calibrated_example() {
+  const std::string file = bearing::test::write_calibration(
+      "hertz_calibration.json", bearing::test::hertz_calibration_doc(bearing::preset("6308")));
+  return kCalibratedExample + " --set model.calibration=" + file;
+}
+
 // (f) info shows which contact law is in use: the calibrated one with its file, geometry, date and
 // constants, in text and JSON; a file for another bearing stops it with exit status 2.
 TEST(CliCalibrated, InfoShowsTheCalibratedLaw) {
   std::string out, err;
   ASSERT_EQ(sim_capture("info " + kCalibratedExample, out, err), 0) << err;
   for (const char* s : {"Contact law: calibrated (FE, hertz geometry, file ",
-                        "seed003_6308_calibration.json", "inner K = ", "N/m^1.5, n = 1.5",
+                        "seed003_6308_calibration.json", "inner K = ", "N/m^1.50",
                         "ball between both races K = ", "exact Hertz solution", "exponent n"})
     EXPECT_NE(out.find(s), std::string::npos) << "lacks \"" << s << "\":\n" << out;
+  ASSERT_EQ(sim_capture("info " + hertz_calibrated_example(), out, err), 0) << err;
+  for (const char* s : {"hertz_calibration.json", "N/m^1.5, n = 1.5"})
+    EXPECT_NE(out.find(s), std::string::npos) << "lacks \"" << s << "\":\n" << out;
 
-  ASSERT_EQ(sim_capture("info " + kCalibratedExample + " --json", out, err), 0) << err;
+  ASSERT_EQ(sim_capture("info " + hertz_calibrated_example() + " --json", out, err), 0) << err;
   const auto j = nlohmann::json::parse(out);
   EXPECT_EQ(j["contact"]["method"], "calibrated");
   EXPECT_EQ(j["contact"]["inner"]["exponent"], 1.5);
@@ -155,8 +170,7 @@ TEST(CliCalibrated, InfoShowsTheCalibratedLaw) {
   EXPECT_EQ(j["units"]["contact.K"], "N/m^exponent");
 
   // Unequal exponents: the fitted ball law and its residual.
-  nlohmann::json doc = nlohmann::json::parse(
-      read(fs::path(BEARING_SOURCE_DIR) / "examples" / "seed003_6308_calibration.json"));
+  nlohmann::json doc = bearing::test::hertz_calibration_doc(bearing::preset("6308"));
   doc["inner"]["exponent"] = 1.5012;
   doc["outer"]["exponent"] = 1.4996;
   const fs::path file = fs::path(::testing::TempDir()) / "CliCalibrated.unequal.json";
@@ -188,12 +202,12 @@ TEST(CliCalibrated, InfoShowsTheCalibratedLaw) {
 }
 
 // run records the law in summary.json, and case.toml (with the calibration's absolute path)
-// repeats the run bit for bit from another folder; with the placeholder Hertz constants the run
-// is the exact-law run.
+// repeats the run bit for bit from another folder; with the exact Hertz constants the run is the
+// exact-law run.
 TEST(CliCalibrated, RunRecordsTheLawAndRepeatsFromCaseToml) {
   const fs::path a = fresh_dir("cal_run_a"), b = fresh_dir("cal_run_b"),
                  e = fresh_dir("cal_run_exact");
-  ASSERT_EQ(sim("run " + kCalibratedExample + " --out " + a.string() + kShort), 0);
+  ASSERT_EQ(sim("run " + hertz_calibrated_example() + " --out " + a.string() + kShort), 0);
   const std::string toml = read(a / "case.toml");
   EXPECT_NE(toml.find("contact = \"calibrated\""), std::string::npos) << toml;
   const auto j = nlohmann::json::parse(read(a / "summary.json"));
