@@ -94,7 +94,7 @@ nlohmann::json step_json(const bearing::fem::ApproachStep& s) {
 // The ring segment for --geometry groove: dimensions (ISO 15 by designation unless given), the
 // coarse mesh from meshes/raceway_segment.geo by gmsh (rank 0; the others wait), and a JSON record.
 nlohmann::json setup_raceway(const ContactOptions& o, const bearing::Case& c, bearing::Race race,
-                             const std::filesystem::path& out, bool root, MPI_Comm comm,
+                             const std::filesystem::path& out, MPI_Comm comm,
                              bearing::fem::RacewaySegment& r) {
   using namespace bearing;
   const Bearing& b = c.bearing;
@@ -111,6 +111,12 @@ nlohmann::json setup_raceway(const ContactOptions& o, const bearing::Case& c, be
                             : " (known: 608, 6304, 6308, "
                               "6205, 209)") +
                      "; give --bore, --outside-diameter and --width [m]");
+  if (b.contact_angle != 0)
+    throw InputError(
+        "--geometry groove models the radial contact at the groove bottom; "
+        "bearing.contact_angle = " +
+        std::to_string(b.contact_angle * 180 / M_PI) +
+        " deg is not supported (use --geometry hertz)");
   const bool outer = race == Race::outer;
   const double D = b.ball_diameter;
   r.outer = outer;
@@ -132,7 +138,6 @@ nlohmann::json setup_raceway(const ContactOptions& o, const bearing::Case& c, be
     throw InputError("--segment-angle = " + std::to_string(o.segment_angle) +
                      " deg: must lie in (0, 90)");
   r.paraboloid_gap = o.gap == "paraboloid";
-  (void)root;
   fem::mesh_raceway_segment(r, o.groove_depth * D, angle, (out / "raceway_segment.msh").string(),
                             comm);
   return {{"ring", outer ? "outer" : "inner"},
@@ -218,7 +223,7 @@ nlohmann::json run_contact(const ContactOptions& o, MPI_Comm comm) {
   nlohmann::json ring_json;
   if (o.geometry == "groove") {
     p.geometry = "groove";
-    ring_json = setup_raceway(o, c, race, out, root, comm, p.raceway);
+    ring_json = setup_raceway(o, c, race, out, comm, p.raceway);
   }
   if (o.vtu) {
     p.vtu_directory = (out / "vtu").string();
