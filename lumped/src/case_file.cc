@@ -28,7 +28,7 @@ namespace {
 // ([[waviness.inner]]) are named "waviness.inner.<key>" here and "waviness.inner[i].<key>" in
 // messages.
 // ---------------------------------------------------------------------------------------------
-enum class Kind { quantity, integer, text, boolean, vector2, list, table, table_array };
+enum class Kind { quantity, integer, text, boolean, vector2, list, points, table, table_array };
 
 struct KeySpec {
   const char* name;
@@ -113,14 +113,26 @@ const std::vector<KeySpec>& schema() {
       {"output.ball_loads", Kind::boolean, D::dimensionless, "write each ball's load Q1..QZ"},
       {"output.window", Kind::text, D::dimensionless, "hann | flattop | rectangular"},
       {"output.peaks", Kind::integer, D::dimensionless, "peaks listed per channel (default 10)"},
+      {"acoustics.ring_source", Kind::text, D::dimensionless,
+       "inner ring as: cylinder-dipole (default) | paper | none"},
+      {"acoustics.ball_source", Kind::text, D::dimensionless,
+       "each ball as: oscillating-sphere (default) | pulsating-sphere | paper | none"},
+      {"acoustics.summation", Kind::text, D::dimensionless,
+       "coherent (default: sum of pressures) | energetic (seed 000: sqrt of summed squares)"},
+      {"acoustics.microphones", Kind::points, D::length,
+       "[[r, angle], ...] in the bearing plane from the bearing centre, angle from +x towards +y"},
+      {"acoustics.ring_radius", Kind::quantity, D::length,
+       "radiating radius of the inner ring (default: inner raceway radius (d_m - D)/2)"},
+      {"acoustics.density", Kind::quantity, D::density, "air density (default 1.204 kg/m^3)"},
+      {"acoustics.sound_speed", Kind::quantity, D::velocity, "speed of sound (default 343.2 m/s)"},
   };
   return keys;
 }
 
 const std::vector<std::string>& top_tables() {
-  static const std::vector<std::string> t{"bearing",   "material", "rotor",
-                                          "operation", "waviness", "ball_errors",
-                                          "model",     "solver",   "output"};
+  static const std::vector<std::string> t{"bearing",  "material",    "rotor", "operation",
+                                          "waviness", "ball_errors", "model", "solver",
+                                          "output",   "acoustics"};
   return t;
 }
 
@@ -324,6 +336,27 @@ class TableReader {
       v.push_back(
           read_quantity(*a->get(i), full(key) + "[" + std::to_string(i) + "]", spec(key).dim));
     return v;
+  }
+  // An array of [r, angle] pairs: a length and an angle each.
+  std::optional<std::vector<Microphone>> points(const char* key) {
+    const toml::node* n = get(key);
+    if (!n) return std::nullopt;
+    const toml::array* a = n->as_array();
+    const auto bad = [&](const std::string& what) {
+      return InputError(full(key) + " = " + shown_value(*n) + ": " + what + " (" + spec(key).help +
+                        "), e.g. [[\"10 mm\", \"-90 deg\"], [\"0.5 m\", \"0 deg\"]]");
+    };
+    if (!a) throw bad("expected an array of [r, angle] pairs");
+    std::vector<Microphone> out;
+    for (std::size_t i = 0; i < a->size(); ++i) {
+      const toml::array* p = a->get(i)->as_array();
+      if (!p || p->size() != 2)
+        throw bad("entry " + std::to_string(i) + " is not a pair [r, angle]");
+      const std::string shown = full(key) + "[" + std::to_string(i) + "]";
+      out.push_back({read_quantity(*p->get(0), shown + "[0] (r)", Dimension::length),
+                     read_quantity(*p->get(1), shown + "[1] (angle)", Dimension::angle)});
+    }
+    return out;
   }
   const toml::table* subtable(const char* key) {
     const toml::node* n = get(key);
@@ -670,6 +703,47 @@ Case resolve(const toml::table& doc, const std::string& source, const std::strin
     c.output.peaks = static_cast<int>(*v);
   }
   output.finish();
+
+  // [acoustics]: its presence turns the sound-pressure outputs on.
+  const toml::table* acoustics_table = top_table(doc, "acoustics");
+  TableReader acoustics(acoustics_table, "acoustics");
+  AcousticsOptions& ac = c.acoustics;
+  ac.enabled = acoustics_table != nullptr;
+  ac.ring_radius = 0.5 * b.inner_raceway_diameter();
+  if (auto v = acoustics.choice("ring_source", {"cylinder-dipole", "paper", "none"}))
+    ac.ring_source = *v;
+  if (auto v = acoustics.choice("ball_source",
+                                {"oscillating-sphere", "pulsating-sphere", "paper", "none"}))
+    ac.ball_source = *v;
+  if (auto v = acoustics.choice("summation", {"coherent", "energetic"})) ac.summation = *v;
+  if (auto v = acoustics.points("microphones")) ac.microphones = *v;
+  if (auto v = acoustics.quantity("ring_radius")) ac.ring_radius = *v;
+  if (auto v = acoustics.quantity("density")) ac.density = *v;
+  if (auto v = acoustics.quantity("sound_speed")) ac.sound_speed = *v;
+  acoustics.finish();
+  if (ac.enabled) {
+    if (ac.microphones.empty())
+      throw InputError(
+          "acoustics.microphones is missing or empty: an [acoustics] table needs at least one "
+          "microphone [r, angle] in the bearing plane, e.g. microphones = [[\"10 mm\", \"-90 "
+          "deg\"]]");
+    for (std::size_t i = 0; i < ac.microphones.size(); ++i) {
+      const double r = ac.microphones[i].radius;
+      require(r > 0 && r <= 100.0, "acoustics.microphones[" + std::to_string(i) + "] r", r,
+              Dimension::length, "must lie in (0, 100 m]");
+    }
+    require(ac.ring_radius > 0 && ac.ring_radius < 0.5 * b.pitch_diameter, "acoustics.ring_radius",
+            ac.ring_radius, Dimension::length,
+            "must lie in (0, d_m/2 = " + fmt_si(0.5 * b.pitch_diameter, Dimension::length) + ")");
+    require(ac.density > 0 && ac.density <= 2e4, "acoustics.density", ac.density,
+            Dimension::density, "must lie in (0, 20000 kg/m^3]");
+    require(ac.sound_speed > 0 && ac.sound_speed <= 1e4, "acoustics.sound_speed", ac.sound_speed,
+            Dimension::velocity, "must lie in (0, 10000 m/s]");
+    if (ac.ring_source == "none" && ac.ball_source == "none")
+      throw InputError(
+          "acoustics: ring_source and ball_source are both \"none\": nothing radiates; choose a "
+          "source or remove the [acoustics] table");
+  }
   return c;
 }
 
@@ -867,6 +941,17 @@ std::string case_to_toml(const Case& c) {
     << "\nmax_displacement = " << num17(s.max_displacement) << "\n\n";
   o << "[output]\nball_loads = " << (c.output.ball_loads ? "true" : "false")
     << "\nwindow = " << quoted(c.output.window) << "\npeaks = " << c.output.peaks << "\n";
+  const AcousticsOptions& ac = c.acoustics;
+  if (ac.enabled) {
+    o << "\n[acoustics]\nring_source = " << quoted(ac.ring_source)
+      << "\nball_source = " << quoted(ac.ball_source) << "\nsummation = " << quoted(ac.summation)
+      << "\nmicrophones = [";
+    for (std::size_t i = 0; i < ac.microphones.size(); ++i)
+      o << (i ? ", " : "") << "[" << num17(ac.microphones[i].radius) << ", \""
+        << num17(ac.microphones[i].angle) << " rad\"]";
+    o << "]\nring_radius = " << num17(ac.ring_radius) << "\ndensity = " << num17(ac.density)
+      << "\nsound_speed = " << num17(ac.sound_speed) << "\n";
+  }
   return o.str();
 }
 
@@ -906,6 +991,8 @@ std::string case_keys_help() {
               : k.kind == Kind::boolean     ? "true/false"
               : k.kind == Kind::table_array ? "entries"
                                             : "number";
+    } else if (k.kind == Kind::points) {
+      units = "pairs of a length and an angle (deg or rad)";
     } else {
       units = (bare_number_is_si(k.dim) ? std::string(si_unit(k.dim)) + " if plain; "
                                         : "unit required; ") +

@@ -51,6 +51,7 @@ const std::vector<UnitEntry>& table(Dimension dim) {
       {"Ns/m", 1.0}, {"kNs/m", 1e3}, {"kg/s", 1.0}, {"Ns/mm", 1e3}};
   static const std::vector<UnitEntry> mass_length{
       {"kgm", 1.0}, {"gmm", 1e-6}, {"gcm", 1e-5}, {"gm", 1e-3}};
+  static const std::vector<UnitEntry> velocity{{"m/s", 1.0}, {"mm/s", 1e-3}, {"km/h", 1.0 / 3.6}};
   static const std::vector<UnitEntry> none{};
   switch (dim) {
     case Dimension::length:
@@ -75,6 +76,8 @@ const std::vector<UnitEntry>& table(Dimension dim) {
       return damping;
     case Dimension::mass_length:
       return mass_length;
+    case Dimension::velocity:
+      return velocity;
     case Dimension::dimensionless:
       return none;
   }
@@ -118,7 +121,7 @@ const char* other_dimension(const std::string& unit, Dimension dim) {
   for (Dimension d :
        {Dimension::length, Dimension::angle, Dimension::angular_speed, Dimension::force,
         Dimension::pressure, Dimension::mass, Dimension::density, Dimension::time,
-        Dimension::frequency, Dimension::damping, Dimension::mass_length}) {
+        Dimension::frequency, Dimension::damping, Dimension::mass_length, Dimension::velocity}) {
     if (d == dim) continue;
     for (const auto& e : table(d))
       if (unit == e.name) return dimension_name(d).data();
@@ -152,6 +155,8 @@ std::string_view dimension_name(Dimension dim) {
       return "damping";
     case Dimension::mass_length:
       return "unbalance (mass times eccentricity)";
+    case Dimension::velocity:
+      return "speed";
     case Dimension::dimensionless:
       return "dimensionless number";
   }
@@ -182,6 +187,8 @@ std::string_view si_unit(Dimension dim) {
       return "N s/m";
     case Dimension::mass_length:
       return "kg m";
+    case Dimension::velocity:
+      return "m/s";
     case Dimension::dimensionless:
       return "";
   }
@@ -212,6 +219,8 @@ std::vector<std::string> accepted_units(Dimension dim) {
       return {"N s/m", "kN s/m", "N s/mm", "kg/s"};
     case Dimension::mass_length:
       return {"kg m", "g mm", "g cm", "g m"};
+    case Dimension::velocity:
+      return {"m/s", "mm/s", "km/h"};
     case Dimension::dimensionless:
       return {};
   }

@@ -207,11 +207,11 @@ TEST(CaseFile, ReadsTheDynamicsTables) {
 
 TEST(CaseFile, DefaultsMatchTheSeeds) {
   const Case c = bearing::default_case();
-  EXPECT_DOUBLE_EQ(c.rotor.mass, 0.6);      // seeds 001–003
+  EXPECT_DOUBLE_EQ(c.rotor.mass, 0.6);  // seeds 001–003
   EXPECT_DOUBLE_EQ(c.rotor.damping, 200.0);
   EXPECT_EQ(c.model.kind, "2dof");
   EXPECT_EQ(c.solver.method, "rk4");
-  EXPECT_DOUBLE_EQ(c.solver.dt, 5e-6);       // seeds 002/003
+  EXPECT_DOUBLE_EQ(c.solver.dt, 5e-6);  // seeds 002/003
   EXPECT_TRUE(c.excitation.inner_waviness.empty());
   EXPECT_TRUE(c.excitation.ball_size_errors.empty());
 }
@@ -234,7 +234,8 @@ TEST(CaseFile, WavinessTableIsReadRelativeToTheCaseFile) {
 }
 
 TEST(CaseFile, BandErrorsAreReproducibleAndRecorded) {
-  const std::string text = "[bearing]\npreset = \"608\"\n[ball_errors]\nband = \"2 um\"\nseed = 7\n";
+  const std::string text =
+      "[bearing]\npreset = \"608\"\n[ball_errors]\nband = \"2 um\"\nseed = 7\n";
   const Case a = parse_case(text, "t");
   const Case b = parse_case(text, "t");
   ASSERT_EQ(a.excitation.ball_size_errors.size(), 7u);
@@ -246,8 +247,9 @@ TEST(CaseFile, BandErrorsAreReproducibleAndRecorded) {
 }
 
 TEST(CaseFile, OverrideReachesIntoWavinessEntries) {
-  const Case c = parse_case(kDynamics, "t", {parse_override("waviness.inner.0.amplitude=1.2um"),
-                                             parse_override("waviness.outer.0.order=24")});
+  const Case c = parse_case(kDynamics, "t",
+                            {parse_override("waviness.inner.0.amplitude=1.2um"),
+                             parse_override("waviness.outer.0.order=24")});
   EXPECT_DOUBLE_EQ(c.excitation.inner_waviness[0].amplitude, 1.2e-6);
   EXPECT_EQ(c.excitation.outer_waviness[0].order, 24);
   EXPECT_EQ(bearing::key_dimension("waviness.inner.0.amplitude"), bearing::Dimension::length);
@@ -291,4 +293,39 @@ TEST(CaseFile, ResolvedCaseRoundTripsExactly) {
   EXPECT_EQ(b.output.ball_loads, a.output.ball_loads);
   EXPECT_EQ(b.output.window, a.output.window);
   EXPECT_EQ(b.output.peaks, a.output.peaks);
+}
+
+// [acoustics]: its presence turns the outputs on; defaults are air at 20 °C, the exact ring
+// dipole and the translating-ball dipole, the ring radiating from the inner raceway radius.
+TEST(CaseFile, ReadsTheAcousticsTable) {
+  const std::string base = "[bearing]\npreset = \"608\"\n";
+  EXPECT_FALSE(parse_case(base, "a.toml").acoustics.enabled);
+  const Case c = parse_case(base +
+                                "[acoustics]\nmicrophones = [[\"10 mm\", \"-90 deg\"], [\"0.5 "
+                                "m\", \"0.25 rad\"]]\nsummation = \"energetic\"\n",
+                            "a.toml");
+  const auto& ac = c.acoustics;
+  EXPECT_TRUE(ac.enabled);
+  ASSERT_EQ(ac.microphones.size(), 2u);
+  EXPECT_DOUBLE_EQ(ac.microphones[0].radius, 0.010);
+  EXPECT_DOUBLE_EQ(ac.microphones[0].angle, -kPi / 2);
+  EXPECT_DOUBLE_EQ(ac.microphones[1].radius, 0.5);
+  EXPECT_DOUBLE_EQ(ac.microphones[1].angle, 0.25);
+  EXPECT_EQ(ac.summation, "energetic");
+  EXPECT_EQ(ac.ring_source, "cylinder-dipole");
+  EXPECT_EQ(ac.ball_source, "oscillating-sphere");
+  EXPECT_DOUBLE_EQ(ac.ring_radius, 0.5 * c.bearing.inner_raceway_diameter());
+  EXPECT_DOUBLE_EQ(ac.density, 1.204);
+  EXPECT_DOUBLE_EQ(ac.sound_speed, 343.2);
+
+  // Round trip through the resolved case, and an override that reaches into the table.
+  const Case b = parse_case(bearing::case_to_toml(c), "case.toml",
+                            {parse_override("acoustics.sound_speed=1235 km/h")});
+  EXPECT_TRUE(b.acoustics.enabled);
+  ASSERT_EQ(b.acoustics.microphones.size(), 2u);
+  EXPECT_EQ(b.acoustics.microphones[1].radius, ac.microphones[1].radius);
+  EXPECT_EQ(b.acoustics.microphones[1].angle, ac.microphones[1].angle);
+  EXPECT_EQ(b.acoustics.summation, ac.summation);
+  EXPECT_EQ(b.acoustics.ring_radius, ac.ring_radius);
+  EXPECT_NEAR(b.acoustics.sound_speed, 1235 / 3.6, 1e-12);
 }

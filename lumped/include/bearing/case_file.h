@@ -80,6 +80,29 @@ struct OutputOptions {
   int peaks = 10;               ///< spectrum peaks listed per channel in summary.json
 };
 
+/// A microphone in the bearing plane, in the fixed frame with its origin at the bearing centre.
+struct Microphone {
+  double radius = 0.0;  ///< distance from the bearing centre [m]
+  double angle = 0.0;   ///< from +x towards +y (up) [rad]
+};
+
+/// Sound radiated by the inner ring and the balls (MODEL.md §8); on when the case has an
+/// [acoustics] table. Source names are those of bearing/acoustics/source_models.h, or "none".
+struct AcousticsOptions {
+  bool enabled = false;
+  /// The inner ring: "cylinder-dipole" (exact in ka), "paper" (seed 000's low-ka cylinder), "none".
+  std::string ring_source = "cylinder-dipole";
+  /// Each ball, driven by its centre's radial velocity: "oscillating-sphere" (a translating rigid
+  /// ball, exact in ka), "pulsating-sphere" (seed 000's choice, exact in ka), "paper" (seed 000's
+  /// eq. 23), "none".
+  std::string ball_source = "oscillating-sphere";
+  std::string summation = "coherent";   ///< "coherent" (sum of pressures) | "energetic" (seed 000)
+  std::vector<Microphone> microphones;  ///< at least one when enabled
+  double ring_radius = 0.0;             ///< radiating radius of the inner ring [m] (default d_i/2)
+  double density = 1.204;               ///< air density ρ₀ [kg/m^3] (20 °C, 1 atm)
+  double sound_speed = 343.2;           ///< speed of sound c₀ [m/s] (20 °C)
+};
+
 struct Case {
   std::string source;  ///< file the case was read from, or "built-in default case"
   std::string preset;  ///< bearing.preset, empty if none
@@ -90,6 +113,7 @@ struct Case {
   ModelOptions model;
   SolverOptions solver;
   OutputOptions output;
+  AcousticsOptions acoustics;
 };
 
 /// The contact constants of the case's law (the one place models, the static solution and `info`

@@ -22,6 +22,7 @@ enum class Dimension {
   frequency,      ///< SI: Hz
   damping,        ///< SI: N s/m
   mass_length,    ///< SI: kg m (unbalance: mass times eccentricity)
+  velocity,       ///< SI: m/s (speed of sound)
   dimensionless,  ///< no unit
 };
 
