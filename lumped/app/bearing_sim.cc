@@ -102,9 +102,8 @@ int main(int argc, char** argv) {
 
   auto* run = app.add_subcommand(
       "run",
-      "Simulate a case (model.kind 2dof or 3dof) and write DIR/response.csv (t, then "
-      "x,y,vx,vy,ax,ay "
-      "[,z,vz,az] [,Q1..QZ]), DIR/spectrum.csv (one-sided amplitude spectra after the transient), "
+      "Simulate a case (model.kind 2dof, 3dof or quasistatic) and write DIR/response.csv (t, "
+      "then x,y,vx,vy,ax,ay [,z,vz,az] [,Q1..QZ] [,r1..rZ,vr1..vrZ]), DIR/spectrum.csv (one-sided amplitude spectra after the transient), "
       "DIR/summary.json (channels.<name>.{rms,ptp,kurtosis,crest}, peaks.<name>[] with frequency, "
       "amplitude, label) and DIR/case.toml (the fully resolved case); prints the summary");
   add_case_options(run, case_path, sets);

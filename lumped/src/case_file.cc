@@ -94,7 +94,8 @@ const std::vector<KeySpec>& schema() {
       {"ball_errors.band", Kind::quantity, D::length,
        "draw D_j - D uniformly in [-band/2, band/2]"},
       {"ball_errors.seed", Kind::integer, D::dimensionless, "seed of the band draw (default 1)"},
-      {"model.kind", Kind::text, D::dimensionless, "2dof | 3dof"},
+      {"model.kind", Kind::text, D::dimensionless,
+       "2dof | 3dof | quasistatic (seed 000: equilibrium per output instant, no [solver] method)"},
       {"model.contact", Kind::text, D::dimensionless,
        "contact law: exact | hamrock-brewe | harris-table | calibrated"},
       {"model.calibration", Kind::text, D::dimensionless,
@@ -111,6 +112,8 @@ const std::vector<KeySpec>& schema() {
       {"solver.max_displacement", Kind::quantity, D::length,
        "blow-up bound on the ring displacement (default 1 mm)"},
       {"output.ball_loads", Kind::boolean, D::dimensionless, "write each ball's load Q1..QZ"},
+      {"output.ball_motion", Kind::boolean, D::dimensionless,
+       "write each ball centre's radial displacement r1..rZ [m] and velocity vr1..vrZ [m/s]"},
       {"output.window", Kind::text, D::dimensionless, "hann | flattop | rectangular"},
       {"output.peaks", Kind::integer, D::dimensionless, "peaks listed per channel (default 10)"},
       {"acoustics.ring_source", Kind::text, D::dimensionless,
@@ -616,11 +619,12 @@ Case resolve(const toml::table& doc, const std::string& source, const std::strin
   // [model]
   TableReader model(top_table(doc, "model"), "model");
   if (auto v = model.text("kind")) {
-    if (*v == "quasistatic" || *v == "balls")
+    if (*v == "balls")
       throw InputError("model.kind = \"" + *v +
-                       "\": not available in this version; allowed: 2dof, 3dof");
-    if (*v != "2dof" && *v != "3dof")
-      throw InputError("model.kind = \"" + *v + "\": unknown model; allowed: 2dof, 3dof");
+                       "\": not available in this version; allowed: 2dof, 3dof, quasistatic");
+    if (*v != "2dof" && *v != "3dof" && *v != "quasistatic")
+      throw InputError("model.kind = \"" + *v +
+                       "\": unknown model; allowed: 2dof, 3dof, quasistatic");
     c.model.kind = *v;
   }
   if (auto v = model.text("contact")) {
@@ -696,6 +700,7 @@ Case resolve(const toml::table& doc, const std::string& source, const std::strin
   // [output]
   TableReader output(top_table(doc, "output"), "output");
   if (auto v = output.boolean("ball_loads")) c.output.ball_loads = *v;
+  if (auto v = output.boolean("ball_motion")) c.output.ball_motion = *v;
   if (auto v = output.choice("window", {"hann", "flattop", "rectangular"})) c.output.window = *v;
   if (auto v = output.integer("peaks")) {
     if (*v < 0 || *v > 1000)
@@ -940,6 +945,7 @@ std::string case_to_toml(const Case& c) {
     << "\ntolerance = " << num17(s.tolerance) << "\noutput_rate = " << num17(s.output_rate)
     << "\nmax_displacement = " << num17(s.max_displacement) << "\n\n";
   o << "[output]\nball_loads = " << (c.output.ball_loads ? "true" : "false")
+    << "\nball_motion = " << (c.output.ball_motion ? "true" : "false")
     << "\nwindow = " << quoted(c.output.window) << "\npeaks = " << c.output.peaks << "\n";
   const AcousticsOptions& ac = c.acoustics;
   if (ac.enabled) {

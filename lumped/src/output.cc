@@ -167,18 +167,35 @@ nlohmann::json summary_json(const Case& c, const SimulationResult& r, const RunS
     const auto& st = ch.statistics;
     j["channels"][ch.name] = {{"mean", st.mean},         {"rms", st.rms},     {"ptp", st.ptp},
                               {"kurtosis", st.kurtosis}, {"crest", st.crest}, {"unit", ch.unit}};
-    if (ch.name.front() == 'Q') continue;
+    if (is_ball_channel(ch.name)) continue;
     json peaks = json::array();
     for (const auto& p : ch.peaks)
       peaks.push_back({{"frequency", p.frequency}, {"amplitude", p.amplitude}, {"label", p.label}});
     j["peaks"][ch.name] = peaks;
   }
-  j["solver"] = {{"method", c.solver.method},
-                 {"dt", c.solver.dt},
-                 {"tolerance", c.solver.tolerance},
-                 {"steps", r.stats.steps},
-                 {"rejected_steps", r.stats.rejected_steps},
-                 {"force_evaluations", r.stats.force_evaluations}};
+  if (r.quasi_static) {
+    // No integrator ran: solver.method, dt and tolerance did not matter.
+    const QuasiStaticStats& q = *r.quasi_static;
+    j["solver"] = {{"method", "quasistatic newton"},
+                   {"steps", q.steps},
+                   {"newton_iterations", q.newton_iterations},
+                   {"fallbacks", q.fallbacks},
+                   {"max_relative_residual", q.max_relative_residual},
+                   {"min_loaded_balls", q.min_loaded_balls},
+                   {"contact_changes", q.contact_changes},
+                   {"jumps", q.jumps},
+                   {"largest_jump", q.largest_jump},
+                   {"minimum_load", q.minimum_load}};
+    // F_smooth is infinite for Z <= 4 (JSON has no infinity): left out there.
+    if (std::isfinite(q.smooth_load)) j["solver"]["smooth_load"] = q.smooth_load;
+  } else {
+    j["solver"] = {{"method", c.solver.method},
+                   {"dt", c.solver.dt},
+                   {"tolerance", c.solver.tolerance},
+                   {"steps", r.stats.steps},
+                   {"rejected_steps", r.stats.rejected_steps},
+                   {"force_evaluations", r.stats.force_evaluations}};
+  }
   j["units"] = {{"frequencies", "Hz"},
                 {"channels", "see channels.<name>.unit (kurtosis and crest: 1)"},
                 {"peaks.frequency", "Hz"},
@@ -188,6 +205,11 @@ nlohmann::json summary_json(const Case& c, const SimulationResult& r, const RunS
                 {"case.duration", "s"},
                 {"contact.K", "N/m^exponent (contact.exponent)"},
                 {"contact.*.K", "N/m^exponent"}};
+  if (r.quasi_static) {
+    j["units"]["solver.largest_jump"] = "m";
+    j["units"]["solver.minimum_load"] = "N";
+    j["units"]["solver.smooth_load"] = "N";
+  }
   if (c.model.calibration) j["units"]["case.calibration.load_range"] = "N";
   require_finite(j);
   return j;
@@ -198,7 +220,7 @@ std::string summary_text(const Case& c, const SimulationResult& r, const RunSumm
   char buf[256];
   const auto& f = r.frequencies;
   o << "Case: " << c.source << " — bearing " << c.bearing.designation << ", model " << c.model.kind
-    << ", " << c.solver.method << "\n";
+    << ", " << (r.quasi_static ? std::string("quasistatic newton") : c.solver.method) << "\n";
   std::snprintf(
       buf, sizeof buf,
       "Frequencies: shaft %.3f Hz, FTF %.3f Hz, BPFO %.3f Hz, BPFI %.3f Hz, BSF %.3f Hz\n", f.shaft,
@@ -208,7 +230,7 @@ std::string summary_text(const Case& c, const SimulationResult& r, const RunSumm
                 c.solver.duration - c.solver.transient, c.solver.transient);
   o << buf;
   for (const auto& ch : s.channels) {
-    if (ch.name.front() == 'Q') continue;
+    if (is_ball_channel(ch.name)) continue;
     const auto& st = ch.statistics;
     std::snprintf(buf, sizeof buf,
                   "  %-3s mean %11.4g  rms %11.4g  ptp %11.4g %-6s kurtosis %6.3f  crest %6.3f",
@@ -222,8 +244,16 @@ std::string summary_text(const Case& c, const SimulationResult& r, const RunSumm
     }
     o << "\n";
   }
-  std::snprintf(buf, sizeof buf, "Solver: %ld steps, %ld force evaluations\n", r.stats.steps,
-                r.stats.force_evaluations);
+  if (r.quasi_static)
+    std::snprintf(buf, sizeof buf,
+                  "Solver: quasi-static Newton, %ld instants, %ld iterations, %ld fallbacks, "
+                  "max residual %.2g, min %d loaded balls, %ld jumps\n",
+                  r.quasi_static->steps, r.quasi_static->newton_iterations,
+                  r.quasi_static->fallbacks, r.quasi_static->max_relative_residual,
+                  r.quasi_static->min_loaded_balls, r.quasi_static->jumps);
+  else
+    std::snprintf(buf, sizeof buf, "Solver: %ld steps, %ld force evaluations\n", r.stats.steps,
+                  r.stats.force_evaluations);
   o << buf;
   return o.str();
 }

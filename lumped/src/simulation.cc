@@ -6,6 +6,7 @@
 #include <stdexcept>
 
 #include "bearing/errors.h"
+#include "bearing/models/quasi_static.h"
 #include "bearing/models/three_dof.h"
 #include "bearing/models/two_dof.h"
 
@@ -47,7 +48,21 @@ std::unique_ptr<BearingModel> make_model(const Case& c) {
   const ModelInputs in = model_inputs(c);
   if (c.model.kind == "2dof") return make_two_dof_model(in);
   if (c.model.kind == "3dof") return make_three_dof_model(in);
-  throw InputError("model.kind = \"" + c.model.kind + "\": allowed: 2dof, 3dof");
+  if (c.model.kind == "quasistatic")
+    throw InputError(
+        "model.kind = \"quasistatic\" has no equations of motion (no integrator "
+        "runs it): make_quasi_static_model builds it");
+  throw InputError("model.kind = \"" + c.model.kind + "\": allowed: 2dof, 3dof, quasistatic");
+}
+
+bool is_ball_channel(const std::string& name) {
+  if (name.empty()) return false;
+  const std::size_t stem = name.front() == 'Q' || name.front() == 'r'    ? 1
+                           : name.rfind("vr", 0) == 0 && name.size() > 2 ? 2
+                                                                         : 0;
+  if (stem == 0 || name.size() == stem) return false;
+  return std::all_of(name.begin() + static_cast<std::ptrdiff_t>(stem), name.end(),
+                     [](char ch) { return ch >= '0' && ch <= '9'; });
 }
 
 namespace {
@@ -60,14 +75,44 @@ BearingFrequencies run_frequencies(const Case& c) {
   return bearing_frequencies(b, c.operation.speed);
 }
 
-}  // namespace
+// The channels of a run: the DOFs, their velocities and accelerations, then Q1..QZ
+// (output.ball_loads), r1..rZ and vr1..vrZ (output.ball_motion); and the output times k / rate
+// (the sample count from the duration, rounded to whole samples).
+void lay_out(const Case& c, const std::vector<std::string>& dofs, int Z, Response& out) {
+  for (const auto& q : dofs) out.channels.push_back(q), out.units.push_back("m");
+  for (const auto& q : dofs) out.channels.push_back("v" + q), out.units.push_back("m/s");
+  for (const auto& q : dofs) out.channels.push_back("a" + q), out.units.push_back("m/s^2");
+  const auto per_ball = [&](const std::string& stem, const char* unit) {
+    for (int j = 0; j < Z; ++j)
+      out.channels.push_back(stem + std::to_string(j + 1)), out.units.push_back(unit);
+  };
+  if (c.output.ball_loads) per_ball("Q", "N");
+  if (c.output.ball_motion) per_ball("r", "m"), per_ball("vr", "m/s");
+  const auto samples =
+      static_cast<std::size_t>(std::floor(c.solver.duration * c.solver.output_rate + 1e-9)) + 1;
+  out.time.resize(samples);
+  for (std::size_t k = 0; k < samples; ++k)
+    out.time[k] = static_cast<double>(k) / c.solver.output_rate;
+  out.first_steady =
+      static_cast<std::size_t>(std::ceil(c.solver.transient * c.solver.output_rate - 1e-9));
+  out.values.assign(out.channels.size(), std::vector<double>(samples));
+}
 
-SimulationResult simulate(const Case& c, const Progress& progress) {
-  SimulationResult r;
+// Writes the per-ball channels of sample k from column `first` on (lay_out's order).
+void store_balls(const Case& c, std::size_t first, std::size_t k, int Z, const double* loads,
+                 const double* r, const double* vr, Response& out) {
+  std::size_t i = first;
+  if (c.output.ball_loads)
+    for (int j = 0; j < Z; ++j) out.values[i++][k] = loads[j];
+  if (c.output.ball_motion) {
+    for (int j = 0; j < Z; ++j) out.values[i++][k] = r[j];
+    for (int j = 0; j < Z; ++j) out.values[i++][k] = vr[j];
+  }
+}
+
+// A dynamic model (2dof, 3dof) through the case's integrator.
+void run_dynamic(const Case& c, const Progress& progress, SimulationResult& r) {
   const auto model = make_model(c);
-  r.contact = contact_constants(c);
-  r.frequencies = run_frequencies(c);
-
   const int n = model->dofs();
   const std::vector<double> q0 = model->initial_displacement();
   const std::vector<double> v0(static_cast<std::size_t>(n), 0.0);
@@ -86,26 +131,11 @@ SimulationResult simulate(const Case& c, const Progress& progress) {
   const auto integrator = make_integrator(settings);
 
   const int Z = model->balls();
-  const auto names = model->dof_names();
   Response& out = r.response;
-  for (const auto& q : names) out.channels.push_back(q), out.units.push_back("m");
-  for (const auto& q : names) out.channels.push_back("v" + q), out.units.push_back("m/s");
-  for (const auto& q : names) out.channels.push_back("a" + q), out.units.push_back("m/s^2");
-  if (c.output.ball_loads)
-    for (int j = 0; j < Z; ++j)
-      out.channels.push_back("Q" + std::to_string(j + 1)), out.units.push_back("N");
+  lay_out(c, model->dof_names(), Z, out);
+  const std::size_t samples = out.time.size();
 
-  // Output times k / rate; the sample count comes from the duration, rounded to whole samples.
-  const auto samples =
-      static_cast<std::size_t>(std::floor(c.solver.duration * c.solver.output_rate + 1e-9)) + 1;
-  out.time.resize(samples);
-  for (std::size_t k = 0; k < samples; ++k)
-    out.time[k] = static_cast<double>(k) / c.solver.output_rate;
-  out.first_steady =
-      static_cast<std::size_t>(std::ceil(c.solver.transient * c.solver.output_rate - 1e-9));
-  out.values.assign(out.channels.size(), std::vector<double>(samples));
-
-  std::vector<double> loads(static_cast<std::size_t>(Z));
+  std::vector<double> loads(static_cast<std::size_t>(Z)), rb(loads), vrb(loads);
   std::size_t k = 0;
   const Observer observe = [&](double t, const double* q, const double* v, const double* a) {
     for (int i = 0; i < n; ++i) {
@@ -113,18 +143,72 @@ SimulationResult simulate(const Case& c, const Progress& progress) {
       out.values[static_cast<std::size_t>(n + i)][k] = v[i];
       out.values[static_cast<std::size_t>(2 * n + i)][k] = a[i];
     }
-    if (c.output.ball_loads) {
-      model->ball_loads(t, q, loads.data());
-      for (int j = 0; j < Z; ++j)
-        out.values[static_cast<std::size_t>(3 * n + j)][k] = loads[static_cast<std::size_t>(j)];
-    }
+    if (c.output.ball_loads) model->ball_loads(t, q, loads.data());
+    if (c.output.ball_motion) model->ball_motion(t, q, v, rb.data(), vrb.data());
+    store_balls(c, static_cast<std::size_t>(3 * n), k, Z, loads.data(), rb.data(), vrb.data(), out);
     ++k;
   };
   r.stats = integrator->integrate(*model, 0.0, q0, v0, out.time, observe, progress);
   if (k != samples)
     throw SolverError("the integrator delivered " + std::to_string(k) + " of " +
                       std::to_string(samples) + " output samples");
-  return r;
+}
+
+// The quasi-static model: the equilibrium followed through the output times. It has no
+// acceleration of its own (no inertia); ax, ay are the centred differences of the analytic
+// velocities, (v_{k+1} − v_{k−1}) / (2Δt), the mean acceleration over [t_{k−1}, t_{k+1}]
+// (one-sided at the ends), so spectra of a* work as for the dynamic models.
+void run_quasi_static(const Case& c, const Progress& progress, SimulationResult& r) {
+  const auto model = make_quasi_static_model(model_inputs(c));
+  const int Z = model->balls();
+  Response& out = r.response;
+  lay_out(c, {"x", "y"}, Z, out);
+  std::vector<double> loads(static_cast<std::size_t>(Z)), rb(loads), vrb(loads);
+  std::size_t k = 0;
+  const auto observe = [&](const QuasiStaticPoint& pt) {
+    for (int i = 0; i < 2; ++i) {
+      out.values[static_cast<std::size_t>(i)][k] = pt.position[i];
+      out.values[static_cast<std::size_t>(2 + i)][k] = pt.velocity[i];
+    }
+    if (c.output.ball_loads) model->ball_loads(pt.t, pt.position, loads.data());
+    if (c.output.ball_motion) model->ball_motion(pt, rb.data(), vrb.data());
+    store_balls(c, 6, k, Z, loads.data(), rb.data(), vrb.data(), out);
+    ++k;
+  };
+  QuasiStaticStats st = follow_equilibrium(*model, out.time, observe, progress);
+  const std::size_t m = out.time.size();
+  for (int i = 0; i < 2; ++i) {
+    const auto& v = out.values[static_cast<std::size_t>(2 + i)];
+    auto& a = out.values[static_cast<std::size_t>(4 + i)];
+    for (std::size_t s = 0; s < m; ++s) {
+      const std::size_t lo = s == 0 ? 0 : s - 1, hi = s + 1 == m ? s : s + 1;
+      a[s] = hi > lo ? (v[hi] - v[lo]) / (out.time[hi] - out.time[lo]) : 0.0;
+    }
+  }
+  r.stats.steps = st.steps;
+  r.quasi_static = st;
+}
+
+// How each model kind produces a response (dynamic integration or quasi-static following).
+struct ModelKind {
+  const char* name;
+  void (*run)(const Case&, const Progress&, SimulationResult&);
+};
+constexpr ModelKind kModelKinds[] = {
+    {"2dof", run_dynamic}, {"3dof", run_dynamic}, {"quasistatic", run_quasi_static}};
+
+}  // namespace
+
+SimulationResult simulate(const Case& c, const Progress& progress) {
+  for (const ModelKind& kind : kModelKinds)
+    if (c.model.kind == kind.name) {
+      SimulationResult r;
+      r.contact = contact_constants(c);
+      r.frequencies = run_frequencies(c);
+      kind.run(c, progress, r);
+      return r;
+    }
+  throw InputError("model.kind = \"" + c.model.kind + "\": allowed: 2dof, 3dof, quasistatic");
 }
 
 RunSummary summarize(const Case& c, const SimulationResult& result) {
@@ -141,7 +225,7 @@ RunSummary summarize(const Case& c, const SimulationResult& result) {
     ch.unit = resp.units[i];
     const std::vector<double> x = resp.steady(ch.name);
     ch.statistics = channel_statistics(x);
-    if (ch.name.front() != 'Q') {
+    if (!is_ball_channel(ch.name)) {
       if (!plan) plan = std::make_unique<SpectrumPlan>(x.size(), rate, window);
       Spectrum spectrum = (*plan)(x);
       ch.peaks = find_peaks(spectrum, names, c.output.peaks);

@@ -159,7 +159,7 @@ std::string sweep_csv(const std::vector<SweepAxis>& axes, const std::vector<Swee
   for (const auto& r : rows)
     if (r.ok) {
       for (const auto& ch : r.channels)
-        if (ch.name.front() != 'Q') channels.push_back(ch.name);
+        if (!is_ball_channel(ch.name)) channels.push_back(ch.name);
       break;
     }
   std::string out;

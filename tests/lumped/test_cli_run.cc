@@ -232,4 +232,38 @@ TEST(CliCalibrated, RunRecordsTheLawAndRepeatsFromCaseToml) {
   EXPECT_EQ(read(a / "response.csv"), read(e / "response.csv"));
 }
 
+// The quasi-static example (seed 000): the ring's and every ball's channels, and the quasi-static
+// solver's figures in summary.json.
+TEST(CliRun, QuasiStaticExampleWritesBallMotionAndSolverKeys) {
+  const fs::path d = fresh_dir("run_quasistatic");
+  const std::string example =
+      std::string(BEARING_SOURCE_DIR) + "/examples/seed000_608_quasistatic.toml";
+  ASSERT_EQ(sim("run " + example + " --out " + d.string() + kShort), 0);
+  const std::string csv = read(d / "response.csv");
+  EXPECT_EQ(csv.substr(0, csv.find('\n')),
+            "t,x,y,vx,vy,ax,ay,Q1,Q2,Q3,Q4,Q5,Q6,Q7,r1,r2,r3,r4,r5,r6,r7,"
+            "vr1,vr2,vr3,vr4,vr5,vr6,vr7");
+  EXPECT_EQ(std::count(csv.begin(), csv.end(), '\n'), 6002);
+  const std::string spec = read(d / "spectrum.csv");
+  EXPECT_EQ(spec.substr(0, spec.find('\n')), "frequency,x,y,vx,vy,ax,ay");
+  const auto j = nlohmann::json::parse(read(d / "summary.json"));
+  EXPECT_EQ(j["case"]["model"], "quasistatic");
+  EXPECT_EQ(j["solver"]["method"], "quasistatic newton");
+  EXPECT_EQ(j["solver"]["steps"], 6001);
+  for (const char* k : {"newton_iterations", "fallbacks", "max_relative_residual",
+                        "min_loaded_balls", "jumps", "minimum_load"})
+    EXPECT_TRUE(j["solver"][k].is_number()) << k;
+  EXPECT_LT(j["solver"]["max_relative_residual"].get<double>(), 1e-9);
+  EXPECT_GE(j["solver"]["min_loaded_balls"].get<int>(), 2);
+  EXPECT_TRUE(j["channels"]["vr1"]["rms"].is_number());
+  EXPECT_FALSE(j["peaks"].contains("vr1"));
+  EXPECT_TRUE(j["peaks"].contains("y"));
+  // Too light a load: a clear error, no files.
+  const fs::path bad = fresh_dir("run_quasistatic_light");
+  EXPECT_NE(
+      sim("run " + example + " --out " + bad.string() + kShort + " --set operation.load=[0,-5]"),
+      0);
+  EXPECT_FALSE(fs::exists(bad / "summary.json"));
+}
+
 }  // namespace

@@ -49,7 +49,8 @@ struct Excitations {
 
 /// Model choices.
 struct ModelOptions {
-  std::string kind = "2dof";  ///< "2dof" | "3dof"
+  std::string kind = "2dof";  ///< "2dof" | "3dof" | "quasistatic" (no integrator: [solver] method,
+                              ///< dt, tolerance unused)
   /// Contact law: a Hertz method "exact" | "hamrock-brewe" | "harris-table", or "calibrated"
   /// (the FE constants of `calibration`).
   std::string contact = "exact";
@@ -76,6 +77,7 @@ struct SolverOptions {
 /// What `run` writes besides the ring's channels.
 struct OutputOptions {
   bool ball_loads = false;      ///< add each ball's load Q1…QZ to response.csv
+  bool ball_motion = false;     ///< add each ball centre's radial r1…rZ [m] and vr1…vrZ [m/s]
   std::string window = "hann";  ///< spectrum window: "hann" | "flattop" | "rectangular"
   int peaks = 10;               ///< spectrum peaks listed per channel in summary.json
 };

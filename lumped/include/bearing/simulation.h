@@ -3,6 +3,7 @@
 // post-processing of that response into statistics, spectra and named peaks.
 
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -11,6 +12,7 @@
 #include "bearing/kinematics.h"
 #include "bearing/models/bearing_model.h"
 #include "bearing/models/model_inputs.h"
+#include "bearing/models/quasi_static.h"
 #include "bearing/signal/peaks.h"
 #include "bearing/signal/spectrum.h"
 #include "bearing/signal/statistics.h"
@@ -20,9 +22,11 @@ namespace bearing {
 
 /// Time series of a run, sampled at the case's output rate from t = 0.
 struct Response {
-  std::vector<std::string> channels;  ///< "x","y","vx","vy","ax","ay" (+ "z","vz","az"; "Q1"…)
-  std::vector<std::string> units;     ///< SI unit of each channel
-  std::vector<double> time;           ///< [s]
+  /// "x","y","vx","vy","ax","ay" (+ "z","vz","az"), then per ball "Q1"… (output.ball_loads),
+  /// "r1"…, "vr1"… (output.ball_motion)
+  std::vector<std::string> channels;
+  std::vector<std::string> units;           ///< SI unit of each channel
+  std::vector<double> time;                 ///< [s]
   std::vector<std::vector<double>> values;  ///< values[channel][sample], SI
   std::size_t first_steady = 0;             ///< first sample at or after solver.transient
 
@@ -36,7 +40,8 @@ struct Response {
 
 struct SimulationResult {
   Response response;
-  IntegrationStats stats;
+  IntegrationStats stats;                        ///< dynamic models; quasistatic: steps only
+  std::optional<QuasiStaticStats> quasi_static;  ///< quasistatic only
   ContactConstants contact;
   BearingFrequencies frequencies;  ///< with the loaded contact angle for a preloaded 3-DOF case
 };
@@ -44,10 +49,17 @@ struct SimulationResult {
 /// The model inputs a case describes (excitations resolved, contact constants computed).
 ModelInputs model_inputs(const Case& c);
 
-/// The model of `c.model.kind` ("2dof" or "3dof").
+/// The dynamic model of `c.model.kind` ("2dof" or "3dof"; InputError for "quasistatic", which
+/// make_quasi_static_model(model_inputs(c)) builds).
 std::unique_ptr<BearingModel> make_model(const Case& c);
 
-/// Runs the case. Throws InputError (bad settings) or SolverError (blow-up, no convergence).
+/// Whether a response channel belongs to one ball (Q1…, r1…, vr1…): statistics only, no spectrum
+/// or peaks (the ring's channels get those).
+bool is_ball_channel(const std::string& name);
+
+/// Runs the case: a dynamic model (2dof, 3dof) through the case's integrator, or the quasi-static
+/// equilibrium followed through the output times (solver.method, dt and tolerance unused). Throws
+/// InputError (bad settings) or SolverError (blow-up, no convergence).
 SimulationResult simulate(const Case& c, const Progress& progress = {});
 
 struct ChannelSummary {

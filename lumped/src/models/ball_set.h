@@ -130,6 +130,19 @@ class CurvatureComplianceTable {
     }
   }
 
+  /// dg/dΔ [m], the derivative of the same cubic Hermite interpolant.
+  double derivative(double d) const {
+    const double u = (d - first_) / h_;
+    const int last = static_cast<int>(y_.size()) - 2;
+    int i = static_cast<int>(std::floor(u));
+    i = std::min(std::max(i, 0), last);
+    const double t = u - i;
+    const double t2 = t * t;
+    return ((6 * t2 - 6 * t) * y_[i] + (3 * t2 - 4 * t + 1) * m_[i] +
+            (-6 * t2 + 6 * t) * y_[i + 1] + (3 * t2 - 2 * t) * m_[i + 1]) /
+           h_;
+  }
+
   /// g(Δ); exact at the nodes (1 at Δ = 0).
   double operator()(double d) const {
     const double u = (d - first_) / h_;
@@ -275,7 +288,59 @@ struct RaceStiffness {
   CurvatureComplianceTable table;
 
   double compliance(double pi_plus_pi2) const { return k0 * table(pi_plus_pi2 * minus_inv_r2); }
+  /// d(K^{−2/3})/dt for d(Π + Π'')/dt = `rate`.
+  double compliance_rate(double pi_plus_pi2, double rate) const {
+    return k0 * table.derivative(pi_plus_pi2 * minus_inv_r2) * rate * minus_inv_r2;
+  }
 };
+
+/// Π, Π', Π + Π'' and Π' + Π''' of one race at the race-fixed angle φ, by direct sums over the
+/// harmonics (for output instants; the hot loop uses RaceExcitation).
+struct ProfileDerivatives {
+  double profile = 0;     ///< Π [m]
+  double slope = 0;       ///< dΠ/dφ [m/rad]
+  double curv = 0;        ///< Π + Π'' [m] (TVDS curvature term)
+  double curv_slope = 0;  ///< Π' + Π''' [m/rad]
+};
+
+inline ProfileDerivatives profile_derivatives(const Waviness& w, double phi) {
+  ProfileDerivatives d;
+  for (const WavinessHarmonic& h : w.harmonics) {
+    const double N = h.order, a = N * phi + h.phase;
+    const double s = h.amplitude * std::sin(a), c = h.amplitude * std::cos(a);
+    d.profile += s;
+    d.slope += N * c;
+    d.curv += (1.0 - N * N) * s;
+    d.curv_slope += N * (1.0 - N * N) * c;
+  }
+  return d;
+}
+
+/// Time derivatives of the ball set at one instant and the outer race's share of it, for the
+/// output instants (libm per ball and harmonic: never in the hot loop).
+struct BallRates {
+  double excitation_rate[kMaxBalls];       ///< de_j/dt [m/s]
+  double stiffness_rate[kMaxBalls];        ///< dK_j/dt [N/(m^n s)] (0 unless TVDS)
+  double outer_profile[kMaxBalls];         ///< Π_o(θ_j) [m]
+  double outer_profile_rate[kMaxBalls];    ///< dΠ_o(θ_j)/dt [m/s]
+  double outer_stiffness[kMaxBalls];       ///< K_o,j of the ball on the outer race [N/m^n_o]
+  double outer_stiffness_rate[kMaxBalls];  ///< dK_o,j/dt (0 unless TVDS)
+};
+
+/// The ball centre's radial displacement from the pitch radius, r = δ_o − Π_o + ΔD/2 [m], and
+/// its rate [m/s], from the ball's load Q = K δ^n and its rate (see bearing_model.h for the
+/// definition): δ_o = (Q/K_o)^{1/n_o}, dδ_o/dt = δ_o/n_o · (dQ/dt / Q − dK_o/dt / K_o).
+inline void outer_ball_motion(double load, double load_rate, const BallRates& br, int j,
+                              double outer_exponent, double size_error, double& r, double& vr) {
+  double d_o = 0, d_o_rate = 0;
+  if (load > 0) {
+    const double Ko = br.outer_stiffness[j];
+    d_o = std::pow(load / Ko, 1.0 / outer_exponent);
+    d_o_rate = d_o / outer_exponent * (load_rate / load - br.outer_stiffness_rate[j] / Ko);
+  }
+  r = d_o - br.outer_profile[j] + 0.5 * size_error;
+  vr = d_o_rate - br.outer_profile_rate[j];
+}
 
 inline void require_finite(double v, const std::string& key, const char* what) {
   if (!std::isfinite(v)) throw InputError(key + " = " + format_number(v) + ": " + what);
@@ -344,7 +409,12 @@ class BallSet {
         // Only the inner-race waviness and the unbalance turn with the shaft.
         needs_shaft_(!in.inner_waviness.empty() || in.unbalance != 0.0),
         K_(in.contact.K),
-        exponent_(in.contact.exponent) {
+        exponent_(in.contact.exponent),
+        cage_phase_(in.cage_phase),
+        outer_K_(in.contact.outer.K),
+        outer_exponent_(in.contact.outer.exponent),
+        inner_waviness_(in.inner_waviness),
+        outer_waviness_(in.outer_waviness) {
     const int Z = balls_;
     base_cos_.resize(Z);
     base_sin_.resize(Z);
@@ -376,6 +446,39 @@ class BallSet {
   double K() const { return K_; }
   double exponent() const { return exponent_; }
   bool tvds() const { return inner_stiffness_.varies || outer_stiffness_.varies; }
+  /// Load–deflection exponent n_o of a ball on the outer race [-].
+  double outer_exponent() const { return outer_exponent_; }
+  /// ΔD_j = D − D_j [m].
+  double size_error(int j) const { return size_error_[j]; }
+
+  /// Fills `br` for time t [s]: with φ_o = θ_j (dφ_o/dt = ω_c) and φ_i = θ_j − ω_i t
+  /// (dφ_i/dt = ω_c − ω_i), de_j/dt = Π_i'(φ_i)(ω_c − ω_i) + Π_o'(φ_o) ω_c; with TVDS,
+  /// K_j = (c_i + c_o)^{−3/2} (c = K_race^{−2/3}) gives dK_j/dt = −(3/2) K_j (ċ_i + ċ_o)/(c_i +
+  /// c_o).
+  void rates(double t, BallRates& br) const {
+    const double wo = cage_speed_, wi = cage_speed_ - inner_speed_;
+    for (int j = 0; j < balls_; ++j) {
+      const double theta = cage_phase_ + kTwoPi * j / balls_ + cage_speed_ * t;
+      const ProfileDerivatives o = profile_derivatives(outer_waviness_, theta);
+      const ProfileDerivatives i = profile_derivatives(inner_waviness_, theta - inner_speed_ * t);
+      br.excitation_rate[j] = i.slope * wi + o.slope * wo;
+      br.outer_profile[j] = o.profile;
+      br.outer_profile_rate[j] = o.slope * wo;
+      br.stiffness_rate[j] = 0.0;
+      br.outer_stiffness[j] = outer_K_;
+      br.outer_stiffness_rate[j] = 0.0;
+      if (!tvds()) continue;
+      const RaceStiffness &ri = inner_stiffness_, &ro = outer_stiffness_;
+      const double ci = ri.varies ? ri.compliance(i.curv) : ri.k0;
+      const double co = ro.varies ? ro.compliance(o.curv) : ro.k0;
+      const double ci_rate = ri.varies ? ri.compliance_rate(i.curv, i.curv_slope * wi) : 0.0;
+      const double co_rate = ro.varies ? ro.compliance_rate(o.curv, o.curv_slope * wo) : 0.0;
+      const double K = 1.0 / ((ci + co) * std::sqrt(ci + co));
+      br.stiffness_rate[j] = -1.5 * K * (ci_rate + co_rate) / (ci + co);
+      br.outer_stiffness[j] = 1.0 / (co * std::sqrt(co));
+      br.outer_stiffness_rate[j] = -1.5 * br.outer_stiffness[j] * co_rate / co;
+    }
+  }
 
   /// The frame at time t [s], memoised per thread for the last (ball set, t). RK4 evaluates twice
   /// at t + h/2 and starts each step at the previous step's end time, so half its force calls
@@ -516,10 +619,37 @@ class BallSet {
   bool needs_shaft_;
   double K_;
   double exponent_;
+  double cage_phase_;
+  double outer_K_;
+  double outer_exponent_;
+  Waviness inner_waviness_, outer_waviness_;  // for rates(): direct sums
   std::vector<double> base_cos_, base_sin_, size_error_;
   std::vector<double> table_cos_, table_sin_;
   RaceExcitation inner_, outer_;
   RaceStiffness inner_stiffness_, outer_stiffness_;
 };
+
+/// The radial ball motion (bearing_model.h) of the 2-DOF geometry, δ_j = x cos θ_j + y sin θ_j −
+/// γ + e_j, at (t, q = (x, y), v = (ẋ, ẏ)): dδ_j/dt = v·(cos θ_j, sin θ_j) + ω_c (−x sin θ_j +
+/// y cos θ_j) + de_j/dt, dQ_j/dt = n K_j δ_j^{n−1} dδ_j/dt + dK_j/dt δ_j^n.
+inline void radial_ball_motion(const BallSet& set, double gap, double t, const double* q,
+                               const double* v, double* r, double* vr) {
+  BallFrame fr;
+  set.evaluate(t, fr);
+  BallRates br;
+  set.rates(t, br);
+  const double n = set.exponent(), wc = set.cage_speed();
+  for (int j = 0; j < set.balls(); ++j) {
+    const double c = fr.cos_theta[j], s = fr.sin_theta[j];
+    const double delta = q[0] * c + q[1] * s - gap + fr.excitation[j];
+    double Q = 0, Q_rate = 0;
+    if (delta > 0) {
+      const double rate = v[0] * c + v[1] * s + wc * (q[1] * c - q[0] * s) + br.excitation_rate[j];
+      Q = contact_load(fr.stiffness[j], n, delta);
+      Q_rate = n * Q / delta * rate + br.stiffness_rate[j] * std::pow(delta, n);
+    }
+    outer_ball_motion(Q, Q_rate, br, j, set.outer_exponent(), set.size_error(j), r[j], vr[j]);
+  }
+}
 
 }  // namespace bearing::detail

@@ -201,6 +201,41 @@ class ThreeDofModel final : public BearingModel {
         t, [&](int j, const detail::BallFrame& fr) { return ball_approach(q, fr, j); }, loads);
   }
 
+  // r_j = δ_o,j cos α_j − Π_o + ΔD_j/2 (bearing_model.h). With ρ_j = x cos θ_j + y sin θ_j + e_j,
+  // L = sqrt((w₀ + z)² + (u₀ + ρ)²): dδ/dt = dL/dt = [(u₀ + ρ) dρ/dt + (w₀ + z) ż]/L and
+  // d(cos α)/dt = [dρ/dt − cos α dL/dt]/L. An unloaded ball has no outer approach: r = −Π_o + ΔD/2.
+  void ball_motion(double t, const double* q, const double* v, double* r,
+                   double* vr) const override {
+    detail::BallFrame fr;
+    set_.evaluate(t, fr);
+    detail::BallRates br;
+    set_.rates(t, br);
+    const double n = set_.exponent(), wc = set_.cage_speed();
+    const double w = geometry_.w0 + q[2];
+    for (int j = 0; j < set_.balls(); ++j) {
+      const double c = fr.cos_theta[j], s = fr.sin_theta[j];
+      const double rho = q[0] * c + q[1] * s + fr.excitation[j];
+      double L;
+      const double delta = approach(geometry_, rho, q[2], L);
+      double Q = 0, Q_rate = 0, ca = 1, ca_rate = 0;
+      if (delta > 0) {
+        const double rho_rate =
+            v[0] * c + v[1] * s + wc * (q[1] * c - q[0] * s) + br.excitation_rate[j];
+        const double a = geometry_.u0 + rho;
+        const double L_rate = (a * rho_rate + w * v[2]) / L;
+        ca = a / L;
+        ca_rate = (rho_rate - ca * L_rate) / L;
+        Q = detail::contact_load(fr.stiffness[j], n, delta);
+        Q_rate = n * Q / delta * L_rate + br.stiffness_rate[j] * std::pow(delta, n);
+      }
+      double ro, vro;
+      detail::outer_ball_motion(Q, Q_rate, br, j, set_.outer_exponent(), 0.0, ro, vro);
+      const double d_o = ro + br.outer_profile[j], d_o_rate = vro + br.outer_profile_rate[j];
+      r[j] = d_o * ca - br.outer_profile[j] + 0.5 * set_.size_error(j);
+      vr[j] = d_o_rate * ca + d_o * ca_rate - br.outer_profile_rate[j];
+    }
+  }
+
   double potential_energy(double t, const double* q) const override {
     return set_.potential_energy(
         t, [&](int j, const detail::BallFrame& fr) { return ball_approach(q, fr, j); });
