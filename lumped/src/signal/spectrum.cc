@@ -1,9 +1,6 @@
-// Amplitude spectrum through GSL's mixed-radix real FFT (MODEL.md §7).
+// Amplitude spectrum through the real FFT of fft.h (MODEL.md §7).
 
 #include "bearing/signal/spectrum.h"
-
-#include <gsl/gsl_fft_complex.h>
-#include <gsl/gsl_fft_real.h>
 
 #include <algorithm>
 #include <array>
@@ -17,6 +14,7 @@
 
 #include "../edit_distance.h"
 #include "bearing/errors.h"
+#include "bearing/signal/fft.h"
 #include "bearing/units.h"
 
 namespace bearing {
@@ -66,151 +64,7 @@ std::vector<double> window_values(Window window, std::size_t n) {
   return std::vector<double>(n, 1.0);
 }
 
-// The GSL FFT tables, freed however the call ends.
-struct WavetableFree {
-  void operator()(gsl_fft_real_wavetable* p) const { gsl_fft_real_wavetable_free(p); }
-};
-struct WorkspaceFree {
-  void operator()(gsl_fft_real_workspace* p) const { gsl_fft_real_workspace_free(p); }
-};
-
-// Above this largest prime factor of N, GSL's mixed-radix FFT falls back on an O(N·p) generic
-// pass (O(N²) for prime N: 0.55 s at N = 24001), so Bluestein's algorithm is used instead.
-constexpr std::size_t kLargestMixedRadixFactor = 64;
-
-std::size_t largest_prime_factor(std::size_t n) {
-  std::size_t largest = 1;
-  for (std::size_t p = 2; p * p <= n; ++p)
-    while (n % p == 0) largest = p, n /= p;
-  return n > 1 ? n : largest;
-}
-
-struct ComplexWavetableFree {
-  void operator()(gsl_fft_complex_wavetable* p) const { gsl_fft_complex_wavetable_free(p); }
-};
-struct ComplexWorkspaceFree {
-  void operator()(gsl_fft_complex_workspace* p) const { gsl_fft_complex_workspace_free(p); }
-};
-
-// Smallest M ≥ n whose prime factors are 2, 3 and 5 (GSL's fast radices).
-std::size_t smooth_length(std::size_t n) {
-  std::size_t best = 1;
-  while (best < n) best *= 2;
-  for (std::size_t p5 = 1; p5 < best; p5 *= 5)
-    for (std::size_t p35 = p5; p35 < best; p35 *= 3) {
-      std::size_t m = p35;
-      while (m < n) m *= 2;
-      best = std::min(best, m);
-    }
-  return best;
-}
-
-[[noreturn]] void no_tables(std::size_t n) {
-  throw SolverError("amplitude spectrum: GSL could not allocate FFT tables for " +
-                    std::to_string(n) + " points");
-}
-
 }  // namespace
-
-// X_0 … X_{⌊N/2⌋} of real data of one length N. GSL's mixed-radix real FFT when N's prime
-// factors are small; otherwise Bluestein's chirp z-transform: with c_n = exp(iπn²/N),
-// nk = (n² + k² − (k−n)²)/2 turns the DFT into X_k = c̄_k Σ_n (x_n c̄_n) c_{k−n}, a circular
-// convolution done with complex FFTs of a length M ≥ 2N − 1 with factors 2, 3, 5 only. O(N log N)
-// for any N; the bins are still those of length N (no padding of x). The tables (and, for
-// Bluestein, the chirp and its transform) depend on N only and are built once.
-class SpectrumPlan::Dft {
- public:
-  explicit Dft(std::size_t n) : n_(n) {
-    if (largest_prime_factor(n) <= kLargestMixedRadixFactor) {
-      real_table_.reset(gsl_fft_real_wavetable_alloc(n));
-      real_work_.reset(gsl_fft_real_workspace_alloc(n));
-      if (!real_table_ || !real_work_) no_tables(n);
-      return;
-    }
-    m_ = smooth_length(2 * n - 1);
-    // n² mod 2N in integers keeps the chirp phase exact for large n.
-    chirp_.resize(n);
-    const std::uint64_t period = 2 * static_cast<std::uint64_t>(n);
-    for (std::size_t j = 0; j < n; ++j) {
-      const std::uint64_t r = (static_cast<std::uint64_t>(j) * j) % period;
-      chirp_[j] = std::polar(1.0, kTwoPi * 0.5 * static_cast<double>(r) / static_cast<double>(n));
-    }
-    complex_table_.reset(gsl_fft_complex_wavetable_alloc(m_));
-    complex_work_.reset(gsl_fft_complex_workspace_alloc(m_));
-    if (!complex_table_ || !complex_work_) no_tables(m_);
-    // The chirp's transform, packed complex (re, im, …); c_{−j} = c_j sits at M − j.
-    chirp_transform_.assign(2 * m_, 0.0);
-    for (std::size_t j = 0; j < n; ++j) {
-      chirp_transform_[2 * j] = chirp_[j].real();
-      chirp_transform_[2 * j + 1] = chirp_[j].imag();
-      if (j > 0) {
-        chirp_transform_[2 * (m_ - j)] = chirp_[j].real();
-        chirp_transform_[2 * (m_ - j) + 1] = chirp_[j].imag();
-      }
-    }
-    complex_transform(chirp_transform_, gsl_fft_forward);
-  }
-
-  /// The bins of `data` (length N; overwritten).
-  std::vector<std::complex<double>> operator()(std::vector<double>& data) {
-    return real_table_ ? mixed_radix(data) : bluestein(data);
-  }
-
- private:
-  // Unpacked from GSL's half-complex layout: data[0] = Re X_0; data[2k−1], data[2k] = Re, Im X_k;
-  // for even N the last element is Re X_{N/2}.
-  std::vector<std::complex<double>> mixed_radix(std::vector<double>& data) {
-    if (gsl_fft_real_transform(data.data(), 1, n_, real_table_.get(), real_work_.get()) != 0)
-      throw SolverError("amplitude spectrum: GSL real FFT failed for " + std::to_string(n_) +
-                        " samples");
-    std::vector<std::complex<double>> X(n_ / 2 + 1);
-    X[0] = data[0];
-    for (std::size_t k = 1; 2 * k < n_; ++k) X[k] = {data[2 * k - 1], data[2 * k]};
-    if (n_ % 2 == 0) X[n_ / 2] = data[n_ - 1];
-    return X;
-  }
-
-  std::vector<std::complex<double>> bluestein(const std::vector<double>& x) {
-    std::vector<double> a(2 * m_, 0.0);
-    for (std::size_t j = 0; j < n_; ++j) {
-      const std::complex<double> v = x[j] * std::conj(chirp_[j]);
-      a[2 * j] = v.real();
-      a[2 * j + 1] = v.imag();
-    }
-    complex_transform(a, gsl_fft_forward);
-    const std::vector<double>& b = chirp_transform_;
-    for (std::size_t j = 0; j < m_; ++j) {
-      const std::complex<double> p = std::complex<double>(a[2 * j], a[2 * j + 1]) *
-                                     std::complex<double>(b[2 * j], b[2 * j + 1]);
-      a[2 * j] = p.real();
-      a[2 * j + 1] = p.imag();
-    }
-    complex_transform(a, gsl_fft_backward);  // unscaled: the 1/M is applied below
-    const double inverse_scale = 1.0 / static_cast<double>(m_);
-    std::vector<std::complex<double>> X(n_ / 2 + 1);
-    for (std::size_t k = 0; k < X.size(); ++k)
-      X[k] = inverse_scale * std::conj(chirp_[k]) * std::complex<double>(a[2 * k], a[2 * k + 1]);
-    return X;
-  }
-
-  void complex_transform(std::vector<double>& packed, gsl_fft_direction sign) {
-    if (gsl_fft_complex_transform(packed.data(), 1, m_, complex_table_.get(), complex_work_.get(),
-                                  sign) != 0)
-      throw SolverError("amplitude spectrum: GSL complex FFT failed for " + std::to_string(m_) +
-                        " points");
-  }
-
-  std::size_t n_;
-  std::unique_ptr<gsl_fft_real_wavetable, WavetableFree> real_table_;
-  std::unique_ptr<gsl_fft_real_workspace, WorkspaceFree> real_work_;
-  std::size_t m_ = 0;  // Bluestein: convolution length
-  std::vector<std::complex<double>> chirp_;
-  std::vector<double> chirp_transform_;
-  std::unique_ptr<gsl_fft_complex_wavetable, ComplexWavetableFree> complex_table_;
-  std::unique_ptr<gsl_fft_complex_workspace, ComplexWorkspaceFree> complex_work_;
-};
-
-namespace {}  // namespace
 
 Window parse_window(std::string_view name, const std::string& key) {
   for (const WindowName& w : kWindows)
@@ -244,7 +98,7 @@ SpectrumPlan::SpectrumPlan(std::size_t n, double sample_rate, Window window)
                      " Hz: must be positive and finite");
   window_ = window_values(window, n);
   for (double w : window_) window_sum_ += w;
-  dft_ = std::make_unique<Dft>(n);
+  dft_ = std::make_unique<RealFft>(n);
 }
 
 SpectrumPlan::~SpectrumPlan() = default;
@@ -274,7 +128,7 @@ Spectrum SpectrumPlan::operator()(const std::vector<double>& x) {
 
   std::vector<double> data(n);
   for (std::size_t i = 0; i < n; ++i) data[i] = window_[i] * (x[i] / scale - mean);
-  const std::vector<std::complex<double>> X = (*dft_)(data);
+  const std::vector<std::complex<double>> X = dft_->forward(data);
 
   const std::size_t bins = n / 2 + 1;
   Spectrum s;

@@ -8,6 +8,8 @@
 #include <string_view>
 #include <vector>
 
+#include "bearing/signal/fft.h"
+
 namespace bearing {
 
 /// Window applied before the FFT. All three are periodic (DFT-even: w_j for j = 0 … N−1 with
@@ -50,10 +52,8 @@ struct Spectrum {
 /// a non-whole number of periods has a sample mean of its own (at most A/(π·periods)); removing it
 /// leaves that constant, spread by the window over bins 0 … h.
 ///
-/// The DFT is GSL's mixed-radix real FFT when every prime factor of N is at most 64; otherwise
-/// (e.g. prime N, where GSL's generic pass is O(N²): 0.55 s at N = 24001) Bluestein's algorithm on
-/// GSL's complex FFT of a 2-3-5-smooth length ≥ 2N − 1. So any N costs O(N log N): about 1 ms for
-/// N = 24000 and 5 ms for the prime 24001. The FFT tables are local to the call (thread-safe); for
+/// The DFT is RealFft (fft.h): O(N log N) for any N, about 1 ms for N = 24000 and 5 ms for the
+/// prime 24001. The FFT tables are local to the call (thread-safe); for
 /// several channels of one length, SpectrumPlan builds them (and the window) once.
 /// Throws InputError if N < 2, a sample is NaN or infinite, or sample_rate is not positive and
 /// finite.
@@ -76,12 +76,11 @@ class SpectrumPlan {
   Spectrum operator()(const std::vector<double>& x);
 
  private:
-  class Dft;  // GSL tables and scratch (spectrum.cc)
   std::size_t n_;
   double sample_rate_;
   std::vector<double> window_;
   double window_sum_ = 0;  // N × coherent gain
-  std::unique_ptr<Dft> dft_;
+  std::unique_ptr<RealFft> dft_;
 };
 
 }  // namespace bearing
