@@ -1,0 +1,29 @@
+#pragma once
+// Where the microphones are, and where each source is as seen from one (MODEL.md §8: distances
+// and angles from each source, not from the bearing centre).
+
+#include <vector>
+
+#include <Eigen/Dense>
+
+#include "bearing/acoustics/pressure.h"
+#include "bearing/case_file.h"
+
+namespace bearing {
+
+/// Position (x, y) of a microphone in the fixed frame, origin at the bearing centre [m].
+Eigen::Vector2d microphone_position(const Microphone& microphone);
+
+/// A ball's centre seen from the point `at` [m]: at sample n the ball is at angle
+/// θ_n = theta0 + cage_speed · times[n] [rad] on the circle of radius pitch_radius + radial[n]
+/// [m], vibrating along its radius e(θ_n) = (cos θ_n, sin θ_n). Distances [m] and cos ψ between
+/// e(θ_n) and the direction from the ball to the point.
+SourcePath ball_path(const Eigen::Vector2d& at, double pitch_radius, double theta0,
+                     double cage_speed, const std::vector<double>& times,
+                     const std::vector<double>& radial);
+
+/// The radii [inner, outer] of the annulus the balls sweep, (d_m − D)/2 … (d_m + D)/2 [m]: a
+/// microphone there would be inside a ball whenever one passes.
+Eigen::Vector2d ball_annulus(const Bearing& bearing);
+
+}  // namespace bearing

@@ -1,0 +1,205 @@
+// Time-domain sound pressure from velocity records (pressure.h).
+
+#include "bearing/acoustics/pressure.h"
+
+#include <gsl/gsl_sf_bessel.h>
+
+#include <algorithm>
+#include <cmath>
+#include <complex>
+#include <string>
+
+#include "bearing/errors.h"
+#include "bearing/units.h"
+
+namespace bearing {
+
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+
+// Windowed-sinc interpolation: 2·kHalfWidth taps, Kaiser β for an 80 dB stopband (Kaiser's
+// formula β = 0.1102 (A − 8.7)); the kernel is tabulated at kPhases fractional positions per
+// sample and interpolated linearly between them (error ~(π/kPhases)²/8 per tap).
+constexpr int kHalfWidth = 16;
+constexpr int kPhases = 2048;
+constexpr double kKaiserBeta = 0.1102 * (80.0 - 8.7);
+
+double kernel(double u) {
+  const double t = u / kHalfWidth;
+  if (std::fabs(t) >= 1) return 0.0;
+  const double sinc = u == 0 ? 1.0 : std::sin(kPi * u) / (kPi * u);
+  return sinc * gsl_sf_bessel_I0(kKaiserBeta * std::sqrt(1 - t * t)) /
+         gsl_sf_bessel_I0(kKaiserBeta);
+}
+
+void check_record(const std::vector<double>& velocity, double rate, const RealFft& fft) {
+  if (velocity.size() != fft.size() + 1)
+    throw InputError("sound pressure: a velocity record of " + std::to_string(velocity.size()) +
+                     " samples given to an FFT of " + std::to_string(fft.size()) +
+                     " (it needs N + 1: the record and the sample after it)");
+  if (!(std::isfinite(rate) && rate > 0))
+    throw InputError("sound pressure: sample rate = " + format_number(rate) +
+                     " Hz: must be positive and finite");
+  for (std::size_t i = 0; i < velocity.size(); ++i)
+    if (!std::isfinite(velocity[i]))
+      throw InputError("sound pressure: velocity sample " + std::to_string(i) + " = " +
+                       format_number(velocity[i]) + ": every sample must be finite");
+}
+
+// The record u_0 … u_{N−1} less its trend β t_n, t_n = n/rate, β = (u_N − u_0)·rate/N [m/s²]:
+// periodic without a jump. Returns the DFT of the detrended record and β.
+struct Detrended {
+  std::vector<std::complex<double>> spectrum;
+  double slope = 0;
+};
+Detrended detrend(const std::vector<double>& velocity, double rate, RealFft& fft) {
+  const std::size_t n = fft.size();
+  const double jump = velocity[n] - velocity[0];
+  std::vector<double> u(n);
+  for (std::size_t i = 0; i < n; ++i)
+    u[i] = velocity[i] - jump * static_cast<double>(i) / static_cast<double>(n);
+  Detrended d;
+  d.spectrum = fft.forward(u);
+  d.slope = jump * rate / static_cast<double>(n);
+  return d;
+}
+
+double angular_frequency(std::size_t k, double rate, std::size_t n) {
+  return 2 * kPi * static_cast<double>(k) * rate / static_cast<double>(n);
+}
+
+// The spectrum of the record times `gain(ω_k)` within the band, back in time. DC is zero (no body
+// radiates a steady velocity); so is every bin above kPressureBandFraction of Nyquist.
+template <class Gain>
+std::vector<double> filter(const std::vector<std::complex<double>>& U, double rate, RealFft& fft,
+                           const Gain& gain) {
+  const std::size_t n = fft.size();
+  std::vector<std::complex<double>> P(U.size());
+  for (std::size_t k = 1; k < U.size(); ++k)
+    if (2 * static_cast<double>(k) <= kPressureBandFraction * static_cast<double>(n))
+      P[k] = gain(angular_frequency(k, rate, n)) * U[k];
+  return fft.inverse(P);
+}
+
+}  // namespace
+
+PeriodicInterpolator::PeriodicInterpolator() {
+  const int taps = 2 * kHalfWidth;
+  table_.resize(static_cast<std::size_t>((kPhases + 1) * taps));
+  for (int p = 0; p <= kPhases; ++p) {
+    const double f = static_cast<double>(p) / kPhases;
+    for (int l = -kHalfWidth + 1; l <= kHalfWidth; ++l)
+      table_[static_cast<std::size_t>(p * taps + l + kHalfWidth - 1)] = kernel(f - l);
+  }
+}
+
+double PeriodicInterpolator::operator()(const std::vector<double>& x, double s) const {
+  const auto n = static_cast<long>(x.size());
+  const double floor_s = std::floor(s);
+  const double phase = (s - floor_s) * kPhases;
+  const int p = std::min(static_cast<int>(phase), kPhases - 1);
+  const double w = phase - p;
+  const int taps = 2 * kHalfWidth;
+  const double* k0 = &table_[static_cast<std::size_t>(p * taps)];
+  const double* k1 = k0 + taps;
+  long i = (static_cast<long>(floor_s) - kHalfWidth + 1) % n;
+  if (i < 0) i += n;
+  double sum = 0;
+  for (int t = 0; t < taps; ++t) {
+    sum += x[static_cast<std::size_t>(i)] * ((1 - w) * k0[t] + w * k1[t]);
+    if (++i == n) i = 0;
+  }
+  return sum;
+}
+
+std::vector<double> radiate_fixed(const AcousticSource& source, const std::vector<double>& velocity,
+                                  double rate, double r, double cos_angle, RealFft& fft) {
+  check_record(velocity, rate, fft);
+  source.transfer(1.0, r, cos_angle);  // checks the geometry once, with its message
+  const Detrended d = detrend(velocity, rate, fft);
+  std::vector<double> p = filter(
+      d.spectrum, rate, fft, [&](double omega) { return source.transfer(omega, r, cos_angle); });
+  const double ramp = d.slope * source.ramp_pressure(r, cos_angle);
+  for (double& v : p) v += ramp;
+  return p;
+}
+
+std::vector<double> radiate_moving(const RadialSeriesSource& source,
+                                   const std::vector<double>& velocity, double rate,
+                                   const SourcePath& path, RealFft& fft) {
+  check_record(velocity, rate, fft);
+  const std::size_t n = fft.size();
+  if (path.distance.size() != n || path.cos_angle.size() != n)
+    throw InputError("sound pressure: the source path has " + std::to_string(path.distance.size()) +
+                     " distances and " + std::to_string(path.cos_angle.size()) +
+                     " angles for a record of " + std::to_string(n) + " samples");
+  const double a = source.radius();
+  for (std::size_t i = 0; i < n; ++i)
+    if (!(std::isfinite(path.distance[i]) && path.distance[i] >= a &&
+          std::isfinite(path.cos_angle[i])))
+      throw InputError("sound pressure: at sample " + std::to_string(i) + " the point is " +
+                       format_number(path.distance[i]) + " m from the centre of " +
+                       std::string(source.name()) + " of radius " + format_number(a) +
+                       " m: it must lie outside the body");
+
+  const Detrended d = detrend(velocity, rate, fft);
+  const std::vector<int> powers = source.powers();
+  std::vector<std::vector<double>> q;
+  std::vector<double> ramp;
+  for (std::size_t m = 0; m < powers.size(); ++m) {
+    q.push_back(
+        filter(d.spectrum, rate, fft, [&](double omega) { return source.factor(m, omega); }));
+    ramp.push_back(d.slope * source.ramp_factor(m));
+  }
+
+  const PeriodicInterpolator at;
+  const bool breathing = source.pattern() == Pattern::breathing;
+  const double samples_per_metre = source.delayed() ? rate / source.air().sound_speed : 0.0;
+  std::vector<double> p(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    const double r = path.distance[i];
+    const double s = static_cast<double>(i) - (r - a) * samples_per_metre;
+    double sum = 0;
+    for (std::size_t m = 0; m < powers.size(); ++m)
+      sum += std::pow(a / r, powers[m]) *
+             ((s == static_cast<double>(i) ? q[m][i] : at(q[m], s)) + ramp[m]);
+    p[i] = (breathing ? 1.0 : path.cos_angle[i]) * sum;
+  }
+  return p;
+}
+
+Summation parse_summation(const std::string& name, const std::string& key) {
+  if (name == "coherent") return Summation::coherent;
+  if (name == "energetic") return Summation::energetic;
+  throw InputError(key + " = \"" + name + "\": allowed: \"coherent\", \"energetic\"");
+}
+
+std::vector<double> sum_pressures(const std::vector<std::vector<double>>& pressures,
+                                  Summation summation) {
+  if (pressures.empty()) return {};
+  const std::size_t n = pressures.front().size();
+  std::vector<double> total(n, 0.0);
+  for (const auto& p : pressures) {
+    if (p.size() != n)
+      throw InputError("sound pressure: records of " + std::to_string(n) + " and " +
+                       std::to_string(p.size()) + " samples cannot be summed");
+    for (std::size_t i = 0; i < n; ++i)
+      total[i] += summation == Summation::coherent ? p[i] : p[i] * p[i];
+  }
+  if (summation == Summation::energetic)
+    for (double& v : total) v = std::sqrt(v);
+  return total;
+}
+
+double root_mean_square(const std::vector<double>& x) {
+  if (x.empty()) return 0.0;
+  double largest = 0;
+  for (double v : x) largest = std::max(largest, std::fabs(v));
+  if (largest == 0 || !std::isfinite(largest)) return largest;
+  double sum = 0;
+  for (double v : x) sum += (v / largest) * (v / largest);
+  return largest * std::sqrt(sum / static_cast<double>(x.size()));
+}
+
+}  // namespace bearing
