@@ -744,6 +744,25 @@ Case resolve(const toml::table& doc, const std::string& source, const std::strin
             Dimension::density, "must lie in (0, 20000 kg/m^3]");
     require(ac.sound_speed > 0 && ac.sound_speed <= 1e4, "acoustics.sound_speed", ac.sound_speed,
             Dimension::velocity, "must lie in (0, 10000 m/s]");
+    // A microphone must lie outside every source: outside the ring, and outside the annulus the
+    // balls sweep (its radii move by the micrometres of the run; bearing_noise checks again).
+    const double swept_in = 0.5 * (b.pitch_diameter - b.ball_diameter);
+    const double swept_out = 0.5 * (b.pitch_diameter + b.ball_diameter);
+    for (std::size_t i = 0; i < ac.microphones.size(); ++i) {
+      const double r = ac.microphones[i].radius;
+      const std::string key = "acoustics.microphones[" + std::to_string(i) + "] r";
+      if (ac.ring_source != "none")
+        require(r > ac.ring_radius, key, r, Dimension::length,
+                "inside the ring source (acoustics.ring_radius = " +
+                    fmt_si(ac.ring_radius, Dimension::length) +
+                    "): a microphone must lie outside it");
+      if (ac.ball_source != "none")
+        require(r < swept_in || r > swept_out, key, r, Dimension::length,
+                "inside the annulus the balls sweep, " + fmt_si(swept_in, Dimension::length) +
+                    " … " + fmt_si(swept_out, Dimension::length) +
+                    " ((d_m ∓ D)/2): a ball would pass through the microphone; move it, or set "
+                    "acoustics.ball_source = \"none\"");
+    }
     if (ac.ring_source == "none" && ac.ball_source == "none")
       throw InputError(
           "acoustics: ring_source and ball_source are both \"none\": nothing radiates; choose a "

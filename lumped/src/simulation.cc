@@ -75,6 +75,12 @@ BearingFrequencies run_frequencies(const Case& c) {
   return bearing_frequencies(b, c.operation.speed);
 }
 
+// The ball-motion channels are written when asked for, and when the acoustics needs them (the
+// balls as sound sources).
+bool wants_ball_motion(const Case& c) {
+  return c.output.ball_motion || (c.acoustics.enabled && c.acoustics.ball_source != "none");
+}
+
 // The channels of a run: the DOFs, their velocities and accelerations, then Q1..QZ
 // (output.ball_loads), r1..rZ and vr1..vrZ (output.ball_motion); and the output times k / rate
 // (the sample count from the duration, rounded to whole samples).
@@ -87,7 +93,7 @@ void lay_out(const Case& c, const std::vector<std::string>& dofs, int Z, Respons
       out.channels.push_back(stem + std::to_string(j + 1)), out.units.push_back(unit);
   };
   if (c.output.ball_loads) per_ball("Q", "N");
-  if (c.output.ball_motion) per_ball("r", "m"), per_ball("vr", "m/s");
+  if (wants_ball_motion(c)) per_ball("r", "m"), per_ball("vr", "m/s");
   const auto samples =
       static_cast<std::size_t>(std::floor(c.solver.duration * c.solver.output_rate + 1e-9)) + 1;
   out.time.resize(samples);
@@ -104,7 +110,7 @@ void store_balls(const Case& c, std::size_t first, std::size_t k, int Z, const d
   std::size_t i = first;
   if (c.output.ball_loads)
     for (int j = 0; j < Z; ++j) out.values[i++][k] = loads[j];
-  if (c.output.ball_motion) {
+  if (wants_ball_motion(c)) {
     for (int j = 0; j < Z; ++j) out.values[i++][k] = r[j];
     for (int j = 0; j < Z; ++j) out.values[i++][k] = vr[j];
   }
@@ -144,7 +150,7 @@ void run_dynamic(const Case& c, const Progress& progress, SimulationResult& r) {
       out.values[static_cast<std::size_t>(2 * n + i)][k] = a[i];
     }
     if (c.output.ball_loads) model->ball_loads(t, q, loads.data());
-    if (c.output.ball_motion) model->ball_motion(t, q, v, rb.data(), vrb.data());
+    if (wants_ball_motion(c)) model->ball_motion(t, q, v, rb.data(), vrb.data());
     store_balls(c, static_cast<std::size_t>(3 * n), k, Z, loads.data(), rb.data(), vrb.data(), out);
     ++k;
   };
@@ -171,7 +177,7 @@ void run_quasi_static(const Case& c, const Progress& progress, SimulationResult&
       out.values[static_cast<std::size_t>(2 + i)][k] = pt.velocity[i];
     }
     if (c.output.ball_loads) model->ball_loads(pt.t, pt.position, loads.data());
-    if (c.output.ball_motion) model->ball_motion(pt, rb.data(), vrb.data());
+    if (wants_ball_motion(c)) model->ball_motion(pt, rb.data(), vrb.data());
     store_balls(c, 6, k, Z, loads.data(), rb.data(), vrb.data(), out);
     ++k;
   };
@@ -234,6 +240,8 @@ RunSummary summarize(const Case& c, const SimulationResult& result) {
     }
     s.channels.push_back(std::move(ch));
   }
+  if (c.acoustics.enabled)
+    s.noise = bearing_noise(c, resp, 2 * 3.14159265358979323846 * result.frequencies.ftf);
   return s;
 }
 

@@ -133,7 +133,9 @@ std::vector<SweepRow> run_sweep(const std::function<Case(const std::vector<Overr
       try {
         const Case c = load(points[i].overrides);
         const SimulationResult r = simulate(c);
-        row.channels = summarize(c, r).channels;
+        RunSummary summary = summarize(c, r);
+        row.channels = std::move(summary.channels);
+        if (summary.noise) row.microphones = std::move(summary.noise->microphones);
         row.ok = true;
       } catch (const std::exception& e) {
         row.ok = false;
@@ -156,10 +158,12 @@ std::vector<SweepRow> run_sweep(const std::function<Case(const std::vector<Overr
 
 std::string sweep_csv(const std::vector<SweepAxis>& axes, const std::vector<SweepRow>& rows) {
   std::vector<std::string> channels;
+  std::size_t microphones = 0;
   for (const auto& r : rows)
     if (r.ok) {
       for (const auto& ch : r.channels)
         if (!is_ball_channel(ch.name)) channels.push_back(ch.name);
+      microphones = r.microphones.size();
       break;
     }
   std::string out;
@@ -168,6 +172,9 @@ std::string sweep_csv(const std::vector<SweepAxis>& axes, const std::vector<Swee
   for (const auto& ch : channels)
     for (const char* f : {"rms", "ptp", "kurtosis", "crest", "peak_frequency", "peak_label"})
       out += "," + ch + "." + f;
+  for (std::size_t i = 1; i <= microphones; ++i)
+    for (const char* f : {"spl_total", "spl_ring", "spl_balls"})
+      out += ",mic" + std::to_string(i) + "." + f;
   out += "\n";
   for (const auto& r : rows) {
     for (double v : r.values) append(out, v), out += ",";
@@ -188,6 +195,14 @@ std::string sweep_csv(const std::vector<SweepAxis>& axes, const std::vector<Swee
       out += ",";
       if (!ch->peaks.empty()) append(out, ch->peaks.front().frequency);
       out += "," + csv_field(ch->peaks.empty() ? "" : ch->peaks.front().label);
+    }
+    for (std::size_t i = 0; i < microphones; ++i) {
+      const MicrophoneLevels* m = i < r.microphones.size() ? &r.microphones[i] : nullptr;
+      for (const std::optional<double>* v :
+           {m ? &m->spl_total : nullptr, m ? &m->spl_ring : nullptr, m ? &m->spl_balls : nullptr}) {
+        out += ",";
+        if (v && *v) append(out, **v);
+      }
     }
     out += "\n";
   }

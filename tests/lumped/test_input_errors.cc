@@ -248,6 +248,13 @@ std::vector<BadCase> bad_cases() {
        kPreset + "[acoustics]\nmicrophones = [[\"1 m\", \"0 deg\"]]\nring_source = \"none\"\n"
                  "ball_source = \"none\"\n",
        {"acoustics", "both \"none\""}},
+      {"microphone inside the ring",
+       kPreset + "[acoustics]\nmicrophones = [[\"1 m\", \"0 deg\"], [\"5 mm\", \"0 deg\"]]\n",
+       {"acoustics.microphones[1] r", "0.005 m", "inside the ring source", "0.0249595 m"}},
+      {"microphone where the balls pass",
+       kPreset + "[acoustics]\nmicrophones = [[\"28 mm\", \"0 deg\"]]\n",
+       {"acoustics.microphones[0] r", "0.028 m", "annulus the balls sweep", "0.0400405 m",
+        "ball_source"}},
       {"ring radius beyond the pitch circle",
        kPreset + "[acoustics]\nmicrophones = [[\"1 m\", \"0 deg\"]]\nring_radius = \"40 mm\"\n",
        {"acoustics.ring_radius", "0.04 m", "d_m/2"}},

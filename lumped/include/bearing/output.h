@@ -1,5 +1,6 @@
 #pragma once
-// Result files of `bearing-sim run`: response.csv, spectrum.csv, summary.json and case.toml.
+// Result files of `bearing-sim run`: response.csv, spectrum.csv, summary.json and case.toml, and
+// pressure.csv with an [acoustics] table.
 
 #include <string>
 
@@ -13,14 +14,19 @@ namespace bearing {
 /// `contact` (the law: `method`, `K` [N/m^n] and `exponent` n of the ball between both races and
 /// of each race), `frequencies` [Hz], `channels.<name>.{mean,rms,ptp,kurtosis,crest}` (SI),
 /// `peaks.<name>[]` with `frequency` [Hz], `amplitude` (SI) and `label`, `solver` (method, steps,
-/// force evaluations) and `units`. Throws SolverError if any value is not finite.
+/// force evaluations), `units`, and with an [acoustics] table `acoustics` (sources and their
+/// models, summation, radii [m], air, band [Hz], and per microphone `position` [m], `radius`
+/// [m], `angle` [rad], `p_rms*` [Pa], `spl_total`, `spl_ring`, `spl_balls` [dB re 20 µPa; null
+/// where the source is "none" or silent] and `nearest_ball_surface` [m]). Throws SolverError if
+/// any value is not finite.
 nlohmann::json summary_json(const Case& c, const SimulationResult& r, const RunSummary& s);
 
 /// A few readable lines: frequencies, each ring channel's RMS / PTP / kurtosis and its largest
 /// peaks, with units.
 std::string summary_text(const Case& c, const SimulationResult& r, const RunSummary& s);
 
-/// Writes the four files into `dir` (created if missing), all or nothing: each is written under a
+/// Writes the four files (five with acoustics: pressure.csv, `t` then p1…pM [Pa] over the
+/// analysis window) into `dir` (created if missing), all or nothing: each is written under a
 /// temporary name and the set is renamed into place only when every file is complete and every
 /// value finite. Throws InputError (cannot write) or SolverError (non-finite value).
 void write_run(const std::string& dir, const Case& c, const SimulationResult& r,

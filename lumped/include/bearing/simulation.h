@@ -13,6 +13,7 @@
 #include "bearing/models/bearing_model.h"
 #include "bearing/models/model_inputs.h"
 #include "bearing/models/quasi_static.h"
+#include "bearing/noise.h"
 #include "bearing/signal/peaks.h"
 #include "bearing/signal/spectrum.h"
 #include "bearing/signal/statistics.h"
@@ -73,10 +74,12 @@ struct RunSummary {
   std::vector<ChannelSummary> channels;        ///< in response order
   std::vector<std::string> spectrum_channels;  ///< channels with a spectrum (the ring's)
   std::vector<Spectrum> spectra;               ///< one per spectrum channel
+  std::optional<BearingNoise> noise;           ///< sound at the microphones ([acoustics] only)
 };
 
 /// Statistics of every channel and spectra and peaks of the ring's channels (not the ball
-/// loads), over the post-transient window, with the case's window and peak count.
+/// loads), over the post-transient window, with the case's window and peak count; and, with an
+/// [acoustics] table, the sound at the microphones (bearing_noise).
 RunSummary summarize(const Case& c, const SimulationResult& result);
 
 }  // namespace bearing

@@ -35,8 +35,9 @@ std::vector<SweepPoint> sweep_points(const std::vector<SweepAxis>& axes);
 struct SweepRow {
   std::vector<double> values;  ///< the point's values (SI)
   bool ok = false;
-  std::string error;                     ///< why the case failed (empty if ok)
-  std::vector<ChannelSummary> channels;  ///< the run's summary (empty if it failed)
+  std::string error;                          ///< why the case failed (empty if ok)
+  std::vector<ChannelSummary> channels;       ///< the run's summary (empty if it failed)
+  std::vector<MicrophoneLevels> microphones;  ///< sound levels ([acoustics] only)
 };
 
 /// Runs every point with `threads` workers (0: all cores). `load` builds the case of a point
@@ -48,7 +49,9 @@ std::vector<SweepRow> run_sweep(const std::function<Case(const std::vector<Overr
 
 /// sweep.csv: the varied keys (SI), `status` (ok/failed), `error`, then for each ring channel of
 /// the first successful row `<ch>.rms,<ch>.ptp,<ch>.kurtosis,<ch>.crest,<ch>.peak_frequency,
-/// <ch>.peak_label`. Failed rows leave those fields empty.
+/// <ch>.peak_label`, and with an [acoustics] table per microphone i = 1… `mic<i>.spl_total,
+/// mic<i>.spl_ring,mic<i>.spl_balls` [dB re 20 µPa]. Failed rows, and levels that do not exist
+/// (source "none", silence), leave their fields empty.
 std::string sweep_csv(const std::vector<SweepAxis>& axes, const std::vector<SweepRow>& rows);
 
 }  // namespace bearing
