@@ -330,20 +330,22 @@ std::string summary_text(const Case& c, const SimulationResult& r, const RunSumm
                   ac.summation.c_str(), s.noise->band_low, s.noise->band_high / 1e3,
                   ac.ring_source.c_str(), ac.ball_source.c_str());
     o << buf;
-    const auto db = [](const std::optional<double>& v) {
+    // A missing level is a source left out ("none") or one that did not move (SPL −∞).
+    const auto db = [](const std::optional<double>& v, bool present) {
       char b[32];
       if (v)
         std::snprintf(b, sizeof b, "%6.1f dB", *v);
       else
-        std::snprintf(b, sizeof b, "%9s", "-");
+        std::snprintf(b, sizeof b, "%9s", present ? "silent" : "none");
       return std::string(b);
     };
+    const bool ring = ac.ring_source != "none", balls = ac.ball_source != "none";
     for (std::size_t i = 0; i < s.noise->microphones.size(); ++i) {
       const MicrophoneLevels& m = s.noise->microphones[i];
       std::snprintf(buf, sizeof buf, "  microphone %zu at %.4g mm, %.4g deg:", i + 1,
                     m.microphone.radius * 1e3, m.microphone.angle * 180 / 3.14159265358979323846);
-      o << buf << "  total " << db(m.spl_total) << "  ring " << db(m.spl_ring) << "  balls "
-        << db(m.spl_balls);
+      o << buf << "  total " << db(m.spl_total, true) << "  ring " << db(m.spl_ring, ring)
+        << "  balls " << db(m.spl_balls, balls);
       std::snprintf(buf, sizeof buf, "  (p_rms %.3g Pa)\n", m.p_rms);
       o << buf;
     }

@@ -155,6 +155,34 @@ TEST(Noise, EnergeticSumIsTheSquareRootOfSummedSquares) {
   for (double v : e.noise->pressure[0]) EXPECT_GE(v, 0.0);  // an envelope, not a pressure
 }
 
+TEST(Noise, QuasiStaticRingLevelRisesTwelveDecibelsPerDoublingOfSpeed) {
+  // The quasi-static orbit is a function of the shaft angle alone, so doubling the speed doubles
+  // every velocity and every frequency; the ring's near field at low ka is p ≈ ρ a² (v̇ · n)/r,
+  // hence p ∝ n²: +20 log10 4 = 12.04 dB (the (ka)² terms add 0.007 dB here: ka < 0.1 up to 1 kHz).
+  // The record holds the same shaft revolutions at both speeds.
+  const std::string mic = "ball_source = \"none\"\nmicrophones = [[\"10 mm\", \"-90 deg\"]]\n";
+  const RunSummary slow = run(noisy_608(mic, {"solver.duration=1.1", "solver.transient=0.1"}));
+  const RunSummary fast =
+      run(noisy_608(mic, {"operation.speed=1440rpm", "solver.duration=0.55",
+                          "solver.transient=0.05", "solver.output_rate=40kHz"}));
+  const double rise = *fast.noise->microphones[0].spl_ring - *slow.noise->microphones[0].spl_ring;
+  EXPECT_NEAR(rise, 20 * std::log10(4.0), 0.03);
+  EXPECT_GT(rise, 20 * std::log10(4.0));  // the next term of H raises the higher frequencies
+}
+
+TEST(Noise, StillBearingIsSilentWithoutANumber) {
+  // No speed: the quasi-static ring stays where the static solution puts it and no ball moves:
+  // p = 0 exactly, and SPL = −∞ is reported as no level (JSON null), never as a number or NaN.
+  const Case c = noisy_608("microphones = [[\"10 mm\", \"-90 deg\"]]\n",
+                           {"operation.speed=0rpm", "ball_errors.band=0um"});
+  const RunSummary s = run(c);
+  const MicrophoneLevels& m = s.noise->microphones[0];
+  EXPECT_EQ(m.p_rms, 0.0);
+  EXPECT_FALSE(m.spl_total);
+  EXPECT_FALSE(m.spl_ring);
+  EXPECT_FALSE(m.spl_balls);
+}
+
 TEST(Noise, MicrophoneInsideABallIsRejectedByName) {
   Case c = noisy_608("microphones = [[\"1 m\", \"0 deg\"]]\n");
   const SimulationResult r = simulate(c);
