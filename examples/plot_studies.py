@@ -145,11 +145,44 @@ def seed003_measured(out, plots):
     plt.close(fig)
 
 
+def seed000(out, plots):
+    """SPL at point A against each swept parameter (examples/seed000_noise.sh), paper trend noted."""
+    d = os.path.join(out, "seed000")
+    if not os.path.isdir(d):
+        return
+    studies = (("order", "wave number N_w (both races)", "irregular"),
+               ("amplitude", "waviness amplitude A [um] (both races)", "rising"),
+               ("speed", "speed [rpm]", "rising"),
+               ("load", "radial load [N]", "rising"),
+               ("band", "ball-size error band [um]", "rising"),
+               ("band_only", "error band [um], no waviness", "rising"))
+    fig, ax = plt.subplots(2, 3, figsize=(14, 7.5))
+    for a, (name, label, claim) in zip(ax.flat, studies):
+        rows = list(csv.DictReader(open(os.path.join(d, name + ".csv"))))
+        x = [float(r["value"]) for r in rows]
+        for col, style in (("spl_total", "o-"), ("spl_ring", "s--"), ("spl_balls", "^:")):
+            a.plot(x, [float(r[col]) for r in rows], style, label=col.replace("spl_", ""))
+        jumps = [(xv, float(r["spl_total"])) for xv, r in zip(x, rows) if int(r["jumps"]) > 0]
+        if jumps:
+            a.plot(*zip(*jumps), "rx", ms=10, label="orbit jumps")
+        if name == "speed":
+            a.set_xscale("log")
+        a.set(xlabel=label, ylabel="SPL at point A [dB re 20 uPa]",
+              title=f"{name}: seed 000 claims {claim}")
+        a.grid(alpha=0.3)
+    ax[0][0].axhline(29.8, color="k", lw=0.8, ls="-.", label="seed 000: 29.8 dB")
+    ax[0][0].legend(fontsize=7)
+    fig.suptitle("Seed 000 608 at 720 rpm, 50 N: SPL 10 mm below the centre (quasi-static model)")
+    fig.tight_layout()
+    fig.savefig(os.path.join(plots, "seed000_spl.png"), dpi=110)
+    plt.close(fig)
+
+
 def main():
     out = sys.argv[1] if len(sys.argv) > 1 else "out/studies"
     plots = os.path.join(out, "plots")
     os.makedirs(plots, exist_ok=True)
-    for f in (seed001, seed002, seed002_scan, seed003_amplitude, seed003_measured):
+    for f in (seed000, seed001, seed002, seed002_scan, seed003_amplitude, seed003_measured):
         f(out, plots)
 
 

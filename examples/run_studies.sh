@@ -5,7 +5,8 @@
 #     examples/run_studies.sh [OUTDIR]        # default: out/studies (relative to the current dir)
 #
 # Environment: BEARING_SIM (default build/lumped/bearing-sim of this repository), JOBS (parallel
-# cases per sweep, default 2). About 1.5 minutes on 2 cores. Writes OUTDIR/<study>/... (sweep.csv,
+# cases per sweep, default 2). About 2 minutes on 2 cores (seed 000's noise study, 70 runs of
+# seed000_noise.sh, is the last ~20 s). Writes OUTDIR/<study>/... (sweep.csv,
 # run folders) and OUTDIR/tables.txt (what is printed), and PNG plots in OUTDIR/plots/ when
 # /usr/bin/python3 has matplotlib (Debian: python3-matplotlib); otherwise plotting is skipped.
 set -euo pipefail
@@ -228,6 +229,10 @@ for ch, unit in (("y", "um"), ("ay", "m/s^2")):
 EOF
   done
 fi
+
+# ------------------------------------------------------------------------------------------------
+echo
+BEARING_SIM=$sim "$here/seed000_noise.sh" "$out"
 
 # ------------------------------------------------------------------------------------------------
 echo
