@@ -74,7 +74,19 @@ class CylinderMonopole final : public Source {
   }
 };
 
+// Hankel functions for the cylinder dipole: the exact H₁⁽²⁾ and H₁⁽²⁾' = H₀ − H₁/x, or seed 000's
+// small-argument forms H₁ ≈ x/2 + 2i/(πx), H₁' ≈ 1/2 − 2i/(πx²) (its eq. 19 as derived).
+struct ExactHankel {
+  static cd value(double x) { return hankel1(x); }
+  static cd derivative(double x) { return hankel0(x) - hankel1(x) / x; }
+};
+struct SmallArgumentHankel {
+  static cd value(double x) { return x / 2 + kI * 2.0 / (kPi * x); }
+  static cd derivative(double x) { return 0.5 - kI * 2.0 / (kPi * x * x); }
+};
+
 // Infinite cylinder translating transversely: p = −iρc u cos ψ H₁(kr)/H₁'(ka).
+template <class Hankel>
 class CylinderDipole final : public Source {
  public:
   using Source::Source;
@@ -84,24 +96,7 @@ class CylinderDipole final : public Source {
     check_arguments(*this, omega, r, c);
     if (omega == 0) return 0.0;
     const double ka = wavenumber(omega) * radius(), kr = wavenumber(omega) * r;
-    const cd derivative = hankel0(ka) - hankel1(ka) / ka;
-    return -kI * z() * c * hankel1(kr) / derivative;
-  }
-};
-
-// Seed 000 eq. (19) as derived: the cylinder dipole with small-argument Hankel functions.
-class CylinderDipolePaper final : public Source {
- public:
-  using Source::Source;
-  bool cylindrical() const override { return true; }
-  Pattern pattern() const override { return Pattern::translating; }
-  cd transfer(double omega, double r, double c) const override {
-    check_arguments(*this, omega, r, c);
-    if (omega == 0) return 0.0;
-    const double ka = wavenumber(omega) * radius(), kr = wavenumber(omega) * r;
-    const cd h = kr / 2 + kI * 2.0 / (kPi * kr);
-    const cd derivative = 0.5 - kI * 2.0 / (kPi * ka * ka);
-    return -kI * z() * c * h / derivative;
+    return -kI * z() * c * Hankel::value(kr) / Hankel::derivative(ka);
   }
 };
 
@@ -257,8 +252,9 @@ std::unique_ptr<AcousticSource> make_source(std::string_view name, double radius
   const std::string c = canonical(name, key);
   check_body(radius, air, key);
   if (c == "cylinder-monopole") return std::make_unique<CylinderMonopole>(c, radius, air);
-  if (c == "cylinder-dipole") return std::make_unique<CylinderDipole>(c, radius, air);
-  if (c == "cylinder-dipole-paper") return std::make_unique<CylinderDipolePaper>(c, radius, air);
+  if (c == "cylinder-dipole") return std::make_unique<CylinderDipole<ExactHankel>>(c, radius, air);
+  if (c == "cylinder-dipole-paper")
+    return std::make_unique<CylinderDipole<SmallArgumentHankel>>(c, radius, air);
   return make_series_source(name, radius, air, key);
 }
 
