@@ -92,11 +92,13 @@ BearingNoise bearing_noise(const Case& c, const Response& response, double cage_
     out.ring_centre = {mean(response.steady("x")), mean(response.steady("y"))};
   }
   std::unique_ptr<RadialSeriesSource> ball;
+  std::optional<PeriodicInterpolator> interpolator;  // the balls' delays, one table for all
   const int Z = c.bearing.balls;
   std::vector<std::vector<double>> radial, radial_velocity;
   if (balls_on) {
     ball = make_series_source(ball_source_model(ac), 0.5 * c.bearing.ball_diameter, air,
                               "acoustics.ball_source");
+    interpolator.emplace();
     for (int j = 0; j < Z; ++j) {
       radial.push_back(response.steady("r" + std::to_string(j + 1)));
       radial_velocity.push_back(window_and_next(response, "vr" + std::to_string(j + 1)));
@@ -145,7 +147,7 @@ BearingNoise bearing_noise(const Case& c, const Response& response, double cage_
                            mm(ball_annulus(c.bearing).y()));
         }
         nearest = std::min(nearest, *closest - a);
-        each.push_back(radiate_moving(*ball, radial_velocity[j], rate, path, fft));
+        each.push_back(radiate_moving(*ball, radial_velocity[j], rate, path, fft, *interpolator));
       }
       p_balls = sum_pressures(each, summation);
       lv.p_rms_balls = root_mean_square(p_balls);

@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cmath>
 #include <complex>
+#include <cstdlib>
 #include <string>
 
 #include "bearing/errors.h"
@@ -25,12 +26,12 @@ constexpr int kHalfWidth = 16;
 constexpr int kPhases = 2048;
 constexpr double kKaiserBeta = 0.1102 * (80.0 - 8.7);
 
-double kernel(double u) {
+// The kernel at u [samples]; `norm` = 1/I0(β).
+double kernel(double u, double norm) {
   const double t = u / kHalfWidth;
   if (std::fabs(t) >= 1) return 0.0;
   const double sinc = u == 0 ? 1.0 : std::sin(kPi * u) / (kPi * u);
-  return sinc * gsl_sf_bessel_I0(kKaiserBeta * std::sqrt(1 - t * t)) /
-         gsl_sf_bessel_I0(kKaiserBeta);
+  return sinc * gsl_sf_bessel_I0(kKaiserBeta * std::sqrt(1 - t * t)) * norm;
 }
 
 void check_record(const std::vector<double>& velocity, double rate, const RealFft& fft) {
@@ -85,29 +86,46 @@ std::vector<double> filter(const std::vector<std::complex<double>>& U, double ra
 }  // namespace
 
 PeriodicInterpolator::PeriodicInterpolator() {
-  const int taps = 2 * kHalfWidth;
-  table_.resize(static_cast<std::size_t>((kPhases + 1) * taps));
-  for (int p = 0; p <= kPhases; ++p) {
-    const double f = static_cast<double>(p) / kPhases;
+  static_assert(kTaps == 2 * kHalfWidth, "taps");
+  // Every entry is the even kernel at u = j / kPhases for an integer j (tap l, phase p:
+  // j = p − l·kPhases): evaluate it once per |j|.
+  const double norm = 1 / gsl_sf_bessel_I0(kKaiserBeta);
+  std::vector<double> grid(static_cast<std::size_t>(kHalfWidth * kPhases + 1));
+  for (std::size_t j = 0; j < grid.size(); ++j)
+    grid[j] = kernel(static_cast<double>(j) / kPhases, norm);
+  table_.resize(static_cast<std::size_t>((kPhases + 1) * kTaps));
+  for (int p = 0; p <= kPhases; ++p)
     for (int l = -kHalfWidth + 1; l <= kHalfWidth; ++l)
-      table_[static_cast<std::size_t>(p * taps + l + kHalfWidth - 1)] = kernel(f - l);
-  }
+      table_[static_cast<std::size_t>(p * kTaps + l + kHalfWidth - 1)] =
+          grid[static_cast<std::size_t>(std::abs(p - l * kPhases))];
 }
 
-double PeriodicInterpolator::operator()(const std::vector<double>& x, double s) const {
-  const auto n = static_cast<long>(x.size());
+PeriodicInterpolator::Taps PeriodicInterpolator::taps(double s, std::size_t n) const {
   const double floor_s = std::floor(s);
   const double phase = (s - floor_s) * kPhases;
   const int p = std::min(static_cast<int>(phase), kPhases - 1);
   const double w = phase - p;
-  const int taps = 2 * kHalfWidth;
-  const double* k0 = &table_[static_cast<std::size_t>(p * taps)];
-  const double* k1 = k0 + taps;
-  long i = (static_cast<long>(floor_s) - kHalfWidth + 1) % n;
-  if (i < 0) i += n;
+  const double* k0 = &table_[static_cast<std::size_t>(p * kTaps)];
+  const double* k1 = k0 + kTaps;
+  Taps t;
+  for (int i = 0; i < kTaps; ++i)
+    t.weight[static_cast<std::size_t>(i)] = (1 - w) * k0[i] + w * k1[i];
+  long first = (static_cast<long>(floor_s) - kHalfWidth + 1) % static_cast<long>(n);
+  if (first < 0) first += static_cast<long>(n);
+  t.first = static_cast<std::size_t>(first);
+  return t;
+}
+
+double PeriodicInterpolator::apply(const Taps& t, const std::vector<double>& x) {
+  const std::size_t n = x.size();
   double sum = 0;
-  for (int t = 0; t < taps; ++t) {
-    sum += x[static_cast<std::size_t>(i)] * ((1 - w) * k0[t] + w * k1[t]);
+  std::size_t i = t.first;
+  if (i + kTaps <= n) {  // no wrap: a plain dot product
+    for (std::size_t k = 0; k < kTaps; ++k) sum += t.weight[k] * x[i + k];
+    return sum;
+  }
+  for (std::size_t k = 0; k < kTaps; ++k) {
+    sum += t.weight[k] * x[i];
     if (++i == n) i = 0;
   }
   return sum;
@@ -128,6 +146,13 @@ std::vector<double> radiate_fixed(const AcousticSource& source, const std::vecto
 std::vector<double> radiate_moving(const RadialSeriesSource& source,
                                    const std::vector<double>& velocity, double rate,
                                    const SourcePath& path, RealFft& fft) {
+  return radiate_moving(source, velocity, rate, path, fft, PeriodicInterpolator());
+}
+
+std::vector<double> radiate_moving(const RadialSeriesSource& source,
+                                   const std::vector<double>& velocity, double rate,
+                                   const SourcePath& path, RealFft& fft,
+                                   const PeriodicInterpolator& at) {
   check_record(velocity, rate, fft);
   const std::size_t n = fft.size();
   if (path.distance.size() != n || path.cos_angle.size() != n)
@@ -153,17 +178,21 @@ std::vector<double> radiate_moving(const RadialSeriesSource& source,
     ramp.push_back(d.slope * source.ramp_factor(m));
   }
 
-  const PeriodicInterpolator at;
   const bool breathing = source.pattern() == Pattern::breathing;
   const double samples_per_metre = source.delayed() ? rate / source.air().sound_speed : 0.0;
   std::vector<double> p(n);
   for (std::size_t i = 0; i < n; ++i) {
     const double r = path.distance[i];
     const double s = static_cast<double>(i) - (r - a) * samples_per_metre;
+    const bool on_sample = s == static_cast<double>(i);
+    PeriodicInterpolator::Taps taps;
+    if (!on_sample) taps = at.taps(s, n);  // the same delay for every term
     double sum = 0;
-    for (std::size_t m = 0; m < powers.size(); ++m)
-      sum += std::pow(a / r, powers[m]) *
-             ((s == static_cast<double>(i) ? q[m][i] : at(q[m], s)) + ramp[m]);
+    for (std::size_t m = 0; m < powers.size(); ++m) {
+      double weight = 1;  // (a/r)^m, m a small whole number
+      for (int e = 0; e < powers[m]; ++e) weight *= a / r;
+      sum += weight * ((on_sample ? q[m][i] : PeriodicInterpolator::apply(taps, q[m])) + ramp[m]);
+    }
     p[i] = (breathing ? 1.0 : path.cos_angle[i]) * sum;
   }
   return p;

@@ -29,6 +29,8 @@
 // it, then the interpolation attenuates (6 % at 0.9, 48 % at 0.96): the top 10 % of the band of a
 // moving source would not be reliable, hence the band.
 
+#include <array>
+#include <cstddef>
 #include <string>
 #include <vector>
 
@@ -60,21 +62,40 @@ struct SourcePath {
 /// (translating) or on its surface (breathing): p_n = Θ_n Σ_m (a/r_n)^m [q_m(t_n − τ_n) + β
 /// ramp_factor(m)]. Same conventions and errors as radiate_fixed; also InputError if the path
 /// does not have N entries or the point is inside the body at some sample.
-std::vector<double> radiate_moving(const RadialSeriesSource& source,
-                                   const std::vector<double>& velocity, double rate,
-                                   const SourcePath& path, RealFft& fft);
-
 /// Band-limited value of a periodic record x (period N samples) at the fractional sample
 /// position s (any real; s = n gives x_n): the Kaiser-windowed sinc interpolation radiate_moving
-/// uses for its delays.
+/// uses for its delays. Building its kernel table costs ~10 ms: build one and share it.
 class PeriodicInterpolator {
  public:
+  static constexpr int kTaps = 32;
+
+  /// The taps for position s in a record of period n: the first sample index and the weights.
+  struct Taps {
+    std::size_t first = 0;
+    std::array<double, kTaps> weight{};
+  };
+
   PeriodicInterpolator();
-  double operator()(const std::vector<double>& x, double s) const;
+  Taps taps(double s, std::size_t n) const;
+  /// Σ_t weight_t x_{(first + t) mod N}.
+  static double apply(const Taps& taps, const std::vector<double>& x);
+  double operator()(const std::vector<double>& x, double s) const {
+    return apply(taps(s, x.size()), x);
+  }
 
  private:
   std::vector<double> table_;  // kernel at phases i / kPhases of each tap
 };
+
+std::vector<double> radiate_moving(const RadialSeriesSource& source,
+                                   const std::vector<double>& velocity, double rate,
+                                   const SourcePath& path, RealFft& fft,
+                                   const PeriodicInterpolator& interpolator);
+
+/// The same with an interpolator of its own (for one-off calls).
+std::vector<double> radiate_moving(const RadialSeriesSource& source,
+                                   const std::vector<double>& velocity, double rate,
+                                   const SourcePath& path, RealFft& fft);
 
 /// How source pressures add up at a microphone.
 enum class Summation {
