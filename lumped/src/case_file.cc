@@ -114,6 +114,8 @@ const std::vector<KeySpec>& schema() {
       {"output.ball_loads", Kind::boolean, D::dimensionless, "write each ball's load Q1..QZ"},
       {"output.ball_motion", Kind::boolean, D::dimensionless,
        "write each ball centre's radial displacement r1..rZ [m] and velocity vr1..vrZ [m/s]"},
+      {"output.ball_approach", Kind::boolean, D::dimensionless,
+       "write each ball's approach d1..dZ [m] (positive: elastic approach; negative: gap)"},
       {"output.window", Kind::text, D::dimensionless, "hann | flattop | rectangular"},
       {"output.peaks", Kind::integer, D::dimensionless, "peaks listed per channel (default 10)"},
       {"acoustics.ring_source", Kind::text, D::dimensionless,
@@ -701,6 +703,7 @@ Case resolve(const toml::table& doc, const std::string& source, const std::strin
   TableReader output(top_table(doc, "output"), "output");
   if (auto v = output.boolean("ball_loads")) c.output.ball_loads = *v;
   if (auto v = output.boolean("ball_motion")) c.output.ball_motion = *v;
+  if (auto v = output.boolean("ball_approach")) c.output.ball_approach = *v;
   if (auto v = output.choice("window", {"hann", "flattop", "rectangular"})) c.output.window = *v;
   if (auto v = output.integer("peaks")) {
     if (*v < 0 || *v > 1000)
@@ -965,6 +968,7 @@ std::string case_to_toml(const Case& c) {
     << "\nmax_displacement = " << num17(s.max_displacement) << "\n\n";
   o << "[output]\nball_loads = " << (c.output.ball_loads ? "true" : "false")
     << "\nball_motion = " << (c.output.ball_motion ? "true" : "false")
+    << "\nball_approach = " << (c.output.ball_approach ? "true" : "false")
     << "\nwindow = " << quoted(c.output.window) << "\npeaks = " << c.output.peaks << "\n";
   const AcousticsOptions& ac = c.acoustics;
   if (ac.enabled) {

@@ -57,9 +57,9 @@ std::unique_ptr<BearingModel> make_model(const Case& c) {
 
 bool is_ball_channel(const std::string& name) {
   if (name.empty()) return false;
-  const std::size_t stem = name.front() == 'Q' || name.front() == 'r'    ? 1
-                           : name.rfind("vr", 0) == 0 && name.size() > 2 ? 2
-                                                                         : 0;
+  const std::size_t stem = name.front() == 'Q' || name.front() == 'r' || name.front() == 'd' ? 1
+                           : name.rfind("vr", 0) == 0 && name.size() > 2                     ? 2
+                                                                                             : 0;
   if (stem == 0 || name.size() == stem) return false;
   return std::all_of(name.begin() + static_cast<std::ptrdiff_t>(stem), name.end(),
                      [](char ch) { return ch >= '0' && ch <= '9'; });
@@ -82,7 +82,8 @@ bool wants_ball_motion(const Case& c) {
 }
 
 // The channels of a run: the DOFs, their velocities and accelerations, then Q1..QZ
-// (output.ball_loads), r1..rZ and vr1..vrZ (output.ball_motion); and the output times k / rate
+// (output.ball_loads), d1..dZ (output.ball_approach), r1..rZ and vr1..vrZ (output.ball_motion);
+// and the output times k / rate
 // (the sample count from the duration, rounded to whole samples).
 void lay_out(const Case& c, const std::vector<std::string>& dofs, int Z, Response& out) {
   for (const auto& q : dofs) out.channels.push_back(q), out.units.push_back("m");
@@ -93,6 +94,7 @@ void lay_out(const Case& c, const std::vector<std::string>& dofs, int Z, Respons
       out.channels.push_back(stem + std::to_string(j + 1)), out.units.push_back(unit);
   };
   if (c.output.ball_loads) per_ball("Q", "N");
+  if (c.output.ball_approach) per_ball("d", "m");
   if (wants_ball_motion(c)) per_ball("r", "m"), per_ball("vr", "m/s");
   const auto samples =
       static_cast<std::size_t>(std::floor(c.solver.duration * c.solver.output_rate + 1e-9)) + 1;
@@ -106,10 +108,12 @@ void lay_out(const Case& c, const std::vector<std::string>& dofs, int Z, Respons
 
 // Writes the per-ball channels of sample k from column `first` on (lay_out's order).
 void store_balls(const Case& c, std::size_t first, std::size_t k, int Z, const double* loads,
-                 const double* r, const double* vr, Response& out) {
+                 const double* approaches, const double* r, const double* vr, Response& out) {
   std::size_t i = first;
   if (c.output.ball_loads)
     for (int j = 0; j < Z; ++j) out.values[i++][k] = loads[j];
+  if (c.output.ball_approach)
+    for (int j = 0; j < Z; ++j) out.values[i++][k] = approaches[j];
   if (wants_ball_motion(c)) {
     for (int j = 0; j < Z; ++j) out.values[i++][k] = r[j];
     for (int j = 0; j < Z; ++j) out.values[i++][k] = vr[j];
@@ -141,7 +145,7 @@ void run_dynamic(const Case& c, const Progress& progress, SimulationResult& r) {
   lay_out(c, model->dof_names(), Z, out);
   const std::size_t samples = out.time.size();
 
-  std::vector<double> loads(static_cast<std::size_t>(Z)), rb(loads), vrb(loads);
+  std::vector<double> loads(static_cast<std::size_t>(Z)), approaches(loads), rb(loads), vrb(loads);
   std::size_t k = 0;
   const Observer observe = [&](double t, const double* q, const double* v, const double* a) {
     for (int i = 0; i < n; ++i) {
@@ -150,8 +154,10 @@ void run_dynamic(const Case& c, const Progress& progress, SimulationResult& r) {
       out.values[static_cast<std::size_t>(2 * n + i)][k] = a[i];
     }
     if (c.output.ball_loads) model->ball_loads(t, q, loads.data());
+    if (c.output.ball_approach) model->ball_approaches(t, q, approaches.data());
     if (wants_ball_motion(c)) model->ball_motion(t, q, v, rb.data(), vrb.data());
-    store_balls(c, static_cast<std::size_t>(3 * n), k, Z, loads.data(), rb.data(), vrb.data(), out);
+    store_balls(c, static_cast<std::size_t>(3 * n), k, Z, loads.data(), approaches.data(),
+                rb.data(), vrb.data(), out);
     ++k;
   };
   r.stats = integrator->integrate(*model, 0.0, q0, v0, out.time, observe, progress);
@@ -169,7 +175,7 @@ void run_quasi_static(const Case& c, const Progress& progress, SimulationResult&
   const int Z = model->balls();
   Response& out = r.response;
   lay_out(c, {"x", "y"}, Z, out);
-  std::vector<double> loads(static_cast<std::size_t>(Z)), rb(loads), vrb(loads);
+  std::vector<double> loads(static_cast<std::size_t>(Z)), approaches(loads), rb(loads), vrb(loads);
   std::size_t k = 0;
   const auto observe = [&](const QuasiStaticPoint& pt) {
     for (int i = 0; i < 2; ++i) {
@@ -177,8 +183,9 @@ void run_quasi_static(const Case& c, const Progress& progress, SimulationResult&
       out.values[static_cast<std::size_t>(2 + i)][k] = pt.velocity[i];
     }
     if (c.output.ball_loads) model->ball_loads(pt.t, pt.position, loads.data());
+    if (c.output.ball_approach) model->ball_approaches(pt.t, pt.position, approaches.data());
     if (wants_ball_motion(c)) model->ball_motion(pt, rb.data(), vrb.data());
-    store_balls(c, 6, k, Z, loads.data(), rb.data(), vrb.data(), out);
+    store_balls(c, 6, k, Z, loads.data(), approaches.data(), rb.data(), vrb.data(), out);
     ++k;
   };
   QuasiStaticStats st = follow_equilibrium(*model, out.time, observe, progress);

@@ -242,5 +242,32 @@ TEST(BallMotion, BallChannelsHaveStatisticsButNoSpectrum) {
   EXPECT_EQ(s.channels.size(), 6u + 3u * 7u);
 }
 
+// output.ball_approach: d_j is the approach the contact law turns into the load, Q_j = K [d_j]_+^n
+// with the run's constants, for every model kind; balls out of the load zone show their gap (d <
+// 0).
+TEST(BallApproach, LoadIsTheContactLawOfTheApproach) {
+  for (const char* kind : {"quasistatic", "2dof", "3dof"}) {
+    const Case c =
+        case_608({std::string("model.kind=") + kind, "solver.duration=0.2", "solver.transient=0.1",
+                  "output.ball_approach=true", "operation.axial_load=10"});
+    const SimulationResult r = simulate(c);
+    const Response& resp = r.response;
+    const double K = r.contact.K, n = r.contact.exponent;
+    double most = 0, least = 0;
+    for (int j = 1; j <= c.bearing.balls; ++j) {
+      const auto& Q = resp.channel("Q" + std::to_string(j));
+      const auto& d = resp.channel("d" + std::to_string(j));
+      for (std::size_t k = 0; k < Q.size(); k += 7) {
+        const double law = d[k] > 0 ? K * std::pow(d[k], n) : 0.0;
+        EXPECT_NEAR(Q[k], law, 1e-9 * std::max(1.0, law)) << kind << " ball " << j;
+        most = std::max(most, d[k]), least = std::min(least, d[k]);
+      }
+    }
+    EXPECT_GT(most, 0) << kind;
+    EXPECT_LT(least, 0) << kind;  // the top of the bearing is out of contact
+    EXPECT_TRUE(is_ball_channel("d3"));
+  }
+}
+
 }  // namespace
 }  // namespace bearing

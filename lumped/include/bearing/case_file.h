@@ -78,6 +78,7 @@ struct SolverOptions {
 struct OutputOptions {
   bool ball_loads = false;      ///< add each ball's load Q1…QZ to response.csv
   bool ball_motion = false;     ///< add each ball centre's radial r1…rZ [m] and vr1…vrZ [m/s]
+  bool ball_approach = false;   ///< add each ball's signed approach d1…dZ [m]
   std::string window = "hann";  ///< spectrum window: "hann" | "flattop" | "rectangular"
   int peaks = 10;               ///< spectrum peaks listed per channel in summary.json
 };

@@ -24,7 +24,7 @@ namespace bearing {
 /// Time series of a run, sampled at the case's output rate from t = 0.
 struct Response {
   /// "x","y","vx","vy","ax","ay" (+ "z","vz","az"), then per ball "Q1"… (output.ball_loads),
-  /// "r1"…, "vr1"… (output.ball_motion)
+  /// "d1"… (output.ball_approach), "r1"…, "vr1"… (output.ball_motion)
   std::vector<std::string> channels;
   std::vector<std::string> units;           ///< SI unit of each channel
   std::vector<double> time;                 ///< [s]
@@ -54,7 +54,7 @@ ModelInputs model_inputs(const Case& c);
 /// make_quasi_static_model(model_inputs(c)) builds).
 std::unique_ptr<BearingModel> make_model(const Case& c);
 
-/// Whether a response channel belongs to one ball (Q1…, r1…, vr1…): statistics only, no spectrum
+/// Whether a response channel belongs to one ball (Q1…, d1…, r1…, vr1…): statistics only, no spectrum
 /// or peaks (the ring's channels get those).
 bool is_ball_channel(const std::string& name);
 

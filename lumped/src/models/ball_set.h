@@ -511,6 +511,15 @@ class BallSet {
     }
   }
 
+  /// Each ball's approach δ_j = approach(j, frame) at time t [m], signed (negative: the gap left
+  /// to contact), the δ_j of ball_loads().
+  template <class Approach>
+  void ball_approaches(double t, const Approach& approach, double* out) const {
+    BallFrame fr;
+    evaluate(t, fr);
+    for (int j = 0; j < balls_; ++j) out[j] = approach(j, fr);
+  }
+
   /// The contact potential Σ_j K_j/(n+1) [δ_j]_+^{n+1} at time t [J], δ_j as in ball_loads().
   template <class Approach>
   double potential_energy(double t, const Approach& approach) const {

@@ -134,14 +134,19 @@ class QuasiStatic final : public QuasiStaticModel {
     return pt;
   }
 
+  // δ_j of the header at the ring position p.
+  auto approach_at(const Eigen::Vector2d& p) const {
+    return [this, p](int j, const detail::BallFrame& fr) {
+      return p.x() * fr.cos_theta[j] + p.y() * fr.sin_theta[j] - gap_ + fr.excitation[j];
+    };
+  }
+
   void ball_loads(double t, const Eigen::Vector2d& position, double* loads) const override {
-    set_.ball_loads(
-        t,
-        [&](int j, const detail::BallFrame& fr) {
-          return position.x() * fr.cos_theta[j] + position.y() * fr.sin_theta[j] - gap_ +
-                 fr.excitation[j];
-        },
-        loads);
+    set_.ball_loads(t, approach_at(position), loads);
+  }
+
+  void ball_approaches(double t, const Eigen::Vector2d& position, double* out) const override {
+    set_.ball_approaches(t, approach_at(position), out);
   }
 
   void ball_motion(const QuasiStaticPoint& pt, double* r, double* vr) const override {

@@ -201,6 +201,11 @@ class ThreeDofModel final : public BearingModel {
         t, [&](int j, const detail::BallFrame& fr) { return ball_approach(q, fr, j); }, loads);
   }
 
+  void ball_approaches(double t, const double* q, double* out) const override {
+    set_.ball_approaches(
+        t, [&](int j, const detail::BallFrame& fr) { return ball_approach(q, fr, j); }, out);
+  }
+
   // r_j = δ_o,j cos α_j − Π_o + ΔD_j/2 (bearing_model.h). With ρ_j = x cos θ_j + y sin θ_j + e_j,
   // L = sqrt((w₀ + z)² + (u₀ + ρ)²): dδ/dt = dL/dt = [(u₀ + ρ) dρ/dt + (w₀ + z) ż]/L and
   // d(cos α)/dt = [dρ/dt − cos α dL/dt]/L. An unloaded ball has no outer approach: r = −Π_o + ΔD/2.

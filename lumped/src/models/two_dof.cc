@@ -91,6 +91,11 @@ class TwoDofModel final : public BearingModel {
         t, [&](int j, const detail::BallFrame& fr) { return approach(q, fr, j); }, loads);
   }
 
+  void ball_approaches(double t, const double* q, double* out) const override {
+    set_.ball_approaches(
+        t, [&](int j, const detail::BallFrame& fr) { return approach(q, fr, j); }, out);
+  }
+
   void ball_motion(double t, const double* q, const double* v, double* r,
                    double* vr) const override {
     detail::radial_ball_motion(set_, gap_, t, q, v, r, vr);

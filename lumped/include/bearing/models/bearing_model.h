@@ -21,6 +21,11 @@ class BearingModel : public MechanicalSystem {
   /// inner-race load).
   virtual void ball_loads(double t, const double* q, double* loads) const = 0;
 
+  /// Each ball's approach δ_j at (t, q) [m], Z entries, signed: positive, the elastic approach
+  /// of the ball between both races that carries Q_j; negative, the gap left to contact. 2-DOF:
+  /// δ_j = x cos θ_j + y sin θ_j − γ + Π_i + Π_o − ΔD_j; 3-DOF: along the loaded contact line.
+  virtual void ball_approaches(double t, const double* q, double* approaches) const = 0;
+
   /// Each ball centre's radial motion at (t, q, v) (output.ball_motion; output instants only), Z
   /// entries each: r[j] [m], the ball centre's radial displacement from the pitch radius d_m/2,
   /// and vr[j] = dr_j/dt [m/s], analytic (chain rule through the contact law, not differences).

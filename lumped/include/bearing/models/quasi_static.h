@@ -103,6 +103,9 @@ class QuasiStaticModel {
   virtual QuasiStaticPoint solve(double t, const Eigen::Vector2d& guess) const = 0;
   /// Each ball's load Q_j at (t, position) [N], Z entries.
   virtual void ball_loads(double t, const Eigen::Vector2d& position, double* loads) const = 0;
+  /// Each ball's signed approach δ_j at (t, position) [m], Z entries (bearing_model.h).
+  virtual void ball_approaches(double t, const Eigen::Vector2d& position,
+                               double* approaches) const = 0;
   /// Each ball centre's radial displacement r_j [m] and velocity vr_j [m/s] (bearing_model.h),
   /// Z entries each, at an equilibrium with its velocity.
   virtual void ball_motion(const QuasiStaticPoint& point, double* r, double* vr) const = 0;
