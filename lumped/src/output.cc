@@ -11,6 +11,7 @@
 #include <sstream>
 #include <string_view>
 #include <system_error>
+#include <vector>
 
 #include "bearing/acoustics/sources.h"
 #include "bearing/decimal.h"
@@ -91,18 +92,20 @@ void require_finite_value(double v, const What& what) {
   if (!std::isfinite(v)) throw SolverError(what() + " is not finite; no result files were written");
 }
 
-void write_response_csv(const fs::path& path, const Response& r) {
+// A CSV table: the abscissa column `x_name` = x[k], then one column per name with value(i, k);
+// a non-finite value stops the write, named by what(i, k).
+template <class Value, class What>
+void write_table(const fs::path& path, const std::string& x_name, const std::vector<double>& x,
+                 const std::vector<std::string>& names, const Value& value, const What& what) {
   BufferedFile f(path);
-  f.text("t");
-  for (const auto& name : r.channels) f.character(','), f.text(name);
+  f.text(x_name);
+  for (const auto& name : names) f.character(','), f.text(name);
   f.character('\n');
-  for (std::size_t k = 0; k < r.time.size(); ++k) {
-    f.number(r.time[k]);
-    for (std::size_t i = 0; i < r.channels.size(); ++i) {
-      const double v = r.values[i][k];
-      require_finite_value(v, [&] {
-        return "response " + r.channels[i] + " at t = " + std::to_string(r.time[k]) + " s";
-      });
+  for (std::size_t k = 0; k < x.size(); ++k) {
+    f.number(x[k]);
+    for (std::size_t i = 0; i < names.size(); ++i) {
+      const double v = value(i, k);
+      require_finite_value(v, [&] { return what(i, k); });
       f.character(',');
       f.number(v);
     }
@@ -111,45 +114,34 @@ void write_response_csv(const fs::path& path, const Response& r) {
   f.close();
 }
 
+void write_response_csv(const fs::path& path, const Response& r) {
+  write_table(
+      path, "t", r.time, r.channels, [&](std::size_t i, std::size_t k) { return r.values[i][k]; },
+      [&](std::size_t i, std::size_t k) {
+        return "response " + r.channels[i] + " at t = " + std::to_string(r.time[k]) + " s";
+      });
+}
+
 void write_spectrum_csv(const fs::path& path, const RunSummary& s) {
-  BufferedFile f(path);
-  f.text("frequency");
-  for (const auto& name : s.spectrum_channels) f.character(','), f.text(name);
-  f.character('\n');
-  const std::size_t bins = s.spectra.empty() ? 0 : s.spectra.front().frequency.size();
-  for (std::size_t b = 0; b < bins; ++b) {
-    f.number(s.spectra.front().frequency[b]);
-    for (std::size_t i = 0; i < s.spectra.size(); ++i) {
-      const double v = s.spectra[i].amplitude[b];
-      require_finite_value(v, [&] { return "spectrum of " + s.spectrum_channels[i]; });
-      f.character(',');
-      f.number(v);
-    }
-    f.character('\n');
-  }
-  f.close();
+  static const std::vector<double> none;
+  write_table(
+      path, "frequency", s.spectra.empty() ? none : s.spectra.front().frequency,
+      s.spectrum_channels, [&](std::size_t i, std::size_t b) { return s.spectra[i].amplitude[b]; },
+      [&](std::size_t i, std::size_t) { return "spectrum of " + s.spectrum_channels[i]; });
 }
 
 // pressure.csv: t over the analysis window, then p1…pM (one column per microphone) [Pa].
 void write_pressure_csv(const fs::path& path, const BearingNoise& noise) {
-  BufferedFile f(path);
-  f.text("t");
-  for (std::size_t i = 0; i < noise.pressure.size(); ++i) f.text(",p" + std::to_string(i + 1));
-  f.character('\n');
-  for (std::size_t k = 0; k < noise.time.size(); ++k) {
-    f.number(noise.time[k]);
-    for (std::size_t i = 0; i < noise.pressure.size(); ++i) {
-      const double v = noise.pressure[i][k];
-      require_finite_value(v, [&] {
+  std::vector<std::string> names;
+  for (std::size_t i = 0; i < noise.pressure.size(); ++i)
+    names.push_back("p" + std::to_string(i + 1));
+  write_table(
+      path, "t", noise.time, names,
+      [&](std::size_t i, std::size_t k) { return noise.pressure[i][k]; },
+      [&](std::size_t i, std::size_t k) {
         return "sound pressure at microphone " + std::to_string(i + 1) +
                " at t = " + std::to_string(noise.time[k]) + " s";
       });
-      f.character(',');
-      f.number(v);
-    }
-    f.character('\n');
-  }
-  f.close();
 }
 
 void write_text(const fs::path& path, const std::string& text) {
