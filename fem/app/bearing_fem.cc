@@ -6,6 +6,8 @@
 // writes DIR/force_approach.csv (approach,force,semi_axis_a,semi_axis_b,peak_pressure),
 // DIR/contact.json (fe.{K,exponent,semi_axes,fit_residual}, hertz.{K,semi_axes} at the same load,
 // relative_difference.{K,semi_axes}) and DIR/vtu/contact_*.pvtu. Runs under mpirun.
+//
+//   bearing-fem radiate --source NAME --radius R ... --out DIR    (app/radiate.cc)
 
 #include <deal.II/base/mpi.h>
 
@@ -23,6 +25,7 @@
 #include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
 
+#include "app/radiate.h"
 #include "bearing/case_file.h"
 #include "bearing/contact.h"
 #include "bearing/errors.h"
@@ -503,6 +506,8 @@ int main(int argc, char** argv) {
   calibrate->add_option("--load-min", co.load_min, "Smallest load [N] (default: Q_max / 10)");
   calibrate->add_option("--load-max", co.load_max, "Largest load [N] (default: Q_max of the case)");
   calibrate->add_flag("--quiet", co.quiet, "No progress output");
+  bearing::fem::RadiateOptions ro;
+  auto* radiate = bearing::fem::add_radiate_command(app, ro);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -510,6 +515,7 @@ int main(int argc, char** argv) {
   }
   try {
     if (*calibrate) return run_calibrate(co, calibration_file, MPI_COMM_WORLD);
+    if (*radiate) return bearing::fem::run_radiate(ro, MPI_COMM_WORLD);
     run_contact(o, MPI_COMM_WORLD);
     return 0;
   } catch (const bearing::InputError& e) {
