@@ -263,6 +263,12 @@ void HelmholtzRadiation::check_parameters() const {
               1e-9 * pitch)
         throw InputError("section: the balls must be equal and equally spaced on one pitch circle");
     }
+    const double z = static_cast<double>(prm.bodies.size() - 1);
+    if (!(ring.radius + ball.radius < pitch && ball.radius < pitch * std::sin(M_PI / z)))
+      throw InputError("section: the ring and the balls must not touch (ring radius " +
+                       std::to_string(ring.radius) + " m + ball radius " +
+                       std::to_string(ball.radius) + " m must be below the pitch radius " +
+                       std::to_string(pitch) + " m, and the balls apart)");
   }
   for (const auto& m : prm.motions)
     if (m.body >= prm.bodies.size()) throw InputError("motion " + m.name + ": no such body");

@@ -33,6 +33,10 @@ struct SingleSource {
   double radius;
 };
 
+void PrintTo(const SingleSource& s, std::ostream* os) {
+  *os << s.name;
+}
+
 HelmholtzParameters single(const SingleSource& s, double r, double angle) {
   HelmholtzParameters p;
   p.geometry = s.cylinder ? RadiationGeometry::planar : RadiationGeometry::axisymmetric;
@@ -121,7 +125,6 @@ TEST(HelmholtzRadiation, ScatteringBySmallNeighboursFallsAsTheirRadiusSquared) {
     difference[i] = std::abs(fe.pressure[0][0][0] / free - 1.0);
   }
   EXPECT_GT(difference[0], 1e-3);
-  std::cout << "difference " << difference[0] << " -> " << difference[1] << "\n";
   EXPECT_NEAR(difference[0] / difference[1], 4.0, 0.4) << difference[0] << " -> " << difference[1];
 }
 

@@ -96,8 +96,9 @@ struct AcousticsOptions {
   /// The inner ring: "cylinder-dipole" (exact in ka), "paper" (seed 000's low-ka cylinder), "none".
   std::string ring_source = "cylinder-dipole";
   /// Each ball, driven by its centre's radial velocity: "oscillating-sphere" (a translating rigid
-  /// ball, exact in ka), "pulsating-sphere" (seed 000's choice, exact in ka), "paper" (seed 000's
-  /// eq. 23), "none".
+  /// ball, exact in ka; the default because the FE field of a translating ball matches it, while
+  /// it lies 7–30 dB below the pulsating sphere: fem/README.md), "pulsating-sphere" (seed 000's
+  /// choice, exact in ka), "paper" (seed 000's eq. 23), "none".
   std::string ball_source = "oscillating-sphere";
   std::string summation = "coherent";   ///< "coherent" (sum of pressures) | "energetic" (seed 000)
   std::vector<Microphone> microphones;  ///< at least one when enabled
