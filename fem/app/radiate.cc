@@ -73,6 +73,28 @@ void write_row(std::ostream& out, double f, cplx fe, cplx exact, const PolarPoin
       << ',' << motion << '\n';
 }
 
+constexpr const char* kCsvHeader =
+    "frequency,p_fe_re,p_fe_im,p_exact_re,p_exact_im,diff_db,diff_phase_deg,r,angle_deg,motion\n";
+
+// Writes DIR/radiation.csv and DIR/radiation.json, each to a .part file renamed when complete, so
+// an interrupted run never leaves a result that looks whole.
+void write_results(const std::string& dir, const std::string& csv, nlohmann::json j,
+                   const HelmholtzResult& r) {
+  j["frequencies"] = r.frequencies;
+  j["wall_time"] = r.wall_time;
+  j["mpi_processes"] = r.mpi_processes;
+  const std::pair<std::string, std::string> files[] = {{"radiation.csv", csv},
+                                                       {"radiation.json", j.dump(2) + "\n"}};
+  for (const auto& [name, text] : files) {
+    const std::string path = dir + "/" + name;
+    std::ofstream out(path + ".part");
+    out << text;
+    out.close();
+    if (!out) throw std::runtime_error("cannot write " + path);
+    std::filesystem::rename(path + ".part", path);
+  }
+}
+
 nlohmann::json mesh_json(const HelmholtzParameters& p, const HelmholtzResult& r) {
   return {{"degree", p.degree},
           {"cells_per_wavelength", p.cells_per_wavelength},
@@ -156,11 +178,8 @@ int run_single(const RadiateOptions& o, MPI_Comm comm, bool root) {
   const HelmholtzResult r = solve_helmholtz(p, comm);
   if (!root) return 0;
 
-  const std::string csv = o.out_dir + "/radiation.csv";
-  std::ofstream out(csv + ".part");
-  out << "frequency,p_fe_re,p_fe_im,p_exact_re,p_exact_im,diff_db,diff_phase_deg,r,angle_deg,"
-         "motion\n"
-      << std::setprecision(12);
+  std::ostringstream out;
+  out << kCsvHeader << std::setprecision(12);
   double worst_db = 0, worst_deg = 0;
   nlohmann::json rows = nlohmann::json::array();
   for (std::size_t f = 0; f < r.frequencies.size(); ++f)
@@ -176,10 +195,6 @@ int run_single(const RadiateOptions& o, MPI_Comm comm, bool root) {
       worst_db = std::max(worst_db, std::abs(c.diff_db));
       worst_deg = std::max(worst_deg, std::abs(c.diff_phase_deg));
     }
-  out.close();
-  if (!out) throw std::runtime_error("cannot write " + csv);
-  std::filesystem::rename(csv + ".part", csv);
-
   nlohmann::json j = {{"source", name},
                       {"reference", reference},
                       {"radius", o.radius},
@@ -187,17 +202,13 @@ int run_single(const RadiateOptions& o, MPI_Comm comm, bool root) {
                       {"geometry", cylinder ? "planar" : "axisymmetric"},
                       {"mesh", mesh_json(p, r)},
                       {"max_abs_diff_db", worst_db},
-                      {"max_abs_diff_phase_deg", worst_deg},
-                      {"frequencies", r.frequencies},
-                      {"wall_time", r.wall_time},
-                      {"mpi_processes", r.mpi_processes}};
-  std::ofstream js(o.out_dir + "/radiation.json");
-  js << std::setw(2) << j << '\n';
+                      {"max_abs_diff_phase_deg", worst_deg}};
+  write_results(o.out_dir, out.str(), j, r);
   if (!o.quiet)
     std::cout << "radiate: " << r.n_dofs << " unknowns, " << r.n_cells << " cells; largest |diff| "
               << worst_db << " dB, " << worst_deg << " deg against " << reference << "; "
-              << r.wall_time << " s on " << r.mpi_processes << " process(es)\n  wrote " << csv
-              << "\n";
+              << r.wall_time << " s on " << r.mpi_processes << " process(es)\n  wrote " << o.out_dir
+              << "/radiation.csv\n";
   return 0;
 }
 
@@ -297,11 +308,8 @@ int run_bearing(const RadiateOptions& o, MPI_Comm comm, bool root) {
   };
   constexpr double kNull = 0.1;  // −20 dB
 
-  const std::string csv = o.out_dir + "/radiation.csv";
-  std::ofstream out(csv + ".part");
-  out << "frequency,p_fe_re,p_fe_im,p_exact_re,p_exact_im,diff_db,diff_phase_deg,r,angle_deg,"
-         "motion\n"
-      << std::setprecision(12);
+  std::ostringstream out;
+  out << kCsvHeader << std::setprecision(12);
   for (std::size_t f = 0; f < r.frequencies.size(); ++f) {
     const double omega = 2 * M_PI * r.frequencies[f];
     const std::size_t nm = p.motions.size();
@@ -323,10 +331,6 @@ int run_bearing(const RadiateOptions& o, MPI_Comm comm, bool root) {
       }
     }
   }
-  out.close();
-  if (!out) throw std::runtime_error("cannot write " + csv);
-  std::filesystem::rename(csv + ".part", csv);
-
   nlohmann::json bands = nlohmann::json::array();
   for (std::size_t band = 0; band < centres.size(); ++band) {
     nlohmann::json row = {{"centre", centres[band]}};
@@ -353,12 +357,8 @@ int run_bearing(const RadiateOptions& o, MPI_Comm comm, bool root) {
                       {"microphones", mj},
                       {"air", {{"density", air.density}, {"sound_speed", air.sound_speed}}},
                       {"mesh", mesh_json(p, r)},
-                      {"octave_bands", bands},
-                      {"frequencies", r.frequencies},
-                      {"wall_time", r.wall_time},
-                      {"mpi_processes", r.mpi_processes}};
-  std::ofstream js(o.out_dir + "/radiation.json");
-  js << std::setw(2) << j << '\n';
+                      {"octave_bands", bands}};
+  write_results(o.out_dir, out.str(), j, r);
   if (!o.quiet) {
     std::cout << "radiate: " << r.n_dofs << " unknowns, " << r.n_cells << " cells, " << r.wall_time
               << " s on " << r.mpi_processes << " process(es)\n"
@@ -375,7 +375,7 @@ int run_bearing(const RadiateOptions& o, MPI_Comm comm, bool root) {
       }
       std::cout << std::defaultfloat << '\n';
     }
-    std::cout << "  wrote " << csv << "\n";
+    std::cout << "  wrote " << o.out_dir << "/radiation.csv\n";
   }
   return 0;
 }

@@ -309,12 +309,11 @@ void HelmholtzRadiation::make_polar_grid() {
   std::vector<double> radii{a};
   while (radii.back() < r0)
     radii.push_back(radii.back() + std::min(radii.back() * 2 * M_PI / n, h_far));
-  if (radii.size() < 3) radii.push_back(r0);
+  if (radii.size() < 3) radii = {a, 0.5 * (a + r0), r0};  // at least two cells across
   const double stretch = (r0 - a) / (radii.back() - a);
   for (double& r : radii) r = a + (r - a) * stretch;
   radii.back() = r0;
   for (unsigned int i = 1; i <= layers; ++i) radii.push_back(r0 + thickness * i / layers);
-  (void)r1;
 
   const unsigned int n_angles = axisym ? n / 2 + 1 : n;  // vertex columns
   const unsigned int n_sectors = axisym ? n / 2 : n;
@@ -622,9 +621,6 @@ HelmholtzResult HelmholtzRadiation::run(MPI_Comm comm) {
     const auto t1 = std::chrono::steady_clock::now();
     solve();
     const auto t2 = std::chrono::steady_clock::now();
-    if (prm.verbose)
-      std::cout << "  assemble " << std::chrono::duration<double>(t1 - t0).count() << " s, solve "
-                << std::chrono::duration<double>(t2 - t1).count() << " s\n";
     const auto p = microphone_pressures();
     for (std::size_t m = 0; m < nm; ++m)
       for (std::size_t i = 0; i < nx; ++i) {
@@ -633,7 +629,9 @@ HelmholtzResult HelmholtzRadiation::run(MPI_Comm comm) {
       }
     if (!prm.vtu_dir.empty()) r.vtu_files.push_back(output_results(f));
     if (prm.verbose)
-      std::cout << "  f = " << prm.frequencies[f] << " Hz solved (" << r.n_dofs
+      std::cout << "  f = " << prm.frequencies[f] << " Hz: assembled in "
+                << std::chrono::duration<double>(t1 - t0).count() << " s, solved in "
+                << std::chrono::duration<double>(t2 - t1).count() << " s (" << r.n_dofs
                 << " unknowns, process " << rank << ")\n";
   }
   // Every value comes from exactly one process and zeros from the others: the sum is exact.
