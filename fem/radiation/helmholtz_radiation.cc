@@ -39,6 +39,15 @@
 //     [ B_i   B_r ] [p_i] = [ F  ],   F_j = ωρ₀ ∫_Γb u Θ φ_j w ds,
 // solved by UMFPACK: a 2-D problem of 10⁴–10⁵ unknowns, factorised once per frequency and reused
 // for every motion (right-hand side).
+//
+// ## Microphones beyond the physical zone
+// Outside a circle of radius R_c that holds every body the field is a sum of outgoing modes,
+//     planar:        p(r, θ) = Σ_n c_n H_n⁽²⁾(kr)/H_n⁽²⁾(kR_c) e^{inθ},
+//     axisymmetric:  p(r, θ) = Σ_n a_n h_n⁽²⁾(kr)/h_n⁽²⁾(kR_c) P_n(cos θ),
+// whose coefficients are the FE field's on that circle: c_n by the trapezoidal rule in θ (spectral
+// for a periodic function), a_n = (2n+1)/2 ∫ p P_n d(cos θ) by Gauss–Legendre. Since |H_n(x)| falls
+// as x grows, continuing outward never amplifies the FE's error. So a microphone at 1 m costs no
+// more than one at 1 cm; R_c lies between the bodies and R₀.
 
 #include "radiation/helmholtz_radiation.h"
 
@@ -64,6 +73,9 @@
 #include <deal.II/numerics/data_out.h>
 #include <deal.II/numerics/vector_tools.h>
 
+#include <gsl/gsl_integration.h>
+#include <gsl/gsl_sf_bessel.h>
+
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -87,6 +99,36 @@ constexpr types::boundary_id kOuterBoundary = 100;  // the layer's outer circle:
 constexpr types::boundary_id kAxis = 50;            // axisymmetric: x = 0, natural condition
 // Body j's surface is boundary j + 1 and manifold kBodyManifold + j.
 constexpr types::manifold_id kPolarManifold = 0, kCellManifold = 1, kBodyManifold = 10;
+
+// Outgoing Hankel functions H_n⁽²⁾(x) (cylindrical) or h_n⁽²⁾(x) (spherical), n = 0 … up to
+// n_max, by upward recurrence from the exact first two (stable for the Hankel function: above
+// n ≈ x it is the dominant solution). Stops early where |h_n| would pass 1e250 (such modes are
+// below rounding at any point outside the circle).
+std::vector<cplx> outgoing_hankel(bool spherical, unsigned int n_max, double x) {
+  std::vector<cplx> h;
+  if (spherical) {
+    const cplx e = std::exp(cplx(0, -x));
+    h = {cplx(0, 1) * e / x, e * cplx(-x, 1) / (x * x)};
+  } else {
+    h = {cplx(gsl_sf_bessel_J0(x), -gsl_sf_bessel_Y0(x)),
+         cplx(gsl_sf_bessel_J1(x), -gsl_sf_bessel_Y1(x))};
+  }
+  for (unsigned int n = 1; n < n_max; ++n) {
+    const cplx next = (spherical ? 2.0 * n + 1 : 2.0 * n) / x * h[n] - h[n - 1];
+    if (!(std::abs(next) < 1e250)) break;
+    h.push_back(next);
+  }
+  return h;
+}
+
+// Legendre polynomials P_0 … P_n_max at μ.
+std::vector<double> legendre(unsigned int n_max, double mu) {
+  std::vector<double> p{1.0, mu};
+  for (unsigned int n = 1; n < n_max; ++n)
+    p.push_back(((2.0 * n + 1) * mu * p[n] - n * p[n - 1]) / (n + 1));
+  p.resize(n_max + 1);
+  return p;
+}
 
 // The layer's coefficients at a point: Λ (complex 2×2) and β.
 struct LayerCoefficients {
@@ -163,7 +205,8 @@ class HelmholtzRadiation {
   void setup_system();
   void assemble_system(double frequency);
   void solve();
-  std::vector<std::vector<cplx>> microphone_pressures() const;
+  std::vector<std::vector<cplx>> microphone_pressures(double wavenumber) const;
+  void setup_continuation();
   std::string output_results(std::size_t frequency_index) const;
 
   double weight(const Point<dim>& x) const {
@@ -186,7 +229,17 @@ class HelmholtzRadiation {
   SparseMatrix<double> system_matrix;
   std::vector<Vector<double>> system_rhs, solutions;
   // Each microphone's cell and reference-cell coordinates (found once).
-  std::vector<std::pair<DoFHandler<dim>::active_cell_iterator, Point<dim>>> microphone_cells;
+  using CellPoint = std::pair<DoFHandler<dim>::active_cell_iterator, Point<dim>>;
+  std::vector<CellPoint> microphone_cells;  // of the microphones not continued, in order
+  std::vector<bool> continued;              // microphone i lies beyond R₀
+  // The continuation circle: radius, modes, its points' cells, angles (planar) or Gauss nodes
+  // cos θ_j and weights (axisymmetric).
+  double r_c = 0;
+  unsigned int n_modes = 0;
+  std::vector<CellPoint> circle_cells;
+  std::vector<double> circle_angle, circle_weight;
+  // The pressure of each motion at the given points.
+  std::vector<std::vector<cplx>> values_at(const std::vector<CellPoint>& points) const;
 };
 
 HelmholtzRadiation::HelmholtzRadiation(const HelmholtzParameters& p)
@@ -199,13 +252,22 @@ HelmholtzRadiation::HelmholtzRadiation(const HelmholtzParameters& p)
   // the shortest wavelength thick (so the fastest wave turns through π in it) and a quarter of R₀.
   double extent = 0;
   for (const auto& b : prm.bodies) extent = std::max(extent, std::hypot(b.x, b.y) + b.radius);
-  double farthest = 0;
-  for (const auto& m : prm.microphones) farthest = std::max(farthest, std::hypot(m[0], m[1]));
-  r0 = prm.physical_radius > 0 ? prm.physical_radius : std::max(1.25 * extent, 1.1 * farthest);
-  if (r0 <= extent || r0 <= farthest)
+  // Microphones within 3× the bodies' extent are evaluated in the mesh (which then reaches past
+  // them); farther ones, and any beyond a given R₀, by the outgoing-mode continuation.
+  double farthest_near = 0, farthest = 0;
+  for (const auto& m : prm.microphones) {
+    const double r = std::hypot(m[0], m[1]);
+    farthest = std::max(farthest, r);
+    if (r <= 3 * extent) farthest_near = std::max(farthest_near, r);
+  }
+  const double default_r0 = farthest > 3 * extent ? std::max(1.5 * extent, 1.1 * farthest_near)
+                                                  : std::max(1.25 * extent, 1.1 * farthest_near);
+  r0 = prm.physical_radius > 0 ? prm.physical_radius : default_r0;
+  if (r0 <= 1.2 * extent)
     throw InputError("physical radius = " + std::to_string(r0) +
-                     " m: must exceed the bodies' extent (" + std::to_string(extent) +
-                     " m) and the farthest microphone (" + std::to_string(farthest) + " m)");
+                     " m: must exceed 1.2 x the bodies' extent (" + std::to_string(extent) + " m)");
+  r_c = extent + 0.8 * (r0 - extent);
+  for (const auto& m : prm.microphones) continued.push_back(std::hypot(m[0], m[1]) > r_c);
   // The layer's thickness does not set its absorption (the profile does, per frequency), only the
   // oscillations a wave makes in it: half the shortest wavelength, or R₀/2 if less. Its cells:
   // the near field falls like e^{−nγξ} in it (n = 1 for a cylinder's dipole, 2 for a sphere's), so
@@ -449,15 +511,50 @@ void HelmholtzRadiation::setup_system() {
   solutions.assign(prm.motions.size(), Vector<double>(dof_handler.n_dofs()));
 
   microphone_cells.clear();
-  for (const auto& m : prm.microphones) {
-    const Point<dim> x(m[0], m[1]);
+  for (std::size_t i = 0; i < prm.microphones.size(); ++i) {
+    const auto& m = prm.microphones[i];
+    if (continued[i]) continue;
     try {
-      microphone_cells.push_back(GridTools::find_active_cell_around_point(mapping, dof_handler, x));
+      microphone_cells.push_back(
+          GridTools::find_active_cell_around_point(mapping, dof_handler, Point<dim>(m[0], m[1])));
     } catch (...) {
       throw InputError("microphone (" + std::to_string(m[0]) + ", " + std::to_string(m[1]) +
                        ") m is not in the fluid");
     }
   }
+  setup_continuation();
+}
+
+// The continuation circle's points: modes up to kR_c + 40 at the highest frequency (the bodies'
+// near fields on R_c decay like (extent/R_c)^n ≈ 0.8^n), sampled by 2N + 16 equally spaced
+// angles (planar) or N + 16 Gauss–Legendre nodes in cos θ (axisymmetric).
+void HelmholtzRadiation::setup_continuation() {
+  circle_cells.clear(), circle_angle.clear(), circle_weight.clear();
+  if (std::none_of(continued.begin(), continued.end(), [](bool c) { return c; })) return;
+  const double k_max = 2 * M_PI / lambda_min;
+  n_modes = static_cast<unsigned int>(std::ceil(k_max * r_c)) + 40;
+  std::vector<Point<dim>> points;
+  if (prm.geometry == RadiationGeometry::planar) {
+    const unsigned int m = 2 * n_modes + 16;
+    for (unsigned int j = 0; j < m; ++j) {
+      const double t = 2 * M_PI * j / m;
+      circle_angle.push_back(t);
+      points.emplace_back(r_c * std::cos(t), r_c * std::sin(t));
+    }
+  } else {
+    const unsigned int m = n_modes + 16;
+    gsl_integration_glfixed_table* table = gsl_integration_glfixed_table_alloc(m);
+    for (unsigned int j = 0; j < m; ++j) {
+      double mu = 0, w = 0;
+      gsl_integration_glfixed_point(-1, 1, j, &mu, &w, table);
+      circle_angle.push_back(mu);  // cos θ_j
+      circle_weight.push_back(w);
+      points.emplace_back(r_c * std::sqrt(std::max(0.0, 1 - mu * mu)), r_c * mu);
+    }
+    gsl_integration_glfixed_table_free(table);
+  }
+  for (const auto& x : points)
+    circle_cells.push_back(GridTools::find_active_cell_around_point(mapping, dof_handler, x));
 }
 
 void HelmholtzRadiation::assemble_system(double frequency) {
@@ -546,10 +643,11 @@ void HelmholtzRadiation::solve() {
   }
 }
 
-std::vector<std::vector<cplx>> HelmholtzRadiation::microphone_pressures() const {
-  std::vector<std::vector<cplx>> p(prm.motions.size(), std::vector<cplx>(prm.microphones.size()));
-  for (std::size_t i = 0; i < microphone_cells.size(); ++i) {
-    const auto& [cell, unit_point] = microphone_cells[i];
+std::vector<std::vector<cplx>> HelmholtzRadiation::values_at(
+    const std::vector<CellPoint>& points) const {
+  std::vector<std::vector<cplx>> p(prm.motions.size(), std::vector<cplx>(points.size()));
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    const auto& [cell, unit_point] = points[i];
     FEValues<dim> values(mapping, fe, Quadrature<dim>(std::vector<Point<dim>>{unit_point}),
                          update_values);
     values.reinit(cell);
@@ -557,6 +655,57 @@ std::vector<std::vector<cplx>> HelmholtzRadiation::microphone_pressures() const 
     for (std::size_t m = 0; m < prm.motions.size(); ++m) {
       values.get_function_values(solutions[m], v);
       p[m][i] = cplx(v[0](0), v[0](1));
+    }
+  }
+  return p;
+}
+
+std::vector<std::vector<cplx>> HelmholtzRadiation::microphone_pressures(double k) const {
+  std::vector<std::vector<cplx>> p(prm.motions.size(), std::vector<cplx>(prm.microphones.size()));
+  const std::vector<std::vector<cplx>> direct = values_at(microphone_cells);
+  for (std::size_t i = 0, d = 0; i < prm.microphones.size(); ++i)
+    if (!continued[i]) {
+      for (std::size_t m = 0; m < prm.motions.size(); ++m) p[m][i] = direct[m][d];
+      ++d;
+    }
+  if (circle_cells.empty()) return p;
+  const bool spherical = prm.geometry == RadiationGeometry::axisymmetric;
+  const std::vector<cplx> h_c = outgoing_hankel(spherical, n_modes, k * r_c);
+  const std::vector<std::vector<cplx>> on_circle = values_at(circle_cells);
+  for (std::size_t i = 0; i < prm.microphones.size(); ++i) {
+    if (!continued[i]) continue;
+    const double x = prm.microphones[i][0], y = prm.microphones[i][1], r = std::hypot(x, y);
+    const std::vector<cplx> h_r = outgoing_hankel(spherical, n_modes, k * r);
+    const std::size_t n_max = std::min(h_c.size(), h_r.size()) - 1;
+    for (std::size_t m = 0; m < prm.motions.size(); ++m) {
+      const std::vector<cplx>& q = on_circle[m];
+      cplx sum = 0;
+      if (!spherical) {
+        // c_n = (1/M) Σ_j p_j e^{−inθ_j}; n and −n share |H_n| (H_{−n} = (−1)ⁿ H_n).
+        const double theta = std::atan2(y, x);
+        for (std::size_t n = 0; n <= n_max; ++n) {
+          cplx c_plus = 0, c_minus = 0;
+          for (std::size_t j = 0; j < q.size(); ++j) {
+            c_plus += q[j] * std::exp(cplx(0, -double(n) * circle_angle[j]));
+            c_minus += q[j] * std::exp(cplx(0, double(n) * circle_angle[j]));
+          }
+          c_plus /= double(q.size()), c_minus /= double(q.size());
+          const cplx ratio = h_r[n] / h_c[n];
+          sum += ratio * c_plus * std::exp(cplx(0, double(n) * theta));
+          if (n > 0) sum += ratio * c_minus * std::exp(cplx(0, -double(n) * theta));
+        }
+      } else {
+        // a_n = (2n+1)/2 Σ_j w_j p_j P_n(μ_j).
+        const std::vector<double> p_mic = legendre(n_max, y / r);
+        std::vector<cplx> a(n_max + 1, 0.0);
+        for (std::size_t j = 0; j < q.size(); ++j) {
+          const std::vector<double> p_j = legendre(n_max, circle_angle[j]);
+          for (std::size_t n = 0; n <= n_max; ++n) a[n] += circle_weight[j] * q[j] * p_j[n];
+        }
+        for (std::size_t n = 0; n <= n_max; ++n)
+          sum += (n + 0.5) * a[n] * h_r[n] / h_c[n] * p_mic[n];
+      }
+      p[m][i] = sum;
     }
   }
   return p;
@@ -621,7 +770,7 @@ HelmholtzResult HelmholtzRadiation::run(MPI_Comm comm) {
     const auto t1 = std::chrono::steady_clock::now();
     solve();
     const auto t2 = std::chrono::steady_clock::now();
-    const auto p = microphone_pressures();
+    const auto p = microphone_pressures(2 * M_PI * prm.frequencies[f] / prm.air.sound_speed);
     for (std::size_t m = 0; m < nm; ++m)
       for (std::size_t i = 0; i < nx; ++i) {
         flat[2 * ((f * nm + m) * nx + i)] = p[m][i].real();
