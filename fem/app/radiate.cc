@@ -412,8 +412,9 @@ CLI::App* add_radiate_command(CLI::App& app, RadiateOptions& o) {
                   "Coarse cells per body radius along its surface (default 4)");
   cmd->add_option("--refinements", o.refinements, "Global refinements of the coarse mesh");
   cmd->add_option("--physical-radius", o.physical_radius,
-                  "Radius of the physical zone R0 [m] (default: 1.1 x farthest microphone, "
-                  "1.25 x the bodies' extent)");
+                  "Radius of the meshed zone R0 [m] (default: 1.25 x the bodies' extent, or 1.1 "
+                  "x the farthest microphone within 3 x the extent; farther microphones are "
+                  "reached by outgoing-mode continuation)");
   cmd->add_option("--pml-thickness", o.pml_thickness,
                   "Layer thickness L [m] (default: min(shortest wavelength / 2, R0 / 2))");
   cmd->add_option("--pml-layers", o.pml_layers,

@@ -56,14 +56,17 @@ struct HelmholtzParameters {
   RadiationGeometry geometry = RadiationGeometry::planar;
   std::vector<RadiatingBody> bodies;  ///< one: meshed as a polar grid; more: by gmsh
   std::vector<SurfaceMotion> motions;
-  std::vector<std::array<double, 2>> microphones;  ///< FE-plane points [m], in the physical zone
-  std::vector<double> frequencies;                 ///< [Hz], > 0
+  /// FE-plane points [m] in the fluid: inside the mesh, or beyond it (continued by outgoing modes).
+  std::vector<std::array<double, 2>> microphones;
+  std::vector<double> frequencies;  ///< [Hz], > 0
   Air air;
   unsigned int degree = 4;            ///< polynomial degree of the FE_Q elements (and the mapping)
   double cells_per_wavelength = 1.5;  ///< coarse cell size ≤ λ_min / this, λ_min = c₀/f_max
   double cells_per_radius = 4;        ///< coarse cells per body radius along its surface (≥ 4)
   unsigned int refinements = 0;       ///< global refinements of the coarse mesh
-  double physical_radius = 0;   ///< R₀, radius of the physical zone about the origin [m]; 0: auto
+  /// R₀, radius of the meshed physical zone about the origin [m]; 0: max(1.25 × the bodies'
+  /// extent, 1.1 × the farthest microphone within 3 × the extent), 1.5 × the extent if farther.
+  double physical_radius = 0;
   double pml_thickness = 0;     ///< L [m]; 0: auto (min(λ_min/2, R₀/2))
   unsigned int pml_layers = 0;  ///< coarse cells across the layer; 0: auto (≥ 4, ≥ 2γ at f_min)
   double pml_attenuation = 12;  ///< σ₀: an outgoing wave decays by e^{−σ₀} across the layer
@@ -90,8 +93,8 @@ struct HelmholtzResult {
 /// Solves for every frequency and motion. Under MPI the frequencies are shared round-robin among
 /// the processes, each solving its own on the whole (small, 2-D) mesh with a direct solver; the
 /// results are then summed across processes, so every process returns the full result and it is
-/// the serial one to rounding. Throws InputError (bad parameters, a microphone outside the
-/// physical zone or inside a body) or std::runtime_error (gmsh, solver).
+/// the serial one exactly. Throws InputError (bad parameters, a microphone inside a body, a
+/// physical zone too small) or std::runtime_error (gmsh, solver).
 HelmholtzResult solve_helmholtz(const HelmholtzParameters& p, MPI_Comm comm);
 
 }  // namespace bearing::fem

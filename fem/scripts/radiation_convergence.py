@@ -14,11 +14,11 @@ import os
 import subprocess
 
 SOURCES = [
-    # name, radius [m] (608: ring (d_m - D)/2, ball D/2), microphones "r,angle"
-    ("cylinder-monopole", 5.7905e-3, ["0.01,30", "0.03,60"]),
-    ("cylinder-dipole", 5.7905e-3, ["0.01,30", "0.03,60"]),
-    ("sphere-monopole", 1.9845e-3, ["0.01,30", "0.03,60"]),
-    ("sphere-dipole", 1.9845e-3, ["0.01,30", "0.03,60"]),
+    # name, radius [m] (608: ring (d_m - D)/2, ball D/2), microphones "r,angle" (10 mm: in the mesh for the ring, continued for the ball; 1 m: continued)
+    ("cylinder-monopole", 5.7905e-3, ["0.01,30", "1,60"]),
+    ("cylinder-dipole", 5.7905e-3, ["0.01,30", "1,60"]),
+    ("sphere-monopole", 1.9845e-3, ["0.01,30", "1,60"]),
+    ("sphere-dipole", 1.9845e-3, ["0.01,30", "1,60"]),
 ]
 
 
