@@ -248,8 +248,7 @@ HelmholtzRadiation::HelmholtzRadiation(const HelmholtzParameters& p)
   const double f_max = *std::max_element(prm.frequencies.begin(), prm.frequencies.end());
   lambda_min = prm.air.sound_speed / f_max;
 
-  // The physical zone holds every body and microphone with a margin; the layer is at least half
-  // the shortest wavelength thick (so the fastest wave turns through π in it) and a quarter of R₀.
+  // The physical zone (radius R₀) holds every body with a margin.
   double extent = 0;
   for (const auto& b : prm.bodies) extent = std::max(extent, std::hypot(b.x, b.y) + b.radius);
   // Microphones within 3× the bodies' extent are evaluated in the mesh (which then reaches past
@@ -286,6 +285,9 @@ HelmholtzRadiation::HelmholtzRadiation(const HelmholtzParameters& p)
 
 void HelmholtzRadiation::check_parameters() const {
   if (prm.bodies.empty()) throw InputError("radiation: no body given");
+  if (prm.bodies.size() >= kAxis)  // boundary ids 1 … n of the bodies stay below the axis's
+    throw InputError("radiation: " + std::to_string(prm.bodies.size()) + " bodies: at most " +
+                     std::to_string(kAxis - 1));
   if (prm.motions.empty()) throw InputError("radiation: no surface motion given");
   if (prm.microphones.empty()) throw InputError("radiation: no microphone given");
   if (prm.frequencies.empty()) throw InputError("frequencies: none given");
