@@ -57,6 +57,22 @@ PolarPoint parse_microphone(const std::string& s) {
   return p;
 }
 
+// Air at 20 °C (or the case's), with --density / --sound-speed applied where given (0: not given).
+Air air_with_options(Air air, const RadiateOptions& o) {
+  if (o.density != 0) {
+    if (!(o.density > 0 && std::isfinite(o.density)))
+      throw InputError("--density = " + std::to_string(o.density) + " kg/m^3: must be positive");
+    air.density = o.density;
+  }
+  if (o.sound_speed != 0) {
+    if (!(o.sound_speed > 0 && std::isfinite(o.sound_speed)))
+      throw InputError("--sound-speed = " + std::to_string(o.sound_speed) +
+                       " m/s: must be positive");
+    air.sound_speed = o.sound_speed;
+  }
+  return air;
+}
+
 struct Comparison {
   double diff_db, diff_phase_deg;
 };
@@ -140,9 +156,7 @@ int run_single(const RadiateOptions& o, MPI_Comm comm, bool root) {
   if (!(o.radius > 0 && std::isfinite(o.radius)))
     throw InputError("--radius = " + std::to_string(o.radius) +
                      " m: the body's radius must be given and positive");
-  Air air;
-  if (o.density > 0) air.density = o.density;
-  if (o.sound_speed > 0) air.sound_speed = o.sound_speed;
+  const Air air = air_with_options(Air{}, o);
   const std::string reference = o.reference.empty() ? name : o.reference;
   const auto exact = make_source(reference, o.radius, air, "--reference");
   if (exact->cylindrical() != cylinder)
@@ -226,15 +240,17 @@ int run_bearing(const RadiateOptions& o, MPI_Comm comm, bool root) {
   const double ball_r = 0.5 * b.ball_diameter, pitch = 0.5 * b.pitch_diameter;
   const double ring_case =
       c.acoustics.enabled ? c.acoustics.ring_radius : 0.5 * b.inner_raceway_diameter();
+  if (!(o.gap >= 0 && std::isfinite(o.gap)))
+    throw InputError("--gap = " + std::to_string(o.gap) + " m: must be positive (0: 5 % of D)");
+  if (!std::isfinite(o.ball_angle))
+    throw InputError("--ball-angle: must be a finite angle in degrees");
   const double gap = o.gap > 0 ? o.gap : 0.05 * b.ball_diameter;
   if (gap >= 0.5 * ball_r)
     throw InputError("--gap = " + std::to_string(gap) + " m: must be below a quarter of D (" +
                      std::to_string(0.5 * ball_r) + " m)");
   // In the section the ball touches the ring's raceway; a mesh needs them apart.
   const double ring_r = std::min(ring_case, pitch - ball_r - gap);
-  Air air{c.acoustics.density, c.acoustics.sound_speed};
-  if (o.density > 0) air.density = o.density;
-  if (o.sound_speed > 0) air.sound_speed = o.sound_speed;
+  const Air air = air_with_options(Air{c.acoustics.density, c.acoustics.sound_speed}, o);
   if (o.ball_motion != "radial" && o.ball_motion != "breathing")
     throw InputError("--ball-motion = " + o.ball_motion + ": must be radial or breathing");
   const bool breathing = o.ball_motion == "breathing";
