@@ -67,8 +67,10 @@ struct HelmholtzParameters {
   /// R₀, radius of the meshed physical zone about the origin [m]; 0: max(1.25 × the bodies'
   /// extent, 1.1 × the farthest microphone within 3 × the extent), 1.5 × the extent if farther.
   double physical_radius = 0;
-  double pml_thickness = 0;     ///< L [m]; 0: auto (min(λ_min/2, R₀/2))
-  unsigned int pml_layers = 0;  ///< coarse cells across the layer; 0: auto (≥ 4, ≥ 2γ at f_min)
+  double pml_thickness = 0;  ///< L [m]; 0: auto (min(λ_min/2, R₀/2))
+  /// Coarse cells across the layer; 0: auto, the largest of 4, nγ at f_min (n = 1 planar, 2
+  /// axisymmetric: one e-fold of the near field per cell) and L / (λ_min / cells_per_wavelength).
+  unsigned int pml_layers = 0;
   double pml_attenuation = 12;  ///< σ₀: an outgoing wave decays by e^{−σ₀} across the layer
   std::string work_dir;         ///< gmsh's mesh file goes here (multi-body only)
   std::string vtu_dir;          ///< write one VTU per frequency here (empty: none)
