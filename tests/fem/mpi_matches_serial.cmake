@@ -1,24 +1,13 @@
 # Runs the coarse Hertz contact serially and under `mpirun -np 2`, and requires the same K and
 # exponent to 1e-8 (the CG tolerance is 1e-11; the contact sets are decided by the node owners).
 # -DBEARING_FEM=<exe> -DMPIEXEC=<mpiexec> -DCASE=<toml> -DOUT=<dir>
+include(${CMAKE_CURRENT_LIST_DIR}/serial_and_mpi.cmake)
+run_serial_and_mpi2(contact.json contact ${CASE} --race outer --cells 4 --grading 3 --steps 3
+                    --no-vtu --quiet)
 foreach(run serial mpi2)
-  set(cmd ${BEARING_FEM} contact ${CASE} --race outer --cells 4 --grading 3 --steps 3 --no-vtu
-          --quiet --out ${OUT}/${run})
-  if(run STREQUAL "mpi2")
-    set(cmd ${MPIEXEC} --allow-run-as-root --oversubscribe -np 2 ${cmd})
-  endif()
-  execute_process(COMMAND ${cmd} RESULT_VARIABLE rc)
-  if(NOT rc EQUAL 0)
-    message(FATAL_ERROR "${run} run failed (${rc}): ${cmd}")
-  endif()
-  file(READ ${OUT}/${run}/contact.json json_${run})
   string(JSON k_${run} GET "${json_${run}}" fe K)
   string(JSON n_${run} GET "${json_${run}}" fe exponent)
-  string(JSON p_${run} GET "${json_${run}}" mpi_processes)
 endforeach()
-if(NOT p_mpi2 EQUAL 2)
-  message(FATAL_ERROR "the mpirun run reports ${p_mpi2} processes")
-endif()
 # CMake has no floating point: compare with a tiny awk-free trick through math on scaled digits
 # is not possible, so let Python (DESIGN.md: /usr/bin/python3 is a project dependency) compare.
 execute_process(

@@ -2,22 +2,9 @@
 # under `mpirun -np 2`, and requires the same radiation.csv to 1e-8 relative (each frequency is
 # solved whole by one process, so it is the same computation).
 # -DBEARING_FEM=<exe> -DMPIEXEC=<mpiexec> -DCASE=<toml> -DOUT=<dir>
-foreach(run serial mpi2)
-  set(cmd ${BEARING_FEM} radiate --source bearing ${CASE} --frequencies 500,8000 --no-vtu --quiet
-          --out ${OUT}/${run})
-  if(run STREQUAL "mpi2")
-    set(cmd ${MPIEXEC} --allow-run-as-root --oversubscribe -np 2 ${cmd})
-  endif()
-  execute_process(COMMAND ${cmd} RESULT_VARIABLE rc)
-  if(NOT rc EQUAL 0)
-    message(FATAL_ERROR "${run} run failed (${rc}): ${cmd}")
-  endif()
-  file(READ ${OUT}/${run}/radiation.json json_${run})
-  string(JSON p_${run} GET "${json_${run}}" mpi_processes)
-endforeach()
-if(NOT p_mpi2 EQUAL 2)
-  message(FATAL_ERROR "the mpirun run reports ${p_mpi2} processes")
-endif()
+include(${CMAKE_CURRENT_LIST_DIR}/serial_and_mpi.cmake)
+run_serial_and_mpi2(radiation.json radiate --source bearing ${CASE} --frequencies 500,8000
+                    --no-vtu --quiet)
 execute_process(
   COMMAND /usr/bin/python3 -c "
 import csv, sys
