@@ -111,6 +111,41 @@ class PoisonedOscillator : public LinearOscillator {
   double t_bad_;
 };
 
+/// An oscillator q[0] (the 50 Hz LinearOscillator `oscillator`) beside a flywheel whose angle
+/// q[1] = φ [rad] is a cyclic DOF: J φ̈ = T(t) − b φ̇ − d φ̇|φ̇|, with T(t) = T from t_on on (0
+/// before) and NaN from t_nan on. No force depends on φ. With d = 0 and t_on = 0, φ̇ spins up to
+/// Ω = T/b with time constant τ = J/b:
+///     φ̇(t) = Ω (1 − e^{−t/τ}),   φ(t) = φ(0) + Ω (t − τ (1 − e^{−t/τ}))   (φ̇(0) = 0),
+/// so φ passes 1 mm-as-a-number after ~0.1 ms and reaches ~490 rad at 0.5 s.
+class OscillatorAndFlywheel : public MechanicalSystem {
+ public:
+  static constexpr double kOmegaN = 6.283185307179586 * 50;          // [rad/s]
+  static constexpr double kStiffness = kOmegaN * kOmegaN;            // [N/m] on 1 kg
+  LinearOscillator oscillator{1.0, kStiffness, 2 * 0.01 * kOmegaN};  // ζ = 0.01
+  double J = 2e-4, b = 2e-2, T = 20.0, d = 0.0;  // [kg m², N m s, N m, N m s²]: τ = 10 ms
+  double t_on = 0.0, t_nan = std::numeric_limits<double>::infinity();  // [s]
+  bool angle_is_cyclic = true;
+
+  int dofs() const override { return 2; }
+  void mass(double* m) const override {
+    m[0] = oscillator.m();
+    m[1] = J;
+  }
+  void force(double t, const double* q, const double* v, double* f) const override {
+    oscillator.force(t, q, v, f);
+    const double torque = t < t_on ? 0.0 : T;
+    f[1] = torque - b * v[1] - d * v[1] * std::abs(v[1]);
+    if (t >= t_nan) f[1] = std::numeric_limits<double>::quiet_NaN();
+  }
+  bool cyclic(int i) const override { return angle_is_cyclic && i == 1; }
+
+  double omega() const { return T / b; }  ///< Ω [rad/s] (d = 0)
+  double tau() const { return J / b; }    ///< τ [s]
+  /// φ̇(t) and φ(t) − φ(0) for d = 0, t_on = 0, φ̇(0) = 0.
+  double spin(double t) const { return omega() * -std::expm1(-t / tau()); }
+  double turned(double t) const { return omega() * (t + tau() * std::expm1(-t / tau())); }
+};
+
 // ---------------------------------------------------------------------------------------------
 // Helpers
 
@@ -625,7 +660,274 @@ TEST(IntegratorBlowUp, MessageNamesTheStep) {
 }
 
 // ---------------------------------------------------------------------------------------------
-// (8) Settings and call errors
+// (8) Cyclic DOFs: a flywheel's angle beside an oscillator
+
+/// The time [s] a blow-up message reports ("… at t = 0.2001 s …"), NaN if none.
+double reported_time(const std::string& message) {
+  const std::size_t at = message.find("t = ");
+  return at == std::string::npos ? std::nan("") : std::stod(message.substr(at + 4));
+}
+
+TEST(IntegratorCyclic, AllMethodsFollowTheFlywheel) {
+  // 0.5 s: the flywheel spins up to Ω = 1000 rad/s (τ = 10 ms) and turns ~490 rad, 4.9e5 times
+  // max_displacement as a number, while the oscillator (50 Hz, ζ = 0.01) rings down from q0.
+  // The fixed-step bounds are the methods' leading error terms at dt = 1e-4 s (z = dt/τ = 0.01,
+  // ω_n dt = 0.031), times 1.5 for the next order (observed at 1.0–1.01 of the leading term for
+  // the spin speed and the oscillator):
+  // - newmark (trapezoidal rule): u = φ̇ − Ω decays by (1 − z/2)/(1 + z/2) = e^{−z − z³/12 − …}
+  //   per step, so |δφ̇| ≈ Ω (t/τ) e^{−t/τ} z²/12 ≤ Ω z²/(12e). φ is the trapezoidal quadrature of
+  //   that φ̇: ≤ dt²/12 |φ̈(t) − φ̈(0)| + ∫|δφ̇| ≤ τΩz²/12 + τΩz²/12 (no 1.5 needed: observed 0.18
+  //   of it). The oscillator's phase error ω_n t (ω_n dt)²/12 on the decaying q0 e^{−ζω_n t}:
+  //   ≤ q0 (ω_n dt)²/(12ζe).
+  // - rk4: R(−z) = e^{−z} (1 + z⁵/120 + …): |δφ̇| ≤ Ω z⁴/(120e); φ gets the local errors
+  //   dt⁵|φ⁽⁵⁾|/120 summed plus ∫|δφ̇|, ≤ 2τΩz⁴/120, and the rounding of 5000 additions to
+  //   |φ| ≤ 490 rad, 5000 ε |φ| (observed 0.14 of both); the oscillator: ≤ q0 (ω_n dt)⁴/(120ζe).
+  // The adaptive methods control φ̇'s error locally to rtol |φ̇| (a few rtol Ω globally) and φ is
+  // its integral, so 10 rtol Ω for the spin speed and 10 rtol Ω t for the angle (observed at most
+  // 1.3 and 0.46 of rtol Ω and rtol Ω t, bdf). Their oscillator is compared with the same
+  // oscillator integrated alone (the accuracy of the methods on an oscillator is tested above).
+  const OscillatorAndFlywheel sys;
+  const double q0 = 1e-4, omega = sys.omega(), tau = sys.tau();
+  const double wn = OscillatorAndFlywheel::kOmegaN, zeta = 0.01;
+  const std::vector<double> times = grid(0.0, 1e-3, 500);
+  const double dt = 1e-4, z = dt / tau, wh = wn * dt, e = std::exp(1.0);
+  const double eps = std::numeric_limits<double>::epsilon();
+  const double turns = sys.turned(times.back());
+  for (const std::string& method : integrator_names()) {
+    const bool fixed = method == "rk4" || method == "newmark";
+    for (const double rtol : {1e-6, 1e-8}) {
+      if (fixed && rtol == 1e-6) continue;  // rtol is only Newmark's Newton tolerance
+      const IntegratorSettings s = settings(method, dt, rtol, 1e-6 * rtol * q0);
+      const std::string what = method + " rtol " + solvers_detail::format_brief(rtol);
+      Trajectory r;
+      ASSERT_NO_THROW(r = run(s, sys, 0.0, {q0, 0.0}, {0.0, 0.0}, times)) << what;
+      ASSERT_EQ(r.t.size(), times.size()) << what;
+      EXPECT_GT(r.q.back(), 1e5 * s.max_displacement) << what;  // the angle ran far past the bound
+      const Trajectory alone = run(s, sys.oscillator, 0.0, {q0}, {0.0}, times);
+      double spin_bound = 10 * rtol * omega, angle_bound = 10 * rtol * omega, q_bound = 0.0;
+      bool angle_grows = false;  // the adaptive angle bound grows with t
+      if (method == "rk4") {
+        spin_bound = 1.5 * omega * std::pow(z, 4) / (120 * e);
+        angle_bound = 2 * tau * omega * std::pow(z, 4) / 120 + 5000 * eps * turns;
+        q_bound = 1.5 * q0 * std::pow(wh, 4) / (120 * zeta * e);
+      } else if (method == "newmark") {
+        spin_bound = 1.5 * omega * z * z / (12 * e);
+        angle_bound = tau * omega * z * z / 6;
+        q_bound = 1.5 * q0 * wh * wh / (12 * zeta * e);
+      } else {
+        angle_grows = true;
+      }
+      double spin_error = 0, angle_excess = 0, q_error = 0, alone_error = 0, q_change = 0;
+      for (std::size_t k = 0; k < r.t.size(); ++k) {
+        const double t = r.t[k];
+        double q, v;
+        sys.oscillator.exact(t, q0, 0.0, &q, &v);
+        q_error = std::max(q_error, std::abs(r.q[2 * k] - q));
+        alone_error = std::max(alone_error, std::abs(alone.q[k] - q));
+        q_change = std::max(q_change, std::abs(r.q[2 * k] - alone.q[k]));
+        spin_error = std::max(spin_error, std::abs(r.v[2 * k + 1] - sys.spin(t)));
+        angle_excess = std::max(angle_excess, std::abs(r.q[2 * k + 1] - sys.turned(t)) /
+                                                  (angle_grows ? angle_bound * t : angle_bound));
+      }
+      EXPECT_LT(spin_error, spin_bound) << what;
+      EXPECT_LT(angle_excess, 1.0) << what;
+      if (q_bound > 0) EXPECT_LT(q_error, q_bound) << what;
+      // The flywheel leaves the oscillator as it is alone (identical for all but bdf, whose step
+      // and order choice see both DOFs: 3 % of its error).
+      EXPECT_LE(q_change, 0.1 * alone_error) << what;
+    }
+  }
+}
+
+TEST(IntegratorCyclic, WithoutTheFlagTheAngleBlowsUp) {
+  // The same system with cyclic() false: the angle passes 1 mm-as-a-number after ~0.14 ms, and
+  // every method stops there, before the first output (1 ms), naming the DOF and the bound.
+  OscillatorAndFlywheel sys;
+  sys.angle_is_cyclic = false;
+  for (const std::string& method : integrator_names()) {
+    int outputs = 0;
+    std::string message;
+    try {
+      make_integrator(settings(method, 1e-4, 1e-6, 1e-16))
+          ->integrate(sys, 0.0, {1e-4, 0.0}, {0.0, 0.0}, grid(0.0, 1e-3, 500),
+                      [&](double, const double*, const double*, const double*) { ++outputs; });
+    } catch (const SolverError& e) {
+      message = e.what();
+    }
+    EXPECT_NE(message.find("|q[1]|"), std::string::npos) << method << ": " << message;
+    EXPECT_NE(message.find("exceeds the blow-up bound 0.001 m"), std::string::npos)
+        << method << ": " << message;
+    EXPECT_LT(reported_time(message), 1e-3) << method << ": " << message;
+    EXPECT_EQ(outputs, 0) << method;
+  }
+}
+
+TEST(IntegratorCyclic, NonFiniteTorqueIsCaught) {
+  // The exemption is from the bound only: a torque that turns NaN at 0.2 s (when φ ≈ 190 rad)
+  // still stops every method at that time, before the observer sees a non-finite value.
+  OscillatorAndFlywheel sys;
+  sys.t_nan = 0.2;
+  for (const std::string& method : integrator_names()) {
+    bool all_finite = true;
+    double last = -1.0, last_angle = 0.0;
+    std::string message;
+    try {
+      make_integrator(settings(method, 1e-4, 1e-6, 1e-16))
+          ->integrate(sys, 0.0, {1e-4, 0.0}, {0.0, 0.0}, grid(0.0, 1e-3, 500),
+                      [&](double t, const double* q, const double* v, const double* a) {
+                        for (int i = 0; i < 2; ++i)
+                          all_finite = all_finite && std::isfinite(q[i]) && std::isfinite(v[i]) &&
+                                       std::isfinite(a[i]);
+                        last = t;
+                        last_angle = q[1];
+                      });
+    } catch (const SolverError& e) {
+      message = e.what();
+    }
+    EXPECT_NE(message.find(method), std::string::npos) << method << ": " << message;
+    EXPECT_NE(message.find("solver.dt"), std::string::npos) << method << ": " << message;
+    const double t_bad = reported_time(message);
+    EXPECT_GE(t_bad, sys.t_nan) << method << ": " << message;
+    EXPECT_LT(t_bad, sys.t_nan + 0.01) << method << ": " << message;
+    EXPECT_TRUE(all_finite) << method;
+    EXPECT_GE(last, 0.19) << method;  // the outputs went on until the NaN
+    EXPECT_LT(last, sys.t_nan) << method;
+    EXPECT_GT(last_angle, 100.0) << method;
+  }
+}
+
+TEST(IntegratorCyclic, AngleOffsetChangesNothing) {
+  // No force depends on the angle, so starting it at 1e4 or 1e7 rad instead of 0 must leave the
+  // steps and the spin speed as they are, up to the rounding of the larger angle (ulp ≤ ε φ0).
+  // The flywheel here has quadratic drag (J φ̈ = T − d φ̇|φ̇|, Ω = 1000 rad/s), so Newmark's
+  // Newton takes more than one iteration; the fixed-step methods also get the torque switched on
+  // abruptly at 20.5 ms, where Newton's first correction is large. The oscillator rests, so the
+  // flywheel alone decides when Newton has converged. Newmark derives φ̇ = 2/h (x − qₙ) − φ̇ₙ from
+  // the angle's increment: rounding ε φ0 in x gives 2ε φ0/dt per step, ~√steps of them adding up,
+  // so the spin speeds may differ by 10 · 2ε φ0/dt · √1000 (1.4e-5 rad/s at 1e4 rad; observed
+  // 3e-7), and the angle increments by that times the 0.1 s plus 1000 roundings ε φ0. Testing
+  // Newton's correction against the accumulated angle (rtol |x|, 0.01 rad at 1e4 rad) instead of
+  // the increment gave 9.5e-3 rad/s and 8e-5 rad; without the rounding floor 8ε|x| the increment
+  // test could not be met at 1e7 rad (Newton stalled at the torque switch).
+  OscillatorAndFlywheel sys;
+  sys.b = 0.0;
+  sys.d = sys.T / 1e6;
+  const double dt = 1e-4;
+  const std::vector<double> times = grid(0.0, 1e-3, 100);
+  const double eps = std::numeric_limits<double>::epsilon();
+  for (const std::string& method : integrator_names()) {
+    const bool fixed = method == "rk4" || method == "newmark";
+    for (const double t_on : {0.0, 0.0205}) {
+      if (t_on > 0 && !fixed) continue;  // a force step is not for error-controlled methods
+      sys.t_on = t_on;
+      const IntegratorSettings s = settings(method, dt, 1e-6, 1e-12);
+      const Trajectory base = run(s, sys, 0.0, {0.0, 0.0}, {0.0, 0.0}, times);
+      ASSERT_GT(base.v.back(), 0.99 * 1000.0) << method;  // spun up
+      for (const double phi0 : {1e4, 1e7}) {
+        const std::string what = method + " t_on " + solvers_detail::format_brief(t_on) + " phi0 " +
+                                 solvers_detail::format_brief(phi0);
+        Trajectory r;
+        ASSERT_NO_THROW(r = run(s, sys, 0.0, {0.0, phi0}, {0.0, 0.0}, times)) << what;
+        ASSERT_EQ(r.t.size(), base.t.size()) << what;
+        EXPECT_EQ(r.stats.steps, base.stats.steps) << what;
+        if (!fixed) EXPECT_EQ(r.stats.rejected_steps, base.stats.rejected_steps) << what;
+        const double spin_bound = 10 * 2 * eps * phi0 / dt * std::sqrt(1000.0);
+        const double angle_bound = spin_bound * times.back() + 1000 * eps * phi0;
+        double spin_change = 0, angle_change = 0;
+        for (std::size_t k = 0; k < r.t.size(); ++k) {
+          spin_change = std::max(spin_change, std::abs(r.v[2 * k + 1] - base.v[2 * k + 1]));
+          angle_change =
+              std::max(angle_change, std::abs((r.q[2 * k + 1] - phi0) - base.q[2 * k + 1]));
+          EXPECT_EQ(r.q[2 * k], 0.0) << what;
+        }
+        EXPECT_LT(spin_change, spin_bound) << what;
+        EXPECT_LT(angle_change, angle_bound) << what;
+      }
+    }
+  }
+}
+
+TEST(IntegratorCyclic, AngleDoesNotDriveTheSteps) {
+  // The adaptive methods with the flag against the same run without it but with the bound raised
+  // to 1e6, so that the angle enters the error control as a displacement (atol + rtol |φ|): never
+  // more steps, or attempts, with the flag. Both runs spin up from φ = 0, where the angle's
+  // tolerance is atol. (a) Beside the ringing oscillator of AllMethodsFollowTheFlywheel, which
+  // limits the steps anyway: observed 1002/1002, 2475/2475 (rkf45), 202/202, 302/302 (rk8pd),
+  // 2524/2566, 6127/6180 (bdf) steps at rtol 1e-6/1e-8. (b) The quadratic-drag flywheel of
+  // AngleOffsetChangesNothing with the oscillator at rest, so nothing else limits the steps:
+  // 30/31, 64/66, 14/14, 20/21, and for bdf 82/149 and 158/245, where the angle's error alone
+  // cost it 55–80 % more steps.
+  for (const bool alone : {false, true}) {
+    OscillatorAndFlywheel sys;
+    double q0 = 1e-4;
+    std::vector<double> times = grid(0.0, 1e-3, 500);
+    if (alone) {
+      sys.b = 0.0;
+      sys.d = sys.T / 1e6;
+      q0 = 0.0;
+      times = grid(0.0, 1e-3, 100);
+    }
+    for (const std::string method : {"rkf45", "rk8pd", "bdf"}) {
+      for (const double rtol : {1e-6, 1e-8}) {
+        IntegratorSettings s = settings(method, 1e-4, rtol, alone ? 1e-12 : 1e-6 * rtol * q0);
+        const std::string what = method + (alone ? " alone" : " beside the oscillator") + " rtol " +
+                                 solvers_detail::format_brief(rtol);
+        sys.angle_is_cyclic = true;
+        const Trajectory cyclic = run(s, sys, 0.0, {q0, 0.0}, {0.0, 0.0}, times);
+        s.max_displacement = 1e6;
+        sys.angle_is_cyclic = false;
+        const Trajectory plain = run(s, sys, 0.0, {q0, 0.0}, {0.0, 0.0}, times);
+        EXPECT_LE(cyclic.stats.steps, plain.stats.steps) << what;
+        EXPECT_LE(cyclic.stats.steps + cyclic.stats.rejected_steps,
+                  plain.stats.steps + plain.stats.rejected_steps)
+            << what;
+        if (alone && method == "bdf") EXPECT_LT(cyclic.stats.steps, plain.stats.steps) << what;
+        RecordProperty(
+            method + (alone ? "_alone_" : "_beside_") + solvers_detail::format_brief(rtol) +
+                "_steps",
+            std::to_string(cyclic.stats.steps) + "/" + std::to_string(plain.stats.steps));
+      }
+    }
+  }
+}
+
+TEST(IntegratorCyclic, BlowUpCheckBoundsOnlyTheOthers) {
+  // check_state directly: the cyclic DOF passes any finite value and fails ±Inf and NaN, which no
+  // integration above can hand it; the other DOF keeps the bound and its message.
+  using solvers_detail::check_state;
+  const OscillatorAndFlywheel sys;
+  const std::vector<double> bound = solvers_detail::displacement_bounds(sys, 1e-3);
+  ASSERT_EQ(bound.size(), 2u);
+  EXPECT_EQ(bound[0], 1e-3);
+  const double v[2] = {0.0, 0.0};
+  const auto message = [&](double q0, double q1) -> std::string {
+    const double q[2] = {q0, q1};
+    try {
+      check_state("rk4", 0.5, 7, 1e-5, q, v, 2, bound.data());
+    } catch (const SolverError& e) {
+      return e.what();
+    }
+    return "";
+  };
+  EXPECT_EQ(message(0.0, 1e300), "");
+  EXPECT_EQ(message(0.0, -1e300), "");
+  EXPECT_NE(message(0.0, std::numeric_limits<double>::infinity()).find("q[1] = inf"),
+            std::string::npos);
+  EXPECT_NE(message(0.0, -std::numeric_limits<double>::infinity()).find("q[1] = -inf"),
+            std::string::npos);
+  EXPECT_NE(message(0.0, std::nan("")).find("q[1] = nan"), std::string::npos);
+  const std::string bounded = message(2e-3, 1e300);
+  EXPECT_NE(bounded.find("|q[0]| = 0.002 m exceeds the blow-up bound 0.001 m"), std::string::npos)
+      << bounded;
+  EXPECT_NE(bounded.find("t = 0.5 s (step 7, dt = 1e-05 s)"), std::string::npos) << bounded;
+  // Without the flag both DOFs keep the bound.
+  OscillatorAndFlywheel plain;
+  plain.angle_is_cyclic = false;
+  EXPECT_EQ(solvers_detail::displacement_bounds(plain, 1e-3), (std::vector<double>{1e-3, 1e-3}));
+}
+
+// ---------------------------------------------------------------------------------------------
+// (9) Settings and call errors
 
 std::string input_error(const IntegratorSettings& s) {
   try {

@@ -11,8 +11,9 @@
 // not use it, and a difference in t would cost two force evaluations for nothing.
 //
 // Error control, dense output and the blow-up check are those of the adaptive Runge–Kutta
-// methods (gsl_adaptive.cc): |err_i| ≤ atol s_i + rtol |y_i|, s_i = 1 for displacements and the
-// DOF's own frequency ω_i for velocities; solver.dt is the first step, the steps go freely to the
+// methods (gsl_adaptive.cc): |err_i| ≤ atol s_i + rtol |y_i|, s_i = 1 for displacements (a huge
+// scale for a cyclic DOF's angle, whose error no force feels) and the DOF's own frequency ω_i for
+// velocities; solver.dt is the first step, the steps go freely to the
 // last output time, and the outputs inside a step are quintic Hermite interpolants of q (order 5,
 // at least msbdf's order 1–5) from q, v, a at the step's ends, v their derivative. msbdf's
 // dydt_out (the end state's y', from which a comes) is one force evaluation per attempted step.

@@ -40,6 +40,11 @@
 // bearing) or far too loose for the displacements. Where ω_i is 0 (a DOF that is free or whose
 // contacts are open at t0) or not finite, s_i = 1/solver.dt, the frequency the user resolves.
 // The per-DOF scale also keeps a slow heavy DOF from inheriting the tolerance of a fast one.
+// A cyclic DOF (MechanicalSystem::cyclic: a spin angle no force depends on) has s_i = 1e300 for
+// its displacement: its error feeds back into nothing, and rtol |y_i| of an angle that grows
+// without bound would tighten or loosen with the angle's history, so atol s_i (≥ 1e288 rad for
+// atol ≥ 1e-12, finite for atol < 1e8) makes sure it never limits the step. Its velocity (the
+// spin speed, which forces do depend on) keeps the ω_i or 1/solver.dt scale above.
 //
 // GSL's default error handler aborts; the integrators check every return code instead, and the
 // application should call gsl_set_error_handler_off() once at start-up (a process-wide setting
@@ -64,6 +69,10 @@ namespace bearing {
 namespace solvers_detail {
 
 namespace {
+
+// The absolute-tolerance scale of a cyclic displacement: large enough that its error never limits
+// the step, finite so that GSL's error ratios stay numbers (see the top).
+constexpr double kCyclicScale = 1e300;
 
 // y' = [v, M⁻¹ f]; params is a GslContext*. A model exception is parked, and a non-finite force
 // recorded, and either is reported as a bad function, which makes GSL return at once: a
@@ -131,7 +140,8 @@ IntegrationStats integrate_gsl(const std::string& method, const gsl_odeiv2_step_
   const std::vector<double> inv_mass = check_call(method, system, t0, q0, v0, output_times);
   const int n = system.dofs();
   const auto dim = static_cast<std::size_t>(2 * n);
-  const double bound = settings.max_displacement;
+  const std::vector<double> bounds = displacement_bounds(system, settings.max_displacement);
+  const double* const bound = bounds.data();
   IntegrationStats stats;
 
   std::vector<double> y(dim), a(static_cast<std::size_t>(n));
@@ -148,8 +158,11 @@ IntegrationStats integrate_gsl(const std::string& method, const gsl_odeiv2_step_
   context.dfdq = dfdq.data();
   context.dfdv = dfdv.data();
 
-  // Absolute-tolerance scales: 1 for displacements, ω_i for velocities (see the top).
+  // Absolute-tolerance scales: 1 for displacements (kCyclicScale for a cyclic one), ω_i for
+  // velocities (see the top).
   std::vector<double> scale(dim, 1.0);
+  for (int i = 0; i < n; ++i)
+    if (system.cyclic(i)) scale[static_cast<std::size_t>(i)] = kCyclicScale;
   system.force_jacobian(t0, q0.data(), v0.data(), dfdq.data(), dfdv.data());
   ++context.jacobian_evaluations;
   for (int i = 0; i < n; ++i) {

@@ -10,13 +10,16 @@
 //   costs; the default central differences call force() 4n times inside it, not counted above.
 // - Blow-up: after every accepted step all q_i, v_i must be finite and |q_i| ≤ max_displacement,
 //   checked before the observer can see the state; otherwise SolverError names the time, the step
-//   and dt and suggests a smaller solver.dt.
+//   and dt and suggests a smaller solver.dt. A cyclic DOF (MechanicalSystem::cyclic, a spin
+//   angle that grows without bound) is exempt from the bound and must only stay finite.
 
 #include "bearing/solvers/integrator.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstddef>
 #include <cstdio>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -121,18 +124,26 @@ void throw_blow_up(const std::string& method, double t, long step, double dt,
                     "; reduce solver.dt or check the load/clearance");
 }
 
+std::vector<double> displacement_bounds(const MechanicalSystem& system, double max_displacement) {
+  const int n = system.dofs();
+  std::vector<double> bound(static_cast<std::size_t>(std::max(n, 0)), max_displacement);
+  for (int i = 0; i < n; ++i)
+    if (system.cyclic(i)) bound[static_cast<std::size_t>(i)] = std::numeric_limits<double>::max();
+  return bound;
+}
+
 void report_bad_state(const std::string& method, double t, long step, double dt, const double* q,
-                      const double* v, int n, double max_displacement) {
+                      const double* v, int n, const double* bound) {
   for (int i = 0; i < n; ++i) {
     const std::string dof = "[" + std::to_string(i) + "]";
     if (!std::isfinite(q[i]))
       throw_blow_up(method, t, step, dt, "q" + dof + " = " + format_brief(q[i]));
     if (!std::isfinite(v[i]))
       throw_blow_up(method, t, step, dt, "v" + dof + " = " + format_brief(v[i]));
-    if (std::abs(q[i]) > max_displacement)
+    if (std::abs(q[i]) > bound[i])
       throw_blow_up(method, t, step, dt,
                     "|q" + dof + "| = " + format_brief(std::abs(q[i])) +
-                        " m exceeds the blow-up bound " + format_brief(max_displacement) + " m");
+                        " m exceeds the blow-up bound " + format_brief(bound[i]) + " m");
   }
   throw_blow_up(method, t, step, dt, "the state is not valid");  // not reached
 }

@@ -63,19 +63,24 @@ std::vector<double> check_call(const std::string& method, const MechanicalSystem
                                const std::vector<double>& q0, const std::vector<double>& v0,
                                const std::vector<double>& output_times);
 
-/// The blow-up test after an accepted step: every q_i and v_i finite and |q_i| ≤ max_displacement.
-/// Throws SolverError naming the method, the time t [s], the step number, the step dt [s], what
-/// went wrong, and that solver.dt should be reduced. `step` 0 means the initial state. The test
-/// is inline (it runs after every step); the message is built out of line.
+/// The per-DOF blow-up bounds on |q_i| for check_state, built once per integrate() call:
+/// max_displacement [m], or for a cyclic DOF (MechanicalSystem::cyclic) the largest finite double,
+/// which any finite angle passes and ±Inf and NaN fail.
+std::vector<double> displacement_bounds(const MechanicalSystem& system, double max_displacement);
+
+/// The blow-up test after an accepted step: every q_i and v_i finite and |q_i| ≤ bound[i] (from
+/// displacement_bounds). Throws SolverError naming the method, the time t [s], the step number,
+/// the step dt [s], what went wrong, and that solver.dt should be reduced. `step` 0 means the
+/// initial state. The test is inline (it runs after every step); the message is built out of line.
 [[noreturn]] void report_bad_state(const std::string& method, double t, long step, double dt,
-                                   const double* q, const double* v, int n,
-                                   double max_displacement);
+                                   const double* q, const double* v, int n, const double* bound);
 inline void check_state(const std::string& method, double t, long step, double dt, const double* q,
-                        const double* v, int n, double max_displacement) {
+                        const double* v, int n, const double* bound) {
   bool good = true;
-  // |q| ≤ bound is false for NaN; v − v is 0 for finite v and NaN otherwise.
-  for (int i = 0; i < n; ++i) good &= (std::abs(q[i]) <= max_displacement) & (v[i] - v[i] == 0.0);
-  if (!good) report_bad_state(method, t, step, dt, q, v, n, max_displacement);
+  // |q| ≤ bound is false for NaN and ±Inf (the bound is finite); v − v is 0 for finite v and NaN
+  // otherwise.
+  for (int i = 0; i < n; ++i) good &= (std::abs(q[i]) <= bound[i]) & (v[i] - v[i] == 0.0);
+  if (!good) report_bad_state(method, t, step, dt, q, v, n, bound);
 }
 
 /// A number for messages: 7 significant digits ("0.001956513", "5.651348e-05").

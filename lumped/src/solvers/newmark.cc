@@ -18,6 +18,14 @@
 // failure (no convergence in kMaxIterations, or a non-finite force) throws SolverError with the
 // time, step and residual, suggesting a smaller solver.dt.
 //
+// For a cyclic DOF (MechanicalSystem::cyclic, a spin angle that grows without bound) rtol applies
+// to its increment over the step instead: |Δxᵢ| ≤ atol + max(rtol, 8ε) |xᵢ − qₙ,ᵢ| + 8ε |xᵢ|. The
+// step derives the velocity from the increment, vₙ₊₁ = 2/h (x − qₙ) − vₙ, so rtol |xᵢ| with an
+// accumulated angle of hundreds of rad would accept a correction many times the increment's rtol
+// and give a wrong spin speed. The rounding floor 8ε|xᵢ| stays: x is only resolved to its ulp
+// (≤ ε|xᵢ|), and no smaller correction can be applied (at 1e7 rad with atol 1e-12, Newton stalled
+// without it).
+//
 // Fixed step dt, shortened only to land on an output time. The observer's acceleration is a
 // fresh force evaluation at the output point (counted), which agrees with the scheme's aₙ₊₁ to
 // the Newton tolerance; the recursion carries the scheme's own aₙ₊₁.
@@ -68,7 +76,8 @@ IntegrationStats Newmark::integrate(const MechanicalSystem& system, double t0,
   const double dt = settings_.dt;
   const double rtol = settings_.rtol;
   const double atol = settings_.atol;
-  const double bound = settings_.max_displacement;
+  const std::vector<double> bounds = displacement_bounds(system, settings_.max_displacement);
+  const double* const bound = bounds.data();
   constexpr double kRoundingFloor = 8.0 * 2.220446049250313e-16;
   IntegrationStats stats;
 
@@ -81,6 +90,10 @@ IntegrationStats Newmark::integrate(const MechanicalSystem& system, double t0,
   RowMajor dfdq(n, n), dfdv(n, n);
   Eigen::MatrixXd jacobian(n, n);
   Eigen::PartialPivLU<Eigen::MatrixXd> lu(n);
+  // Newton's tolerance for DOF i is atol + max(rtol, 8ε) |xᵢ − cᵢ qₙ,ᵢ| + cᵢ 8ε |xᵢ| with cᵢ = 1
+  // for a cyclic DOF (rtol on its increment over the step) and 0 otherwise (see the top).
+  Eigen::VectorXd cyclic(n);
+  for (int i = 0; i < n; ++i) cyclic[i] = system.cyclic(i) ? 1.0 : 0.0;
   double h_factored = 0.0;  // step size the LU factors were built for; 0: none yet
 
   check_state(method, t0, 0, dt, q.data(), v.data(), n, bound);
@@ -128,9 +141,11 @@ IntegrationStats Newmark::integrate(const MechanicalSystem& system, double t0,
         dx.noalias() = lu.solve(residual);
         x -= dx;
         norm = 0.0;
-        for (int i = 0; i < n; ++i)
-          norm = std::max(
-              norm, std::abs(dx[i]) / (atol + std::max(rtol, kRoundingFloor) * std::abs(x[i])));
+        for (int i = 0; i < n; ++i) {
+          const double scale = std::max(rtol, kRoundingFloor) * std::abs(x[i] - cyclic[i] * q[i]) +
+                               cyclic[i] * kRoundingFloor * std::abs(x[i]);
+          norm = std::max(norm, std::abs(dx[i]) / (atol + scale));
+        }
         if (!std::isfinite(norm)) break;  // the Jacobian was not finite
         converged = norm <= 1.0;
         if (iteration > 0 && norm > 0.5 * previous) refresh = true;

@@ -48,7 +48,8 @@ IntegrationStats Rk4::integrate(const MechanicalSystem& system, double t0,
   const std::vector<double> inv_mass = check_call(method, system, t0, q0, v0, output_times);
   const int n = system.dofs();
   const double dt = settings_.dt;
-  const double bound = settings_.max_displacement;
+  const std::vector<double> bounds = displacement_bounds(system, settings_.max_displacement);
+  const double* const bound = bounds.data();
   IntegrationStats stats;
 
   std::vector<double> work(8 * static_cast<std::size_t>(n));

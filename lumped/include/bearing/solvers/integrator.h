@@ -17,7 +17,9 @@ struct IntegratorSettings {
   double dt = 5e-6;            ///< fixed step (rk4, newmark) or initial step (adaptive) [s]
   double rtol = 1e-6;          ///< relative tolerance (adaptive, bdf; newmark's Newton) [-]
   double atol = 1e-12;         ///< absolute tolerance on displacements [m] (velocities scaled) [-]
-  double max_displacement = 1e-3;  ///< blow-up bound on |q_i| [m]; exceeded → SolverError
+  /// Blow-up bound on |q_i| [m]; exceeded → SolverError. Cyclic DOFs (MechanicalSystem::cyclic)
+  /// are exempt: they must only stay finite.
+  double max_displacement = 1e-3;
 };
 
 /// Called at each output time with the state there and the acceleration a = f/M.
@@ -37,13 +39,14 @@ class Integrator {
   virtual ~Integrator() = default;
 
   /// Integrates from t0 with q(t0) = q0, v(t0) = v0 (n entries each) and calls `observe` at each
-  /// of `output_times` (ascending, the first ≥ t0). Throws SolverError on blow-up (NaN/Inf or
-  /// |q_i| > max_displacement) naming the time, the step and what to change, before the observer
-  /// sees any non-finite value.
+  /// of `output_times` (ascending, the first ≥ t0). Throws SolverError on blow-up (NaN/Inf, or
+  /// |q_i| > max_displacement for a DOF that is not cyclic) naming the time, the step and what to
+  /// change, before the observer sees any non-finite value.
   virtual IntegrationStats integrate(const MechanicalSystem& system, double t0,
                                      const std::vector<double>& q0, const std::vector<double>& v0,
                                      const std::vector<double>& output_times,
-                                     const Observer& observe, const Progress& progress = {}) const = 0;
+                                     const Observer& observe,
+                                     const Progress& progress = {}) const = 0;
 
   /// The [solver] method name.
   virtual std::string name() const = 0;

@@ -26,6 +26,13 @@ class MechanicalSystem {
   /// needs it to be fast.
   virtual void force_jacobian(double t, const double* q, const double* v, double* dfdq,
                               double* dfdv) const;
+
+  /// Whether DOF i (0 ≤ i < n) is cyclic: an angle [rad] no force depends on (a ball's spin
+  /// angle), unbounded as it turns; only its velocity [rad/s] enters f. The integrators exempt a
+  /// cyclic q_i from the blow-up bound (it must only stay finite), leave its error out of the
+  /// adaptive methods' step-size control (its velocity is still controlled), and apply Newmark's
+  /// relative Newton tolerance to its increment over a step rather than its accumulated value.
+  virtual bool cyclic(int /*i*/) const { return false; }
 };
 
 }  // namespace bearing
