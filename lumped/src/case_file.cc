@@ -95,13 +95,27 @@ const std::vector<KeySpec>& schema() {
        "draw D_j - D uniformly in [-band/2, band/2]"},
       {"ball_errors.seed", Kind::integer, D::dimensionless, "seed of the band draw (default 1)"},
       {"model.kind", Kind::text, D::dimensionless,
-       "2dof | 3dof | quasistatic (seed 000: equilibrium per output instant, no [solver] method)"},
+       "2dof | 3dof | balls (seed 004: ball DOFs, cage slip, friction) | quasistatic (seed 000: "
+       "equilibrium per output instant, no [solver] method)"},
       {"model.contact", Kind::text, D::dimensionless,
        "contact law: exact | hamrock-brewe | harris-table | calibrated"},
       {"model.calibration", Kind::text, D::dimensionless,
        "FE constants for contact = \"calibrated\": the JSON of bearing-fem calibrate"},
       {"model.waviness_stiffness", Kind::boolean, D::dimensionless,
        "TVDS: contact stiffness follows the waviness curvature (default false: TVD)"},
+      {"cage.slip", Kind::quantity, D::dimensionless,
+       "balls: cage slip s_c in [0, 1), cage at (1 - s_c) x its pure-rolling speed (default 0)"},
+      {"cage.friction", Kind::quantity, D::dimensionless,
+       "balls: traction coefficient mu_m reached at cage.slide_speed (default 0.05)"},
+      {"cage.slide_speed", Kind::quantity, D::velocity,
+       "balls: sliding speed where traction saturates (default 0.1 m/s)"},
+      {"ball.mass", Kind::quantity, D::mass, "balls: ball mass (default: density x pi D^3/6)"},
+      {"ball.inertia", Kind::quantity, D::inertia,
+       "balls: ball moment of inertia (default: mass x D^2/10)"},
+      {"ball.damping", Kind::quantity, D::damping,
+       "balls: damping of each ball's radial motion (default: rotor.damping)"},
+      {"ball.centrifugal", Kind::boolean, D::dimensionless,
+       "balls: centrifugal load m_b w_cage^2 d_m/2 on each ball (default true)"},
       {"solver.method", Kind::text, D::dimensionless, "rk4 | rkf45 | rk8pd | newmark | bdf"},
       {"solver.dt", Kind::quantity, D::time, "time step, or first step (default 5 us)"},
       {"solver.duration", Kind::quantity, D::time, "simulated time (default 1.2 s)"},
@@ -116,6 +130,8 @@ const std::vector<KeySpec>& schema() {
        "write each ball centre's radial displacement r1..rZ [m] and velocity vr1..vrZ [m/s]"},
       {"output.ball_approach", Kind::boolean, D::dimensionless,
        "write each ball's approach d1..dZ [m] (positive: elastic approach; negative: gap)"},
+      {"output.ball_dynamics", Kind::boolean, D::dimensionless,
+       "balls: write each ball's spin wb [rad/s], outer load Qo [N], friction Fi, Fo [N]"},
       {"output.window", Kind::text, D::dimensionless, "hann | flattop | rectangular"},
       {"output.peaks", Kind::integer, D::dimensionless, "peaks listed per channel (default 10)"},
       {"acoustics.ring_source", Kind::text, D::dimensionless,
@@ -135,9 +151,9 @@ const std::vector<KeySpec>& schema() {
 }
 
 const std::vector<std::string>& top_tables() {
-  static const std::vector<std::string> t{"bearing",  "material",    "rotor", "operation",
-                                          "waviness", "ball_errors", "model", "solver",
-                                          "output",   "acoustics"};
+  static const std::vector<std::string> t{"bearing",  "material",    "rotor",  "operation",
+                                          "waviness", "ball_errors", "model",  "cage",
+                                          "ball",     "solver",      "output", "acoustics"};
   return t;
 }
 
@@ -621,12 +637,9 @@ Case resolve(const toml::table& doc, const std::string& source, const std::strin
   // [model]
   TableReader model(top_table(doc, "model"), "model");
   if (auto v = model.text("kind")) {
-    if (*v == "balls")
+    if (*v != "2dof" && *v != "3dof" && *v != "balls" && *v != "quasistatic")
       throw InputError("model.kind = \"" + *v +
-                       "\": not available in this version; allowed: 2dof, 3dof, quasistatic");
-    if (*v != "2dof" && *v != "3dof" && *v != "quasistatic")
-      throw InputError("model.kind = \"" + *v +
-                       "\": unknown model; allowed: 2dof, 3dof, quasistatic");
+                       "\": unknown model; allowed: 2dof, 3dof, balls, quasistatic");
     c.model.kind = *v;
   }
   if (auto v = model.text("contact")) {
@@ -667,6 +680,42 @@ Case resolve(const toml::table& doc, const std::string& source, const std::strin
   if (auto v = model.boolean("waviness_stiffness")) c.model.waviness_stiffness = *v;
   model.finish();
 
+  // [cage], [ball]: the ball-DOF model's; an error with any other model, which would ignore them.
+  const bool balls = c.model.kind == "balls";
+  const auto only_balls = [&](const char* table) {
+    if (!balls && top_table(doc, table))
+      throw InputError(std::string("[") + table + "] is used by model.kind = \"balls\" only (the " +
+                       "case has model.kind = \"" + c.model.kind + "\"): remove it or set kind");
+  };
+  only_balls("cage");
+  only_balls("ball");
+  TableReader cage(top_table(doc, "cage"), "cage");
+  if (auto v = cage.quantity("slip")) c.cage.slip = *v;
+  if (auto v = cage.quantity("friction")) c.cage.friction = *v;
+  if (auto v = cage.quantity("slide_speed")) c.cage.slide_speed = *v;
+  cage.finish();
+  require(c.cage.slip >= 0 && c.cage.slip < 1, "cage.slip", c.cage.slip, Dimension::dimensionless,
+          "must lie in [0, 1) (0: pure rolling; 0.02: 2 %)");
+  require(c.cage.friction >= 0 && c.cage.friction <= 1, "cage.friction", c.cage.friction,
+          Dimension::dimensionless, "must lie in [0, 1] (0: no friction)");
+  require(c.cage.slide_speed > 0 && c.cage.slide_speed <= 100, "cage.slide_speed",
+          c.cage.slide_speed, Dimension::velocity, "must lie in (0, 100 m/s]");
+  TableReader ball_table(top_table(doc, "ball"), "ball");
+  const double D = b.ball_diameter, pi = 3.14159265358979323846;
+  c.ball.mass = ball_table.quantity("mass").value_or(b.ball.density * pi * D * D * D / 6.0);
+  c.ball.inertia = ball_table.quantity("inertia").value_or(c.ball.mass * D * D / 10.0);
+  c.ball.damping = ball_table.quantity("damping").value_or(c.rotor.damping);
+  if (auto v = ball_table.boolean("centrifugal")) c.ball.centrifugal = *v;
+  ball_table.finish();
+  require(c.ball.mass > 0, "ball.mass", c.ball.mass, Dimension::mass, "must be positive");
+  require(c.ball.inertia > 0, "ball.inertia", c.ball.inertia, Dimension::inertia,
+          "must be positive");
+  require(c.ball.damping >= 0, "ball.damping", c.ball.damping, Dimension::damping, "must be >= 0");
+  if (balls && c.operation.axial_load != 0)
+    throw InputError("operation.axial_load = " + fmt_si(c.operation.axial_load, Dimension::force) +
+                     ": model.kind = \"balls\" is planar (seed 004), it has no axial DOF; use "
+                     "model.kind = \"3dof\" for an axial load or preload");
+
   // [solver]
   TableReader solver(top_table(doc, "solver"), "solver");
   SolverOptions& s = c.solver;
@@ -704,6 +753,12 @@ Case resolve(const toml::table& doc, const std::string& source, const std::strin
   if (auto v = output.boolean("ball_loads")) c.output.ball_loads = *v;
   if (auto v = output.boolean("ball_motion")) c.output.ball_motion = *v;
   if (auto v = output.boolean("ball_approach")) c.output.ball_approach = *v;
+  if (auto v = output.boolean("ball_dynamics")) c.output.ball_dynamics = *v;
+  if (c.output.ball_dynamics && !balls)
+    throw InputError(
+        "output.ball_dynamics = true: the spin, outer load and friction channels "
+        "need model.kind = \"balls\" (the case has \"" +
+        c.model.kind + "\")");
   if (auto v = output.choice("window", {"hann", "flattop", "rectangular"})) c.output.window = *v;
   if (auto v = output.integer("peaks")) {
     if (*v < 0 || *v > 1000)
@@ -961,6 +1016,13 @@ std::string case_to_toml(const Case& c) {
   o << "[model]\nkind = " << quoted(c.model.kind) << "\ncontact = " << quoted(c.model.contact);
   if (c.model.calibration) o << "\ncalibration = " << quoted(c.model.calibration->path);
   o << "\nwaviness_stiffness = " << (c.model.waviness_stiffness ? "true" : "false") << "\n\n";
+  if (c.model.kind == "balls") {
+    o << "[cage]\nslip = " << num17(c.cage.slip) << "\nfriction = " << num17(c.cage.friction)
+      << "\nslide_speed = " << num17(c.cage.slide_speed) << "\n\n";
+    o << "[ball]\nmass = " << num17(c.ball.mass) << "\ninertia = " << num17(c.ball.inertia)
+      << "\ndamping = " << num17(c.ball.damping)
+      << "\ncentrifugal = " << (c.ball.centrifugal ? "true" : "false") << "\n\n";
+  }
   const SolverOptions& s = c.solver;
   o << "[solver]\nmethod = " << quoted(s.method) << "\ndt = " << num17(s.dt)
     << "\nduration = " << num17(s.duration) << "\ntransient = " << num17(s.transient)
@@ -969,6 +1031,7 @@ std::string case_to_toml(const Case& c) {
   o << "[output]\nball_loads = " << (c.output.ball_loads ? "true" : "false")
     << "\nball_motion = " << (c.output.ball_motion ? "true" : "false")
     << "\nball_approach = " << (c.output.ball_approach ? "true" : "false")
+    << "\nball_dynamics = " << (c.output.ball_dynamics ? "true" : "false")
     << "\nwindow = " << quoted(c.output.window) << "\npeaks = " << c.output.peaks << "\n";
   const AcousticsOptions& ac = c.acoustics;
   if (ac.enabled) {

@@ -211,6 +211,16 @@ nlohmann::json summary_json(const Case& c, const SimulationResult& r, const RunS
   const auto& f = r.frequencies;
   j["frequencies"] = {
       {"shaft", f.shaft}, {"ftf", f.ftf}, {"bpfo", f.bpfo}, {"bpfi", f.bpfi}, {"bsf", f.bsf}};
+  // The ball-DOF model's cage as it ran: the frequencies above already turn at ω_ca.
+  if (c.model.kind == "balls")
+    j["cage"] = {{"slip", c.cage.slip},
+                 {"speed", 2 * 3.14159265358979323846 * f.ftf},
+                 {"friction", c.cage.friction},
+                 {"slide_speed", c.cage.slide_speed},
+                 {"ball_mass", c.ball.mass},
+                 {"ball_inertia", c.ball.inertia},
+                 {"ball_damping", c.ball.damping},
+                 {"centrifugal", c.ball.centrifugal}};
   j["channels"] = json::object();
   j["peaks"] = json::object();
   for (const auto& ch : s.channels) {
@@ -261,6 +271,13 @@ nlohmann::json summary_json(const Case& c, const SimulationResult& r, const RunS
     j["units"]["solver.smooth_load"] = "N";
   }
   if (c.model.calibration) j["units"]["case.calibration.load_range"] = "N";
+  if (c.model.kind == "balls") {
+    j["units"]["cage.speed"] = "rad/s";
+    j["units"]["cage.slide_speed"] = "m/s";
+    j["units"]["cage.ball_mass"] = "kg";
+    j["units"]["cage.ball_inertia"] = "kg m^2";
+    j["units"]["cage.ball_damping"] = "N s/m";
+  }
   if (s.noise) {
     j["acoustics"] = acoustics_json(c, *s.noise);
     j["units"]["acoustics.microphones.spl_*"] = "dB re 20 uPa (null: source \"none\", or silent)";

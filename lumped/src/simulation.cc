@@ -6,6 +6,7 @@
 #include <stdexcept>
 
 #include "bearing/errors.h"
+#include "bearing/models/ball_dofs.h"
 #include "bearing/models/quasi_static.h"
 #include "bearing/models/three_dof.h"
 #include "bearing/models/two_dof.h"
@@ -41,6 +42,12 @@ ModelInputs model_inputs(const Case& c) {
   in.outer_waviness.harmonics = c.excitation.outer_waviness;
   in.ball_size_errors = c.excitation.ball_size_errors;
   in.waviness_stiffness = c.model.waviness_stiffness;
+  in.cage_slip = c.cage.slip;
+  in.traction = make_traction_curve(c.cage.friction, c.cage.slide_speed);
+  in.ball_mass = c.ball.mass;
+  in.ball_inertia = c.ball.inertia;
+  in.ball_damping = c.ball.damping;
+  in.centrifugal = c.ball.centrifugal;
   return in;
 }
 
@@ -48,21 +55,24 @@ std::unique_ptr<BearingModel> make_model(const Case& c) {
   const ModelInputs in = model_inputs(c);
   if (c.model.kind == "2dof") return make_two_dof_model(in);
   if (c.model.kind == "3dof") return make_three_dof_model(in);
+  if (c.model.kind == "balls") return make_ball_dof_model(in);
   if (c.model.kind == "quasistatic")
     throw InputError(
         "model.kind = \"quasistatic\" has no equations of motion (no integrator "
         "runs it): make_quasi_static_model builds it");
-  throw InputError("model.kind = \"" + c.model.kind + "\": allowed: 2dof, 3dof, quasistatic");
+  throw InputError("model.kind = \"" + c.model.kind +
+                   "\": allowed: 2dof, 3dof, balls, quasistatic");
 }
 
 bool is_ball_channel(const std::string& name) {
-  if (name.empty()) return false;
-  const std::size_t stem = name.front() == 'Q' || name.front() == 'r' || name.front() == 'd' ? 1
-                           : name.rfind("vr", 0) == 0 && name.size() > 2                     ? 2
-                                                                                             : 0;
-  if (stem == 0 || name.size() == stem) return false;
-  return std::all_of(name.begin() + static_cast<std::ptrdiff_t>(stem), name.end(),
-                     [](char ch) { return ch >= '0' && ch <= '9'; });
+  // Longest stems first, so "vr1" is not read as a stem "v" and "Qo1" not as "Q".
+  for (const char* stem : {"Qo", "vr", "wb", "Fi", "Fo", "Q", "d", "r"}) {
+    const std::size_t n = std::char_traits<char>::length(stem);
+    if (name.size() <= n || name.compare(0, n, stem) != 0) continue;
+    return std::all_of(name.begin() + static_cast<std::ptrdiff_t>(n), name.end(),
+                       [](char ch) { return ch >= '0' && ch <= '9'; });
+  }
+  return false;
 }
 
 namespace {
@@ -72,7 +82,8 @@ namespace {
 BearingFrequencies run_frequencies(const Case& c) {
   Bearing b = c.bearing;
   if (c.model.kind == "3dof") b.contact_angle = solve_axial_preload(model_inputs(c)).contact_angle;
-  return bearing_frequencies(b, c.operation.speed);
+  const double slip = c.model.kind == "balls" ? c.cage.slip : 0.0;
+  return bearing_frequencies(b, c.operation.speed, 0.0, slip);
 }
 
 // The ball-motion channels are written when asked for, and when the acoustics needs them (the
@@ -96,6 +107,8 @@ void lay_out(const Case& c, const std::vector<std::string>& dofs, int Z, Respons
   if (c.output.ball_loads) per_ball("Q", "N");
   if (c.output.ball_approach) per_ball("d", "m");
   if (wants_ball_motion(c)) per_ball("r", "m"), per_ball("vr", "m/s");
+  if (c.output.ball_dynamics)
+    per_ball("wb", "rad/s"), per_ball("Qo", "N"), per_ball("Fi", "N"), per_ball("Fo", "N");
   const auto samples =
       static_cast<std::size_t>(std::floor(c.solver.duration * c.solver.output_rate + 1e-9)) + 1;
   out.time.resize(samples);
@@ -106,32 +119,47 @@ void lay_out(const Case& c, const std::vector<std::string>& dofs, int Z, Respons
   out.values.assign(out.channels.size(), std::vector<double>(samples));
 }
 
+// One output sample's per-ball values, Z entries each (lay_out's channels).
+struct BallSample {
+  explicit BallSample(int Z)
+      : loads(static_cast<std::size_t>(Z)),
+        approaches(loads),
+        r(loads),
+        vr(loads),
+        spin(loads),
+        outer_load(loads),
+        friction_inner(loads),
+        friction_outer(loads) {}
+  std::vector<double> loads, approaches, r, vr, spin, outer_load, friction_inner, friction_outer;
+};
+
 // Writes the per-ball channels of sample k from column `first` on (lay_out's order).
-void store_balls(const Case& c, std::size_t first, std::size_t k, int Z, const double* loads,
-                 const double* approaches, const double* r, const double* vr, Response& out) {
+void store_balls(const Case& c, std::size_t first, std::size_t k, const BallSample& b,
+                 Response& out) {
   std::size_t i = first;
-  if (c.output.ball_loads)
-    for (int j = 0; j < Z; ++j) out.values[i++][k] = loads[j];
-  if (c.output.ball_approach)
-    for (int j = 0; j < Z; ++j) out.values[i++][k] = approaches[j];
-  if (wants_ball_motion(c)) {
-    for (int j = 0; j < Z; ++j) out.values[i++][k] = r[j];
-    for (int j = 0; j < Z; ++j) out.values[i++][k] = vr[j];
-  }
+  const auto put = [&](const std::vector<double>& values) {
+    for (double value : values) out.values[i++][k] = value;
+  };
+  if (c.output.ball_loads) put(b.loads);
+  if (c.output.ball_approach) put(b.approaches);
+  if (wants_ball_motion(c)) put(b.r), put(b.vr);
+  if (c.output.ball_dynamics)
+    put(b.spin), put(b.outer_load), put(b.friction_inner), put(b.friction_outer);
 }
 
-// A dynamic model (2dof, 3dof) through the case's integrator.
+// A dynamic model (2dof, 3dof, balls) through the case's integrator. The ring's DOFs (the first
+// dof_names().size()) get channels of their own; ball DOFs reach the output as per-ball channels.
 void run_dynamic(const Case& c, const Progress& progress, SimulationResult& r) {
   const auto model = make_model(c);
-  const int n = model->dofs();
   const std::vector<double> q0 = model->initial_displacement();
-  const std::vector<double> v0(static_cast<std::size_t>(n), 0.0);
+  const std::vector<double> v0 = model->initial_velocity();
 
   // One tolerance for the user: the absolute tolerance on displacements is solver.tolerance times
   // the displacement scale of the problem (the static deflection, the per-ball gap, at least
   // 1 µm), so tightening the tolerance is never capped by a fixed absolute floor.
   double scale = std::max(1e-6, c.bearing.ball_gap());
-  for (double q : q0) scale = std::max(scale, std::fabs(q));
+  for (int i = 0; i < model->dofs(); ++i)
+    if (!model->cyclic(i)) scale = std::max(scale, std::fabs(q0[static_cast<std::size_t>(i)]));
   IntegratorSettings settings;
   settings.method = c.solver.method;
   settings.dt = c.solver.dt;
@@ -142,10 +170,12 @@ void run_dynamic(const Case& c, const Progress& progress, SimulationResult& r) {
 
   const int Z = model->balls();
   Response& out = r.response;
-  lay_out(c, model->dof_names(), Z, out);
+  const std::vector<std::string> ring = model->dof_names();
+  const auto n = static_cast<int>(ring.size());
+  lay_out(c, ring, Z, out);
   const std::size_t samples = out.time.size();
 
-  std::vector<double> loads(static_cast<std::size_t>(Z)), approaches(loads), rb(loads), vrb(loads);
+  BallSample balls(Z);
   std::size_t k = 0;
   const Observer observe = [&](double t, const double* q, const double* v, const double* a) {
     for (int i = 0; i < n; ++i) {
@@ -153,11 +183,13 @@ void run_dynamic(const Case& c, const Progress& progress, SimulationResult& r) {
       out.values[static_cast<std::size_t>(n + i)][k] = v[i];
       out.values[static_cast<std::size_t>(2 * n + i)][k] = a[i];
     }
-    if (c.output.ball_loads) model->ball_loads(t, q, loads.data());
-    if (c.output.ball_approach) model->ball_approaches(t, q, approaches.data());
-    if (wants_ball_motion(c)) model->ball_motion(t, q, v, rb.data(), vrb.data());
-    store_balls(c, static_cast<std::size_t>(3 * n), k, Z, loads.data(), approaches.data(),
-                rb.data(), vrb.data(), out);
+    if (c.output.ball_loads) model->ball_loads(t, q, balls.loads.data());
+    if (c.output.ball_approach) model->ball_approaches(t, q, balls.approaches.data());
+    if (wants_ball_motion(c)) model->ball_motion(t, q, v, balls.r.data(), balls.vr.data());
+    if (c.output.ball_dynamics)
+      model->ball_dynamics(t, q, v, balls.spin.data(), balls.outer_load.data(),
+                           balls.friction_inner.data(), balls.friction_outer.data());
+    store_balls(c, static_cast<std::size_t>(3 * n), k, balls, out);
     ++k;
   };
   r.stats = integrator->integrate(*model, 0.0, q0, v0, out.time, observe, progress);
@@ -175,17 +207,17 @@ void run_quasi_static(const Case& c, const Progress& progress, SimulationResult&
   const int Z = model->balls();
   Response& out = r.response;
   lay_out(c, {"x", "y"}, Z, out);
-  std::vector<double> loads(static_cast<std::size_t>(Z)), approaches(loads), rb(loads), vrb(loads);
+  BallSample balls(Z);
   std::size_t k = 0;
   const auto observe = [&](const QuasiStaticPoint& pt) {
     for (int i = 0; i < 2; ++i) {
       out.values[static_cast<std::size_t>(i)][k] = pt.position[i];
       out.values[static_cast<std::size_t>(2 + i)][k] = pt.velocity[i];
     }
-    if (c.output.ball_loads) model->ball_loads(pt.t, pt.position, loads.data());
-    if (c.output.ball_approach) model->ball_approaches(pt.t, pt.position, approaches.data());
-    if (wants_ball_motion(c)) model->ball_motion(pt, rb.data(), vrb.data());
-    store_balls(c, 6, k, Z, loads.data(), approaches.data(), rb.data(), vrb.data(), out);
+    if (c.output.ball_loads) model->ball_loads(pt.t, pt.position, balls.loads.data());
+    if (c.output.ball_approach) model->ball_approaches(pt.t, pt.position, balls.approaches.data());
+    if (wants_ball_motion(c)) model->ball_motion(pt, balls.r.data(), balls.vr.data());
+    store_balls(c, 6, k, balls, out);
     ++k;
   };
   QuasiStaticStats st = follow_equilibrium(*model, out.time, observe, progress);
@@ -207,8 +239,10 @@ struct ModelKind {
   const char* name;
   void (*run)(const Case&, const Progress&, SimulationResult&);
 };
-constexpr ModelKind kModelKinds[] = {
-    {"2dof", run_dynamic}, {"3dof", run_dynamic}, {"quasistatic", run_quasi_static}};
+constexpr ModelKind kModelKinds[] = {{"2dof", run_dynamic},
+                                     {"3dof", run_dynamic},
+                                     {"balls", run_dynamic},
+                                     {"quasistatic", run_quasi_static}};
 
 }  // namespace
 
@@ -221,7 +255,8 @@ SimulationResult simulate(const Case& c, const Progress& progress) {
       kind.run(c, progress, r);
       return r;
     }
-  throw InputError("model.kind = \"" + c.model.kind + "\": allowed: 2dof, 3dof, quasistatic");
+  throw InputError("model.kind = \"" + c.model.kind +
+                   "\": allowed: 2dof, 3dof, balls, quasistatic");
 }
 
 RunSummary summarize(const Case& c, const SimulationResult& result) {

@@ -29,10 +29,6 @@ void require_finite(double w, const char* what) {
 
 }  // namespace
 
-double TractionCurve::coefficient(double dv) const {
-  return max_coefficient * std::clamp(dv / slide_speed, -1.0, 1.0);
-}
-
 TractionCurve make_traction_curve(double max_coefficient, double slide_speed,
                                   const std::string& friction_key,
                                   const std::string& slide_speed_key) {

@@ -52,6 +52,7 @@ const std::vector<UnitEntry>& table(Dimension dim) {
   static const std::vector<UnitEntry> mass_length{
       {"kgm", 1.0}, {"gmm", 1e-6}, {"gcm", 1e-5}, {"gm", 1e-3}};
   static const std::vector<UnitEntry> velocity{{"m/s", 1.0}, {"mm/s", 1e-3}, {"km/h", 1.0 / 3.6}};
+  static const std::vector<UnitEntry> inertia{{"kgm2", 1.0}, {"gmm2", 1e-9}, {"gcm2", 1e-7}};
   static const std::vector<UnitEntry> none{};
   switch (dim) {
     case Dimension::length:
@@ -78,6 +79,8 @@ const std::vector<UnitEntry>& table(Dimension dim) {
       return mass_length;
     case Dimension::velocity:
       return velocity;
+    case Dimension::inertia:
+      return inertia;
     case Dimension::dimensionless:
       return none;
   }
@@ -118,10 +121,10 @@ std::string join(const std::vector<std::string>& items) {
 
 // The dimension a unit belongs to, if any other than `dim` knows it (for a clearer message).
 const char* other_dimension(const std::string& unit, Dimension dim) {
-  for (Dimension d :
-       {Dimension::length, Dimension::angle, Dimension::angular_speed, Dimension::force,
-        Dimension::pressure, Dimension::mass, Dimension::density, Dimension::time,
-        Dimension::frequency, Dimension::damping, Dimension::mass_length, Dimension::velocity}) {
+  for (Dimension d : {Dimension::length, Dimension::angle, Dimension::angular_speed,
+                      Dimension::force, Dimension::pressure, Dimension::mass, Dimension::density,
+                      Dimension::time, Dimension::frequency, Dimension::damping,
+                      Dimension::mass_length, Dimension::velocity, Dimension::inertia}) {
     if (d == dim) continue;
     for (const auto& e : table(d))
       if (unit == e.name) return dimension_name(d).data();
@@ -157,6 +160,8 @@ std::string_view dimension_name(Dimension dim) {
       return "unbalance (mass times eccentricity)";
     case Dimension::velocity:
       return "speed";
+    case Dimension::inertia:
+      return "moment of inertia";
     case Dimension::dimensionless:
       return "dimensionless number";
   }
@@ -189,6 +194,8 @@ std::string_view si_unit(Dimension dim) {
       return "kg m";
     case Dimension::velocity:
       return "m/s";
+    case Dimension::inertia:
+      return "kg m^2";
     case Dimension::dimensionless:
       return "";
   }
@@ -221,6 +228,8 @@ std::vector<std::string> accepted_units(Dimension dim) {
       return {"kg m", "g mm", "g cm", "g m"};
     case Dimension::velocity:
       return {"m/s", "mm/s", "km/h"};
+    case Dimension::inertia:
+      return {"kg m^2", "g mm^2", "g cm^2"};
     case Dimension::dimensionless:
       return {};
   }

@@ -1,6 +1,6 @@
-// The 2-DOF and 3-DOF models (models/two_dof.h, models/three_dof.h) against physics: static
-// equilibrium, energy, Jacobians, the excitation conventions of MODEL.md §1/§5, TVDS, and the
-// reductions of the 3-DOF model to the 2-DOF one.
+// The 2-DOF, 3-DOF and ball-DOF models (models/two_dof.h, three_dof.h, ball_dofs.h) against
+// physics: static equilibrium, energy, Jacobians, the excitation conventions of MODEL.md §1/§5,
+// TVDS, and the reductions of the 3-DOF model to the 2-DOF one.
 
 #include <gtest/gtest.h>
 
@@ -17,10 +17,12 @@
 #include "bearing/excitation.h"
 #include "bearing/hertz.h"
 #include "bearing/kinematics.h"
+#include "bearing/models/ball_dofs.h"
 #include "bearing/models/three_dof.h"
 #include "bearing/models/two_dof.h"
 #include "bearing/presets.h"
 #include "bearing/static_load.h"
+#include "bearing/traction.h"
 
 namespace bearing {
 namespace {
@@ -841,3 +843,201 @@ TEST(TwoDofPhasor, MatchesLibmToAFewUlp) {
     EXPECT_NEAR(p.c * p.c + p.s * p.s, 1.0, 4e-16) << theta;
   }
 }
+
+// --- Ball DOFs, cage slip and traction (models/ball_dofs.h) ---------------------------------
+
+namespace bearing {
+namespace {
+namespace balls {
+
+// Seed 004's SKF 6304 (Table 1): 2000 rpm, 2000 N along +x, m = 0.4 kg, c = 350 N s/m, its
+// P_d = 15 µm as the per-ball gap (clearance 30 µm), μ_m = 0.05 at Δv_m = 0.1 m/s.
+ModelInputs inputs_6304(double slip = 0.0, double friction = 0.05) {
+  ModelInputs in;
+  in.bearing = preset("6304");
+  in.bearing.clearance = 30e-6;
+  in.contact = contact_constants(in.bearing, *make_exact_hertz());
+  in.inner_speed = 2000 * 2 * kPi / 60;
+  in.load = Eigen::Vector2d(2000, 0);
+  in.mass = 0.4;
+  in.damping = 350;
+  in.cage_slip = slip;
+  in.traction = make_traction_curve(friction, 0.1);
+  in.ball_damping = 350;
+  in.centrifugal = true;
+  return in;
+}
+
+// A state away from equilibrium with every kind of contact: loaded balls, open ones, spins off
+// their rolling value (sliding inside the linear traction range) and a moving ring.
+void perturbed_state(const BallDofModel& m, std::vector<double>& q, std::vector<double>& v) {
+  q = m.initial_displacement();
+  v = m.initial_velocity();
+  const int Z = m.balls();
+  q[0] += 1.3e-6;
+  q[1] -= 0.7e-6;
+  v[0] = 0.012;
+  v[1] = -0.008;
+  for (int j = 0; j < Z; ++j) {
+    q[2 + j] += 0.2e-6 * std::sin(1.7 * j + 0.5);
+    v[2 + j] = 0.003 * std::cos(0.9 * j);
+    v[2 + Z + j] *= 1.0 + 0.004 * std::sin(2.3 * j + 0.4);
+  }
+}
+
+TEST(BallDofs, InterfaceAndMassesFromTheDensity) {
+  const auto m = make_ball_dof_model(inputs_6304());
+  const int Z = 7;
+  EXPECT_EQ(m->dofs(), 2 * Z + 2);
+  EXPECT_EQ(m->balls(), Z);
+  EXPECT_EQ(m->dof_names(), (std::vector<std::string>{"x", "y"}));
+  std::vector<double> mass(m->dofs());
+  m->mass(mass.data());
+  const double D = 9.525e-3, mb = 7850 * kPi * D * D * D / 6;
+  EXPECT_EQ(mass[0], 0.4);
+  EXPECT_NEAR(mass[2], mb, 1e-15);
+  EXPECT_NEAR(mass[2 + Z], mb * D * D / 10, 1e-20);  // solid sphere, 2/5 m (D/2)²
+  for (int i = 0; i < m->dofs(); ++i) EXPECT_EQ(m->cyclic(i), i >= 2 + Z) << i;
+  // Centrifugal load m_b ω_ca² d_m/2 at the pure-rolling cage speed.
+  const double wc = cage_speed(preset("6304"), 2000 * 2 * kPi / 60);
+  EXPECT_NEAR(m->centrifugal_force(), mb * wc * wc * 0.018, 1e-12);
+  EXPECT_NEAR(m->cage_speed(), wc, 1e-12);
+  EXPECT_NEAR(make_ball_dof_model(inputs_6304(0.05))->cage_speed(), 0.95 * wc, 1e-12);
+}
+
+// The ball's two contacts carry the 2-DOF model's approach between them: at the initial state
+// (each ball in equilibrium, no centrifugal load) the ring force equals the 2-DOF model's, and
+// each loaded ball's two loads are equal.
+TEST(BallDofs, MasslessBallEquilibriumIsTheTwoDofContact) {
+  for (bool tvds : {false, true}) {
+    SCOPED_TRACE(tvds ? "TVDS" : "TVD");
+    ModelInputs in = inputs_6304(0.0, 0.0);
+    in.centrifugal = false;
+    in.hertz_method = "exact";
+    in.waviness_stiffness = tvds;
+    in.outer_waviness.harmonics = {{9, 0.4e-6, 0.3}, {16, 0.2e-6, 1.1}};
+    in.inner_waviness.harmonics = {{5, 0.3e-6, 2.0}};
+    in.ball_size_errors = {0.5e-6, -0.3e-6, 0, 0.2e-6, 0, -0.6e-6, 0.1e-6};
+    const auto balls = make_ball_dof_model(in);
+    const auto two = make_two_dof_model(in);
+    const auto q = balls->initial_displacement();
+    const auto v0 = std::vector<double>(balls->dofs(), 0.0);
+    std::vector<double> f(balls->dofs()), f2(2);
+    balls->force(0.0, q.data(), v0.data(), f.data());
+    const double qr[2] = {q[0], q[1]}, vr[2] = {0, 0};
+    two->force(0.0, qr, vr, f2.data());
+    EXPECT_NEAR(f[0], f2[0], 1e-9 * 2000);
+    EXPECT_NEAR(f[1], f2[1], 1e-9 * 2000);
+    for (int j = 0; j < 7; ++j) EXPECT_NEAR(f[2 + j], 0.0, 1e-9 * 2000) << "ball " << j;
+    std::vector<double> a1(7), a2(7);
+    balls->ball_approaches(0.0, q.data(), a1.data());
+    two->ball_approaches(0.0, qr, a2.data());
+    for (int j = 0; j < 7; ++j) EXPECT_NEAR(a1[j], a2[j], 1e-15) << "ball " << j;
+  }
+}
+
+TEST(BallDofs, AnalyticJacobianMatchesDifferences) {
+  for (double slip : {0.0, 0.03}) {
+    ModelInputs in = inputs_6304(slip);
+    in.outer_waviness.harmonics = {{9, 0.4e-6, 0.3}};
+    in.inner_waviness.harmonics = {{5, 0.3e-6, 2.0}};
+    const auto m = make_ball_dof_model(in);
+    std::vector<double> q, v;
+    perturbed_state(*m, q, v);
+    // (Every contact is clear of its kink at δ = 0 by much more than the difference step.)
+    for (double t : {0.0, 3.1e-3}) expect_jacobian_matches(*m, t, q, v, 1e-6);
+  }
+}
+
+// −∇V is the contact force on every DOF (no load, damping, friction or centrifugal load).
+TEST(BallDofs, PotentialGradientIsTheContactForce) {
+  ModelInputs in = contact_only(inputs_6304(0.0, 0.0));
+  in.damping = 0;
+  in.ball_damping = 0;
+  in.centrifugal = false;
+  in.outer_waviness.harmonics = {{9, 0.4e-6, 0.3}};
+  const auto m = make_ball_dof_model(in);
+  std::vector<double> q, v;
+  perturbed_state(*m, q, v);
+  q[0] += 10e-6;  // load the balls on the +x side
+  expect_energy_gradient_is_force(*m, 2e-3, q);
+}
+
+// The friction powers: what the DOFs and the drives receive adds up to minus what the contacts
+// dissipate (an identity of the derived force directions), and the dissipation is Σ μ Q Δv
+// computed here from traction.h's own sliding speeds and forces.
+TEST(BallDofs, FrictionPowersAddUpToTheDissipation) {
+  const auto m = make_ball_dof_model(inputs_6304(0.03));
+  std::vector<double> q, v;
+  perturbed_state(*m, q, v);
+  const int Z = 7;
+  const double t = 1.7e-3;
+  const FrictionPower p = m->friction_power(t, q.data(), v.data());
+  EXPECT_GT(p.dissipated, 0.0);
+  EXPECT_NEAR(p.on_dofs + p.drives, -p.dissipated, 1e-12 * p.dissipated);
+  // Independently: traction.h's contact_traction with the ring's translation left out of Δv_i
+  // (traction.h has no ring velocity), so compare with the ring at rest.
+  std::vector<double> v_rest = v;
+  v_rest[0] = v_rest[1] = 0;
+  const Bearing b = preset("6304");
+  const TractionCurve curve = make_traction_curve(0.05, 0.1);
+  std::vector<double> qi(Z), qo(Z), spin(Z), fi(Z), fo(Z);
+  m->ball_loads(t, q.data(), qi.data());
+  m->ball_dynamics(t, q.data(), v_rest.data(), spin.data(), qo.data(), fi.data(), fo.data());
+  double expected = 0;
+  for (int j = 0; j < Z; ++j) {
+    const SlidingSpeeds s = sliding_speeds(b, 2000 * 2 * kPi / 60, m->cage_speed(), spin[j]);
+    const ContactTraction tr = contact_traction(curve, s, qi[j], qo[j]);
+    expected += tr.power;
+    EXPECT_NEAR(fi[j], tr.on_ball_inner, 1e-12 * 2000);
+    EXPECT_NEAR(fo[j], tr.on_ball_outer, 1e-12 * 2000);
+  }
+  EXPECT_NEAR(m->friction_power(t, q.data(), v_rest.data()).dissipated, expected, 1e-12 * expected);
+}
+
+// Seed 004's starting spin: no spin torque on a ball with equal loads, and the pure-rolling
+// spin when the cage does not slip.
+TEST(BallDofs, InitialSpinIsKinematic) {
+  const Bearing b = preset("6304");
+  const double wi = 2000 * 2 * kPi / 60;
+  const auto m0 = make_ball_dof_model(inputs_6304(0.0));
+  EXPECT_NEAR(m0->initial_velocity()[2 + 7], rolling_ball_spin(b, wi), 1e-9 * wi);
+  const auto m = make_ball_dof_model(inputs_6304(0.05));
+  const double w = m->initial_velocity()[2 + 7];
+  const SlidingSpeeds s = sliding_speeds(b, wi, m->cage_speed(), w);
+  EXPECT_NEAR(s.inner, -s.outer, 1e-12);
+  EXPECT_GT(s.inner, 0.0);  // the inner race drives, the outer brakes
+}
+
+TEST(BallDofs, RejectsBadInputsNamingTheKey) {
+  const auto fails_with = [](ModelInputs in, const std::string& key) {
+    try {
+      make_ball_dof_model(in);
+      ADD_FAILURE() << "no error for " << key;
+    } catch (const InputError& e) {
+      EXPECT_NE(std::string(e.what()).find(key), std::string::npos) << e.what();
+    }
+  };
+  ModelInputs in = inputs_6304();
+  in.cage_slip = 1.0;
+  fails_with(in, "cage.slip");
+  in = inputs_6304();
+  in.cage_slip = -0.01;
+  fails_with(in, "cage.slip");
+  in = inputs_6304();
+  in.ball_mass = -1;
+  fails_with(in, "ball.mass");
+  in = inputs_6304();
+  in.ball_damping = std::nan("");
+  fails_with(in, "ball.damping");
+  in = inputs_6304();
+  in.traction.max_coefficient = -0.1;
+  fails_with(in, "cage.friction");
+  in = inputs_6304();
+  in.axial_load = 100;
+  fails_with(in, "operation.axial_load");
+}
+
+}  // namespace balls
+}  // namespace
+}  // namespace bearing

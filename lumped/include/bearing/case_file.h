@@ -47,10 +47,28 @@ struct Excitations {
   std::uint64_t ball_error_seed = 0;     ///< seed of the draw
 };
 
+/// The cage and the traction at the ball contacts (model.kind = "balls"; seed 004). Seed 004
+/// gives no Δv_m; 0.1 m/s (μ saturates at about 4 % slide-to-roll at the default case's speed) is
+/// this toolkit's assumption.
+struct CageOptions {
+  double slip = 0.0;         ///< s_c in [0, 1): the cage turns at (1 − s_c) ω_c [-]
+  double friction = 0.05;    ///< μ_m, the traction coefficient beyond Δv_m [-] (seed 004 Fig. 8)
+  double slide_speed = 0.1;  ///< Δv_m, the sliding speed where traction saturates [m/s]
+};
+
+/// Each ball's dynamics (model.kind = "balls"), resolved: defaults filled in when read.
+struct BallOptions {
+  double mass = 0.0;        ///< m_b [kg] (default ρ_ball π D³/6)
+  double inertia = 0.0;     ///< J [kg m²] about the spin axis (default m_b D²/10)
+  double damping = 0.0;     ///< c_b on the ball's radial velocity [N s/m] (default rotor.damping,
+                            ///< as seed 004 eq. 24)
+  bool centrifugal = true;  ///< the centrifugal load m_b ω_ca² d_m/2 on each ball
+};
+
 /// Model choices.
 struct ModelOptions {
-  std::string kind = "2dof";  ///< "2dof" | "3dof" | "quasistatic" (no integrator: [solver] method,
-                              ///< dt, tolerance unused)
+  std::string kind = "2dof";  ///< "2dof" | "3dof" | "balls" | "quasistatic" (no integrator:
+                              ///< [solver] method, dt, tolerance unused)
   /// Contact law: a Hertz method "exact" | "hamrock-brewe" | "harris-table", or "calibrated"
   /// (the FE constants of `calibration`).
   std::string contact = "exact";
@@ -76,9 +94,12 @@ struct SolverOptions {
 
 /// What `run` writes besides the ring's channels.
 struct OutputOptions {
-  bool ball_loads = false;      ///< add each ball's load Q1…QZ to response.csv
-  bool ball_motion = false;     ///< add each ball centre's radial r1…rZ [m] and vr1…vrZ [m/s]
-  bool ball_approach = false;   ///< add each ball's signed approach d1…dZ [m]
+  bool ball_loads = false;     ///< add each ball's load Q1…QZ to response.csv
+  bool ball_motion = false;    ///< add each ball centre's radial r1…rZ [m] and vr1…vrZ [m/s]
+  bool ball_approach = false;  ///< add each ball's signed approach d1…dZ [m]
+  /// add, per ball, the spin wb1… [rad/s], the outer-race load Qo1… [N] and the friction forces
+  /// on the ball at its inner and outer contact Fi1…, Fo1… [N] (model.kind = "balls" only)
+  bool ball_dynamics = false;
   std::string window = "hann";  ///< spectrum window: "hann" | "flattop" | "rectangular"
   int peaks = 10;               ///< spectrum peaks listed per channel in summary.json
 };
@@ -115,6 +136,8 @@ struct Case {
   Operation operation;
   Excitations excitation;
   ModelOptions model;
+  CageOptions cage;  ///< model.kind = "balls" only
+  BallOptions ball;  ///< model.kind = "balls" only
   SolverOptions solver;
   OutputOptions output;
   AcousticsOptions acoustics;

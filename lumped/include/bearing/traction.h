@@ -28,6 +28,8 @@
 //     on the ball at the outer contact    F_bo = −μ(Δv_o) Q_o,  on the outer race −F_bo.
 // The power they dissipate is P = μ(Δv_i) Q_i Δv_i + μ(Δv_o) Q_o Δv_o ≥ 0.
 
+#include <algorithm>
+#include <cmath>
 #include <string>
 
 #include "bearing/bearing.h"
@@ -39,8 +41,14 @@ struct TractionCurve {
   double max_coefficient = 0.0;  ///< μ_m [-], ≥ 0
   double slide_speed = 1.0;      ///< Δv_m [m/s], > 0
 
-  /// μ(Δv) [-], odd in Δv [m/s].
-  double coefficient(double sliding_speed) const;
+  /// μ(Δv) [-], odd in Δv [m/s]. Inline: the ball-DOF model calls it twice per ball and force.
+  double coefficient(double sliding_speed) const {
+    return max_coefficient * std::clamp(sliding_speed / slide_speed, -1.0, 1.0);
+  }
+  /// dμ/dΔv [s/m]: μ_m/Δv_m on the linear part |Δv| < Δv_m, 0 beyond (one-sided at the kink).
+  double slope(double sliding_speed) const {
+    return std::abs(sliding_speed) < slide_speed ? max_coefficient / slide_speed : 0.0;
+  }
 };
 
 /// A checked TractionCurve: InputError naming `friction_key` unless 0 ≤ μ_m < ∞, or

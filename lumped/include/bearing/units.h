@@ -23,6 +23,7 @@ enum class Dimension {
   damping,        ///< SI: N s/m
   mass_length,    ///< SI: kg m (unbalance: mass times eccentricity)
   velocity,       ///< SI: m/s (speed of sound)
+  inertia,        ///< SI: kg m^2 (a ball's moment of inertia)
   dimensionless,  ///< no unit
 };
 

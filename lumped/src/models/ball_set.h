@@ -78,6 +78,19 @@ struct BallFrame {
   double sin_shaft = 0;          ///< sin ω_i t
 };
 
+/// The ball set at one instant with the two races kept apart (BallSet::evaluate_races), for the
+/// ball-DOF model, where each ball has a contact of its own on each race.
+struct RaceFrame {
+  double cos_theta[kMaxBalls];
+  double sin_theta[kMaxBalls];
+  double inner_excitation[kMaxBalls];  ///< e_i,j = Π_i(θ_j − ω_i t) − ΔD_j/2 [m]
+  double outer_excitation[kMaxBalls];  ///< e_o,j = Π_o(θ_j) − ΔD_j/2 [m]
+  double inner_stiffness[kMaxBalls];   ///< K_i,j [N/m^n_i] (all K_i unless TVDS)
+  double outer_stiffness[kMaxBalls];   ///< K_o,j [N/m^n_o] (all K_o unless TVDS)
+  double cos_shaft = 1;                ///< cos ω_i t
+  double sin_shaft = 0;                ///< sin ω_i t
+};
+
 /// Q = K δ^n for δ > 0 (fast path for n = 3/2).
 inline double contact_load(double K, double n, double delta) {
   return n == 1.5 ? K * delta * std::sqrt(delta) : K * std::pow(delta, n);
@@ -411,6 +424,7 @@ class BallSet {
         K_(in.contact.K),
         exponent_(in.contact.exponent),
         cage_phase_(in.cage_phase),
+        inner_K_(in.contact.inner.K),
         outer_K_(in.contact.outer.K),
         outer_exponent_(in.contact.outer.exponent),
         inner_waviness_(in.inner_waviness),
@@ -537,16 +551,8 @@ class BallSet {
   /// Fills `fr` for time t [s].
   void evaluate(double t, BallFrame& fr) const {
     const int Z = balls_;
-    const Phasor cage = phasor(cage_speed_ * t);  // by rotation, not libm (phasor.h)
-    const double cc = cage.c, sc = cage.s;
-    const Phasor shaft = needs_shaft_ ? phasor(inner_speed_ * t) : Phasor{1.0, 0.0};
-    fr.cos_shaft = shaft.c;
-    fr.sin_shaft = shaft.s;
-    for (int j = 0; j < Z; ++j) {
-      fr.cos_theta[j] = base_cos_[j] * cc - base_sin_[j] * sc;
-      fr.sin_theta[j] = base_sin_[j] * cc + base_cos_[j] * sc;
-      fr.excitation[j] = -size_error_[j];
-    }
+    angles(t, fr);
+    for (int j = 0; j < Z; ++j) fr.excitation[j] = -size_error_[j];
     double curv_i[kMaxBalls], curv_o[kMaxBalls];
     // Outer race: φ_j = θ_j, reference θ_0. Inner race: φ_j = θ_j − ω_i t.
     const double c0 = fr.cos_theta[0], s0 = fr.sin_theta[0];
@@ -560,16 +566,75 @@ class BallSet {
       return;
     }
     for (int j = 0; j < Z; ++j) {
-      const double ki =
-          inner_stiffness_.varies ? inner_stiffness_.compliance(curv_i[j]) : inner_stiffness_.k0;
-      const double ko =
-          outer_stiffness_.varies ? outer_stiffness_.compliance(curv_o[j]) : outer_stiffness_.k0;
-      const double s = ki + ko;  // K_j^{−2/3}
+      const double s = inner_compliance(curv_i[j]) + outer_compliance(curv_o[j]);  // K_j^{−2/3}
       fr.stiffness[j] = 1.0 / (s * std::sqrt(s));
     }
   }
 
+  /// Fills `fr` for time t [s] with each race's excitation and constant apart; a ball-size error
+  /// ΔD_j takes ΔD_j/2 from each contact.
+  void evaluate_races(double t, RaceFrame& fr) const {
+    const int Z = balls_;
+    angles(t, fr);
+    for (int j = 0; j < Z; ++j)
+      fr.inner_excitation[j] = fr.outer_excitation[j] = -0.5 * size_error_[j];
+    double curv_i[kMaxBalls], curv_o[kMaxBalls];
+    const double c0 = fr.cos_theta[0], s0 = fr.sin_theta[0];
+    outer_.evaluate(c0, s0, table_cos_.data(), table_sin_.data(), fr.outer_excitation, curv_o);
+    const double ci = c0 * fr.cos_shaft + s0 * fr.sin_shaft;
+    const double si = s0 * fr.cos_shaft - c0 * fr.sin_shaft;
+    inner_.evaluate(ci, si, table_cos_.data(), table_sin_.data(), fr.inner_excitation, curv_i);
+    if (!tvds()) {
+      std::fill(fr.inner_stiffness, fr.inner_stiffness + Z, inner_K_);
+      std::fill(fr.outer_stiffness, fr.outer_stiffness + Z, outer_K_);
+      return;
+    }
+    for (int j = 0; j < Z; ++j) {
+      const double ki = inner_compliance(curv_i[j]), ko = outer_compliance(curv_o[j]);
+      fr.inner_stiffness[j] = 1.0 / (ki * std::sqrt(ki));
+      fr.outer_stiffness[j] = 1.0 / (ko * std::sqrt(ko));
+    }
+  }
+
+  /// evaluate_races(t), memoised per thread like frame().
+  const RaceFrame& race_frame(double t) const {
+    thread_local struct {
+      std::uint64_t owner = 0;
+      double t = 0.0;
+      RaceFrame frame;
+    } memo;
+    if (memo.owner != id_ || memo.t != t) {
+      evaluate_races(t, memo.frame);
+      memo.owner = id_;
+      memo.t = t;
+    }
+    return memo.frame;
+  }
+
  private:
+  // θ_j and the shaft angle at t: the precomputed (cos, sin) of φ₀ + 2πj/Z rotated by the one
+  // phasor of ω_c t (Frame: BallFrame or RaceFrame).
+  template <class Frame>
+  void angles(double t, Frame& fr) const {
+    const Phasor cage = phasor(cage_speed_ * t);  // by rotation, not libm (phasor.h)
+    const double cc = cage.c, sc = cage.s;
+    const Phasor shaft = needs_shaft_ ? phasor(inner_speed_ * t) : Phasor{1.0, 0.0};
+    fr.cos_shaft = shaft.c;
+    fr.sin_shaft = shaft.s;
+    for (int j = 0; j < balls_; ++j) {
+      fr.cos_theta[j] = base_cos_[j] * cc - base_sin_[j] * sc;
+      fr.sin_theta[j] = base_sin_[j] * cc + base_cos_[j] * sc;
+    }
+  }
+
+  // K^{−2/3} of a ball on each race with TVDS, from the race's Π + Π'' at the contact.
+  double inner_compliance(double curv) const {
+    return inner_stiffness_.varies ? inner_stiffness_.compliance(curv) : inner_stiffness_.k0;
+  }
+  double outer_compliance(double curv) const {
+    return outer_stiffness_.varies ? outer_stiffness_.compliance(curv) : outer_stiffness_.k0;
+  }
+
   void setup_tvds(const ModelInputs& in) {
     const bool hertz_exponents = in.contact.exponent == 1.5 && in.contact.inner.exponent == 1.5 &&
                                  in.contact.outer.exponent == 1.5;
@@ -629,6 +694,7 @@ class BallSet {
   double K_;
   double exponent_;
   double cage_phase_;
+  double inner_K_;
   double outer_K_;
   double outer_exponent_;
   Waviness inner_waviness_, outer_waviness_;  // for rates(): direct sums

@@ -2,6 +2,7 @@
 // A bearing model: a MechanicalSystem whose DOFs include the inner-ring centre, plus what the
 // outputs need (DOF names, ball loads) and what the physics tests need (potential energy).
 
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -11,7 +12,9 @@ namespace bearing {
 
 class BearingModel : public MechanicalSystem {
  public:
-  /// Names of the DOFs, used as output channel stems: {"x", "y"} (2-DOF), {"x", "y", "z"} (3-DOF).
+  /// Names of the ring's DOFs, the first dof_names().size() DOFs, used as output channel stems:
+  /// {"x", "y"} (2-DOF, ball DOFs), {"x", "y", "z"} (3-DOF). A model's further DOFs (the ball-DOF
+  /// model's radial positions and spins) reach the output through the per-ball channels.
   virtual std::vector<std::string> dof_names() const = 0;
 
   /// Number of balls Z.
@@ -47,6 +50,25 @@ class BearingModel : public MechanicalSystem {
 
   /// A starting state near equilibrium (the static solution under the mean load), n entries [m].
   virtual std::vector<double> initial_displacement() const = 0;
+
+  /// The starting velocities, n entries [m/s, rad/s]: at rest, unless the model has DOFs that
+  /// turn (the ball-DOF model's spins start at their kinematic speed).
+  virtual std::vector<double> initial_velocity() const {
+    return std::vector<double>(static_cast<std::size_t>(dofs()), 0.0);
+  }
+
+  /// Whether the model has ball DOFs, and so ball_dynamics().
+  virtual bool has_ball_dofs() const { return false; }
+
+  /// The ball-DOF model's per-ball channels at (t, q, v), Z entries each: the spin ω_b,j relative
+  /// to the cage [rad/s], the outer-race load Q_o,j [N] (ball_loads gives the inner one), and the
+  /// tangential friction forces on the ball at its inner and outer contact [N], positive in the
+  /// direction of rotation. Throws std::logic_error for a model without ball DOFs.
+  virtual void ball_dynamics(double /*t*/, const double* /*q*/, const double* /*v*/,
+                             double* /*spin*/, double* /*outer_load*/, double* /*friction_inner*/,
+                             double* /*friction_outer*/) const {
+    throw std::logic_error("ball_dynamics: this model has no ball DOFs");
+  }
 };
 
 }  // namespace bearing

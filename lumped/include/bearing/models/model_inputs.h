@@ -9,6 +9,7 @@
 #include "bearing/bearing.h"
 #include "bearing/contact.h"
 #include "bearing/excitation.h"
+#include "bearing/traction.h"
 
 namespace bearing {
 
@@ -34,6 +35,14 @@ struct ModelInputs {
   Waviness outer_waviness;               ///< on the outer race (φ = θ_j)
   std::vector<double> ball_size_errors;  ///< ΔD_j [m], empty or Z entries
   bool waviness_stiffness = false;       ///< TVDS: K varies with the waviness curvature (seed 002)
+
+  // The ball-DOF model (model.kind = "balls", seed 004); unused by the others.
+  double cage_slip = 0.0;     ///< s_c in [0, 1): the cage turns at ω_ca = (1 − s_c) ω_c [-]
+  TractionCurve traction;     ///< μ(Δv) at both contacts of every ball (μ_m = 0: no friction)
+  double ball_mass = 0.0;     ///< m_b [kg]; 0: from the ball density, ρ π D³/6
+  double ball_inertia = 0.0;  ///< J [kg m²] about the spin axis; 0: m_b D²/10 (solid sphere)
+  double ball_damping = 0.0;  ///< c_b [N s/m] on each ball's radial velocity (seed 004 eq. 24)
+  bool centrifugal = false;   ///< add the centrifugal load m_b ω_ca² d_m/2 on each ball
 };
 
 }  // namespace bearing

@@ -1,0 +1,88 @@
+#pragma once
+// The ball-DOF model with cage slip and traction friction (seed 004; MODEL.md §4, "ball DOFs + cage
+// slip"): model.kind = "balls". DOFs (2Z + 2), in this order:
+//   q = [x, y, r_1 … r_Z, φ_1 … φ_Z]
+// x, y the inner-ring centre [m]; r_j ball j's centre, radially outward from the position where a
+// nominal ball touches the perfect outer race [m] (the r_j of bearing_model.h's ball_motion);
+// φ_j its spin angle relative to the cage [rad], cyclic (no force depends on it), so v = φ̇_j =
+// ω_b,j.
+//
+// Contacts. The ball sits between two Hertz contacts of its own, with each race's constant:
+//     δ_o,j = r_j + Π_o(θ_j) − ΔD_j/2,
+//     δ_i,j = x cos θ_j + y sin θ_j − r_j − γ + Π_i(θ_j − ω_i t) − ΔD_j/2,
+//     Q_o,j = K_o [δ_o,j]_+^{n_o},   Q_i,j = K_i [δ_i,j]_+^{n_i}   (with TVDS, K per race per
+//     ball).
+// Their sum is the 2-DOF model's approach (MODEL.md §1). Clearance split: all of the per-ball gap
+// γ = P_d/2 (bearing.clearance, the ISO diametral clearance) sits on the inner side, the convention
+// every model of the toolkit uses (outer raceway diameter d_m + D). Any other split g_in + g_out =
+// γ is the shift r_j → r_j − g_out of the ball coordinate: the equations, and so the motion, are
+// the same, with or without ball mass. Seed 004 subtracts its P_d/2 at each contact (eqs. 13–14),
+// so its per-ball gap is its whole P_d: clearance = 2 P_d maps it (examples/seed004_6304.toml).
+//
+// Kinematics. θ_j = φ₀ + 2πj/Z + ω_ca t with ω_ca = (1 − s_c) ω_c (seed 004 eq. 3). Sliding speeds
+// (traction.h, seed 004 eqs. 7–8), with g = D cos α / d_m and the lever arm L = (D/2) cos α:
+//     Δv_i = ½ (ω_i − ω_ca) d_m (1 − g) − L ω_b + u_t,   u_t = −ẋ sin θ_j + ẏ cos θ_j,
+//     Δv_o = ½ ω_ca d_m (1 + g) − L ω_b.
+// u_t, the inner ring's translation along the rolling direction at the contact, is not in seed 004;
+// it is mm/s against the m/s of Δv, but without it the friction on the ring would do work that no
+// sliding accounts for, and the power balance below would not close.
+//
+// Equations of motion (friction forces as derived in traction.h; seed 004's eqs. 20–23 apply the
+// ring's friction with inconsistent signs, sin θ for x and cos θ for y, subtracted in both):
+//     m ẍ + c ẋ = F_x + F_u cos ω_i t − Σ_j [Q_i,j cos θ_j − μ(Δv_i,j) Q_i,j sin θ_j]
+//     m ÿ + c ẏ = F_y + F_u sin ω_i t (− m g) − Σ_j [Q_i,j sin θ_j + μ(Δv_i,j) Q_i,j cos θ_j]
+//     m_b r̈_j + c_b ṙ_j = Q_i,j − Q_o,j (+ m_b ω_ca² d_m/2 with centrifugal)        (seed 004 eq.
+//     24) J ω̇_b,j = L [μ(Δv_i,j) Q_i,j + μ(Δv_o,j) Q_o,j]                                (seed 004
+//     eq. 25)
+// The friction on the ring acts along −t_j, t_j = (−sin θ_j, cos θ_j) the direction of rotation, as
+// the reaction of +μ(Δv_i) Q_i on the ball. The spin torque: the ball's absolute angular speed is
+// ω_ca − ω_b (seed 004's ω_b is counted against the rotation), and the tangential forces F_bi at
+// its inner and F_bo = −μ(Δv_o) Q_o at its outer contact turn it by (D/2)(F_bo − F_bi) cos α. The
+// cage carries the balls at ω_ca whatever the forces (seed 004's assumption 4): the tangential
+// forces' net pull on each ball is taken by the cage, the inner ring's friction torque by the
+// drive.
+//
+// Power. Friction on the model's DOFs does P_f = Σ_j −μ(Δv_i) Q_i u_t + L ω_b [μ(Δv_i) Q_i +
+// μ(Δv_o) Q_o]; the prescribed rotations (the inner ring, and the cage, in whose frame ω_b is
+// counted) give the contacts P_d = −Σ_j [μ(Δv_i) Q_i ½ (ω_i − ω_ca) d_m (1 − g) + μ(Δv_o) Q_o ½
+// ω_ca d_m (1 + g)]; and P_f + P_d = −Σ_j [μ(Δv_i) Q_i Δv_i + μ(Δv_o) Q_o Δv_o], minus what the
+// contacts dissipate. The DOFs' energy E = ½ vᵀMv + Σ_j [K_i δ_i^{n_i+1}/(n_i+1) + K_o
+// δ_o^{n_o+1}/(n_o+1)] − F_x x − F_y y − F_c Σ_j r_j (constant loads, no unbalance) changes at
+// dE/dt = P_f − c (ẋ² + ẏ²) − c_b Σ_j ṙ_j² + ∂E/∂t, the last the work of the turning contact
+// geometry (0 at zero speed, where the energy decays exactly by what the contacts dissipate).
+//
+// Ball mass m_b = ρ π D³/6 (material.ball.density) and J = m_b D²/10 unless given. The analytic
+// Jacobian is provided.
+
+#include <memory>
+
+#include "bearing/models/bearing_model.h"
+#include "bearing/models/model_inputs.h"
+
+namespace bearing {
+
+/// Powers of the traction at one instant [W] (see the header comment).
+struct FrictionPower {
+  double dissipated = 0.0;  ///< Σ_j μ(Δv_i) Q_i Δv_i + μ(Δv_o) Q_o Δv_o ≥ 0
+  double on_dofs = 0.0;     ///< P_f: friction power on the ring's translation and the balls' spin
+  double drives = 0.0;      ///< P_d: friction power on the ring's rotation and the cage's
+};
+
+class BallDofModel : public BearingModel {
+ public:
+  /// The cage speed the model runs at, ω_ca = (1 − s_c) ω_c [rad/s].
+  virtual double cage_speed() const = 0;
+  /// The cage slip s_c [-].
+  virtual double cage_slip() const = 0;
+  /// The constant radial force on each ball [N]: m_b ω_ca² d_m/2 with centrifugal, else 0.
+  virtual double centrifugal_force() const = 0;
+  /// The traction powers at (t, q, v).
+  virtual FrictionPower friction_power(double t, const double* q, const double* v) const = 0;
+};
+
+/// Builds the ball-DOF model. Throws InputError naming the case key for invalid inputs (those of
+/// the 2-DOF model, and cage.slip outside [0, 1), a negative ball.mass, ball.inertia or
+/// ball.damping, an axial load).
+std::unique_ptr<BallDofModel> make_ball_dof_model(const ModelInputs& inputs);
+
+}  // namespace bearing
