@@ -277,6 +277,22 @@ TEST(BallDynamics, EveryIntegratorAgreesOnTheResponse) {
   }
 }
 
+// Seed 004 integrates with RK4 at 10 µs; with steel balls (3.55 g) on their Hertz contacts the
+// radial contact mode (≈ 3e5 rad/s at 2000 N) makes that unstable, and the run would end with a
+// bounded but meaningless response. The run refuses it, naming solver.dt and the limit.
+TEST(BallDynamics, Rk4AboveItsStabilityLimitIsRefused) {
+  try {
+    simulate(seed004({"solver.dt=10us"}));
+    ADD_FAILURE() << "no error";
+  } catch (const InputError& e) {
+    const std::string what = e.what();
+    EXPECT_NE(what.find("solver.dt = 10 us"), std::string::npos) << what;
+    EXPECT_NE(what.find("newmark"), std::string::npos) << what;
+  }
+  EXPECT_NO_THROW(simulate(seed004({"solver.dt=10us", "solver.method=newmark",
+                                    "solver.duration=0.01s", "solver.transient=0"})));
+}
+
 // --- Outputs and input errors -------------------------------------------------------------
 
 TEST(BallDynamics, WritesPerBallChannelsAndTheCageUsed) {

@@ -1007,5 +1007,16 @@ TEST(IntegratorJacobian, CentralDifferencesMatchAnalytic) {
   }
 }
 
+// The highest natural frequency of a two-mass chain against the roots of det(K − λM) = 0,
+// M m λ² − (M k₂ + m (k₁ + k₂)) λ + k₁ k₂ = 0 (the Jacobian by the default central differences).
+TEST(IntegratorStability, HighestLinearFrequencyOfATwoMassChain) {
+  const StiffPair s;
+  const double q[2] = {0, 0}, v[2] = {0, 0};
+  const double b = s.M * s.k2 + s.m * (s.k1 + s.k2), a = s.M * s.m, c = s.k1 * s.k2;
+  const double largest = (b + std::sqrt(b * b - 4 * a * c)) / (2 * a);
+  EXPECT_NEAR(highest_linear_frequency(s, 0.0, q, v), std::sqrt(largest),
+              1e-6 * std::sqrt(largest));
+}
+
 }  // namespace
 }  // namespace bearing

@@ -23,6 +23,8 @@
 #include <string>
 #include <vector>
 
+#include <Eigen/Dense>
+
 #include "bearing/errors.h"
 #include "bearing/units.h"
 #include "integrator_detail.h"
@@ -57,6 +59,21 @@ void validate(const IntegratorSettings& s) {
 }
 
 }  // namespace
+
+double highest_linear_frequency(const MechanicalSystem& system, double t, const double* q,
+                                const double* v) {
+  const int n = system.dofs();
+  using RowMajor = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
+  RowMajor dfdq(n, n), dfdv(n, n);
+  system.force_jacobian(t, q, v, dfdq.data(), dfdv.data());
+  std::vector<double> mass(static_cast<std::size_t>(n));
+  system.mass(mass.data());
+  for (int i = 0; i < n; ++i) dfdq.row(i) /= mass[static_cast<std::size_t>(i)];
+  const Eigen::MatrixXd a = -dfdq;
+  const Eigen::EigenSolver<Eigen::MatrixXd> eig(a, /*computeEigenvectors=*/false);
+  if (eig.info() != Eigen::Success) return 0.0;
+  return std::sqrt(eig.eigenvalues().cwiseAbs().maxCoeff());
+}
 
 std::vector<std::string> integrator_names() {
   return {"rk4", "rkf45", "rk8pd", "newmark", "bdf"};

@@ -59,4 +59,13 @@ std::unique_ptr<Integrator> make_integrator(const IntegratorSettings& settings);
 /// The method names make_integrator accepts.
 std::vector<std::string> integrator_names();
 
+/// The highest natural frequency of the system linearised at (t, q, v) [rad/s]:
+/// √max|λ(M⁻¹ ∂f/∂q)| (force_jacobian). An explicit fixed step is stable only below about
+/// 2.8/ω for RK4 (its stability region reaches ±2√2 i on the imaginary axis).
+double highest_linear_frequency(const MechanicalSystem& system, double t, const double* q,
+                                const double* v);
+
+/// RK4's stability limit on the imaginary axis, |h ω| ≤ 2√2.
+constexpr double kRk4StabilityLimit = 2.8284271247461903;
+
 }  // namespace bearing
