@@ -711,10 +711,6 @@ Case resolve(const toml::table& doc, const std::string& source, const std::strin
   require(c.ball.inertia > 0, "ball.inertia", c.ball.inertia, Dimension::inertia,
           "must be positive");
   require(c.ball.damping >= 0, "ball.damping", c.ball.damping, Dimension::damping, "must be >= 0");
-  if (balls && c.operation.axial_load != 0)
-    throw InputError("operation.axial_load = " + fmt_si(c.operation.axial_load, Dimension::force) +
-                     ": model.kind = \"balls\" is planar (seed 004), it has no axial DOF; use "
-                     "model.kind = \"3dof\" for an axial load or preload");
 
   // [solver]
   TableReader solver(top_table(doc, "solver"), "solver");

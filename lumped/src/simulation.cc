@@ -82,7 +82,8 @@ namespace {
 // contact angle.
 BearingFrequencies run_frequencies(const Case& c) {
   Bearing b = c.bearing;
-  if (c.model.kind == "3dof") b.contact_angle = solve_axial_preload(model_inputs(c)).contact_angle;
+  if (c.model.kind == "3dof" || (c.model.kind == "balls" && c.operation.axial_load != 0))
+    b.contact_angle = solve_axial_preload(model_inputs(c)).contact_angle;
   const double slip = c.model.kind == "balls" ? c.cage.slip : 0.0;
   return bearing_frequencies(b, c.operation.speed, 0.0, slip);
 }

@@ -1035,7 +1035,73 @@ TEST(BallDofs, RejectsBadInputsNamingTheKey) {
   fails_with(in, "cage.friction");
   in = inputs_6304();
   in.axial_load = 100;
-  fails_with(in, "operation.axial_load");
+  in.axial_damping = -1;
+  fails_with(in, "rotor.axial_damping");
+}
+
+// With an axial load the ball sits on the 3-DOF model's contact line: massless balls in
+// equilibrium (no centrifugal load, no friction) give the ring exactly the 3-DOF model's force,
+// z included, and the balls' total approaches are its δ_j.
+TEST(BallDofs, AxialLoadGivesTheThreeDofContactWithMasslessBalls) {
+  ModelInputs in = inputs_6304(0.0, 0.0);
+  in.centrifugal = false;
+  in.axial_load = 500;
+  in.axial_mass = 0.4;
+  in.outer_waviness.harmonics = {{9, 0.4e-6, 0.3}};
+  in.inner_waviness.harmonics = {{5, 0.3e-6, 2.0}};
+  in.ball_size_errors = {0.5e-6, -0.3e-6, 0, 0.2e-6, 0, -0.6e-6, 0.1e-6};
+  const auto balls = make_ball_dof_model(in);
+  const auto three = make_three_dof_model(in);
+  EXPECT_EQ(balls->dofs(), 2 * 7 + 3);
+  EXPECT_EQ(balls->dof_names(), (std::vector<std::string>{"x", "y", "z"}));
+  EXPECT_NEAR(balls->cage_speed(), three_dof_cage_speed(in), 1e-12);
+  const auto q = balls->initial_displacement();
+  const auto q3 = three->initial_displacement();
+  for (int i = 0; i < 3; ++i) EXPECT_EQ(q[i], q3[i]) << i;
+  const std::vector<double> v(balls->dofs(), 0.0), v3(3, 0.0);
+  const auto f = eval_force(*balls, 0.0, q, v);
+  const auto f3 = eval_force(*three, 0.0, {q[0], q[1], q[2]}, v3);
+  for (int i = 0; i < 3; ++i) EXPECT_NEAR(f[i], f3[i], 1e-9 * 2000) << "ring " << i;
+  for (int j = 0; j < 7; ++j) EXPECT_NEAR(f[3 + j], 0.0, 1e-9 * 2000) << "ball " << j;
+  std::vector<double> a(7), a3(7);
+  balls->ball_approaches(0.0, q.data(), a.data());
+  three->ball_approaches(0.0, q3.data(), a3.data());
+  for (int j = 0; j < 7; ++j) EXPECT_NEAR(a[j], a3[j], 1e-15) << "ball " << j;
+}
+
+TEST(BallDofs, AxialJacobianAndPotentialGradient) {
+  ModelInputs in = inputs_6304(0.03);
+  in.axial_load = 500;
+  in.outer_waviness.harmonics = {{9, 0.4e-6, 0.3}};
+  const auto m = make_ball_dof_model(in);
+  std::vector<double> q = m->initial_displacement(), v = m->initial_velocity();
+  q[0] += 1.1e-6;
+  q[2] -= 0.6e-6;
+  v[0] = 0.01, v[1] = -0.007, v[2] = 0.004;
+  for (int j = 0; j < 7; ++j) q[3 + j] += 0.15e-6 * std::sin(1.3 * j + 0.2);
+  expect_jacobian_matches(*m, 1e-3, q, v, 1e-6);
+  ModelInputs free = contact_only(in);
+  free.damping = free.axial_damping = free.ball_damping = 0;
+  free.centrifugal = false;
+  free.traction = make_traction_curve(0.0, 0.1);
+  free.axial_load = 500;  // the axial geometry needs the load; it is taken off f[2] below
+  const auto mf = make_ball_dof_model(free);
+  // −∇V is the contact force on the ring's and the balls' DOFs (the spins have no potential).
+  std::vector<double> f(mf->dofs());
+  const std::vector<double> zero(mf->dofs(), 0.0);
+  mf->force(1e-3, q.data(), zero.data(), f.data());
+  f[2] -= 500;
+  const double h = 1e-10;
+  double scale = 0;
+  for (double x : f) scale = std::max(scale, std::abs(x));
+  for (int i = 0; i < mf->dofs() - 7; ++i) {
+    auto qp = q, qm = q;
+    qp[i] += h;
+    qm[i] -= h;
+    const double grad =
+        (mf->potential_energy(1e-3, qp.data()) - mf->potential_energy(1e-3, qm.data())) / (2 * h);
+    EXPECT_NEAR(-grad, f[i], 1e-6 * scale) << "dof " << i;
+  }
 }
 
 }  // namespace balls

@@ -1,4 +1,16 @@
 // The ball-DOF model with cage slip and traction (seed 004); see ball_dofs.h for the equations.
+//
+// One loop serves both geometries. Per ball it forms the two approaches, the loads, and the unit
+// contact normal n_j along which the inner contact pushes the ring (ring components: (cos θ_j,
+// sin θ_j) planar; (cos α_j cos θ_j, cos α_j sin θ_j, sin α_j) with an axial load), and 1/L_j,
+// the curvature of the turning contact line (0 planar). Then, with the ring's friction direction
+// τ_j = (sin θ_j, −cos θ_j, 0) (the force on the ring is μ(Δv_i) Q_i τ_j) and k = dQ/dδ,
+//     ∂f_ring/∂q_ring = −k_i n nᵀ − (Q_i/L)(e eᵀ + e_z e_zᵀ − n nᵀ) + μ_i k_i τ nᵀ,
+//     ∂f_ring/∂s_j   = k_i (n − μ_i τ),   ∂f_s/∂q_ring = k_i nᵀ,   ∂f_s/∂s_j = −k_i − k_o,
+//     ∂f_w/∂q_ring = L_s μ_i k_i nᵀ,      ∂f_w/∂s_j = L_s (μ_o k_o − μ_i k_i),
+// (e = (cos θ_j, sin θ_j, 0); the Q_i/L term is the 3-DOF model's geometric stiffness,
+// three_dof.cc) and the velocity terms through the sliding speeds, ∂Δv_i/∂(ẋ, ẏ, ω_b) = (−sin θ,
+// cos θ, −L_s), ∂Δv_o/∂ω_b = −L_s, times Q μ'(Δv).
 
 #include "bearing/models/ball_dofs.h"
 
@@ -11,14 +23,17 @@
 #include "ball_set.h"
 #include "bearing/errors.h"
 #include "bearing/kinematics.h"
+#include "bearing/models/three_dof.h"
 #include "bearing/static_load.h"
 #include "bearing/units.h"
+#include "groove_geometry.h"
 
 namespace bearing {
 
 namespace {
 
-// Validates the inputs (before anything is built from them) and returns ω_ca = (1 − s_c) ω_c.
+// Validates the inputs (before anything is built from them) and returns ω_ca = (1 − s_c) ω_c,
+// ω_c at the loaded contact angle of the axial static state when there is an axial load.
 double checked_cage_speed(const ModelInputs& in) {
   detail::validate_common_inputs(in);
   if (!(in.cage_slip >= 0 && in.cage_slip < 1))
@@ -35,10 +50,6 @@ double checked_cage_speed(const ModelInputs& in) {
   if (!(std::isfinite(in.ball_damping) && in.ball_damping >= 0))
     throw InputError("ball.damping = " + format_number(in.ball_damping) +
                      " N s/m: must be finite and >= 0");
-  if (in.axial_load != 0.0)
-    throw InputError("operation.axial_load = " + format_number(in.axial_load) +
-                     " N: the ball-DOF model (model.kind = \"balls\") is planar, as seed 004's; an "
-                     "axial load or preload needs model.kind = \"3dof\"");
   if (!(in.contact.inner.K > 0 && in.contact.outer.K > 0 && std::isfinite(in.contact.inner.K) &&
         std::isfinite(in.contact.outer.K) && in.contact.inner.exponent >= 1 &&
         in.contact.outer.exponent >= 1))
@@ -46,99 +57,126 @@ double checked_cage_speed(const ModelInputs& in) {
                      format_number(in.contact.inner.K) +
                      ", K_o = " + format_number(in.contact.outer.K) +
                      " N/m^n (positive, finite) and exponents >= 1");
-  return (1.0 - in.cage_slip) * cage_speed(in.bearing, in.inner_speed);
+  const double wc =
+      in.axial_load != 0.0 ? three_dof_cage_speed(in) : cage_speed(in.bearing, in.inner_speed);
+  return (1.0 - in.cage_slip) * wc;
 }
 
 // One ball's two contacts.
 struct BallContacts {
   double delta_i, delta_o;  // approaches [m], signed
   double load_i, load_o;    // Q_i, Q_o [N]
+  double ca = 1, sa = 0;    // cos α_j, sin α_j of the contact line (planar: 1, 0)
+  double inv_length = 0;    // 1/L_j [1/m] (planar: 0)
 };
 
 class BallDofs final : public BallDofModel {
  public:
   explicit BallDofs(const ModelInputs& in)
       : set_(in, checked_cage_speed(in)),
+        axial_(in.axial_load != 0.0),
+        ring_(axial_ ? 3 : 2),
         balls_(in.bearing.balls),
         mass_(in.mass),
+        axial_mass_(in.axial_mass > 0 ? in.axial_mass : in.mass),
         damping_(in.damping),
+        axial_damping_(in.axial_damping),
         gap_(in.bearing.ball_gap()),
         load_x_(in.load.x()),
         load_y_(in.load.y() - (in.gravity ? in.mass * detail::kGravity : 0.0)),
+        load_z_(in.axial_load),
         unbalance_force_(in.unbalance * in.inner_speed * in.inner_speed),
         phase_(in.cage_phase),
         slip_(in.cage_slip),
         inner_exponent_(in.contact.inner.exponent),
         outer_exponent_(in.contact.outer.exponent),
         curve_(in.traction),
-        friction_(in.traction.max_coefficient > 0),
-        series_K_(in.contact.K),
-        series_exponent_(in.contact.exponent) {
+        friction_(in.traction.max_coefficient > 0) {
     const Bearing& b = in.bearing;
     const double D = b.ball_diameter, dm = b.pitch_diameter;
-    const double g = D * std::cos(b.contact_angle) / dm;
+    double alpha = b.contact_angle;
+    if (axial_) {
+      geometry_ = detail::groove_geometry(b);
+      alpha = std::abs(solve_axial_preload(in).contact_angle);
+      ring_start_ = make_three_dof_model(in)->initial_displacement();
+    } else {
+      StaticLoadOptions o;
+      o.phase = phase_;
+      o.exponent = in.contact.exponent;
+      const StaticLoadResult st =
+          solve_static_load(balls_, in.contact.K, gap_, Eigen::Vector2d(load_x_, load_y_), o);
+      ring_start_ = {st.deflection.x(), st.deflection.y()};
+    }
+    const double g = D * std::cos(alpha) / dm;
     const double wc = set_.cage_speed();
     ball_mass_ = in.ball_mass > 0 ? in.ball_mass : b.ball.density * M_PI * D * D * D / 6.0;
     ball_inertia_ = in.ball_inertia > 0 ? in.ball_inertia : ball_mass_ * D * D / 10.0;
     ball_damping_ = in.ball_damping;
-    lever_ = 0.5 * D * std::cos(b.contact_angle);
+    lever_ = 0.5 * D * std::cos(alpha);
     drive_inner_ = 0.5 * (in.inner_speed - wc) * dm * (1.0 - g);
     drive_outer_ = 0.5 * wc * dm * (1.0 + g);
+    // Centrifugal load along the ball's DOF: radial (planar), on the contact line at the static
+    // contact angle (axial), so that it has the potential −F_c cos α s_j.
     centrifugal_ = in.centrifugal ? ball_mass_ * wc * wc * 0.5 * dm : 0.0;
+    centrifugal_along_ = axial_ ? centrifugal_ * std::cos(alpha) : centrifugal_;
   }
 
-  int dofs() const override { return 2 * balls_ + 2; }
+  int dofs() const override { return ring_ + 2 * balls_; }
   void mass(double* m) const override {
     m[0] = m[1] = mass_;
-    std::fill(m + 2, m + 2 + balls_, ball_mass_);
-    std::fill(m + 2 + balls_, m + 2 + 2 * balls_, ball_inertia_);
+    if (axial_) m[2] = axial_mass_;
+    std::fill(m + ring_, m + ring_ + balls_, ball_mass_);
+    std::fill(m + ring_ + balls_, m + ring_ + 2 * balls_, ball_inertia_);
   }
-  bool cyclic(int i) const override { return i >= 2 + balls_; }
+  bool cyclic(int i) const override { return i >= ring_ + balls_; }
 
   void force(double t, const double* q, const double* v, double* f) const override {
     const detail::RaceFrame& fr = set_.race_frame(t);
     const int Z = balls_;
-    const double x = q[0], y = q[1], vx = v[0], vy = v[1];
-    const double* r = q + 2;
-    const double* vr = v + 2;
-    const double* spin = v + 2 + Z;
+    const double vx = v[0], vy = v[1];
+    const double* s_dof = q + ring_;
+    const double* vs = v + ring_;
+    const double* spin = v + ring_ + Z;
     double fx = load_x_ + unbalance_force_ * fr.cos_shaft - damping_ * vx;
     double fy = load_y_ + unbalance_force_ * fr.sin_shaft - damping_ * vy;
-    double* radial = f + 2;
-    double* torque = f + 2 + Z;
+    double fz = axial_ ? load_z_ - axial_damping_ * v[2] : 0.0;
+    double* radial = f + ring_;
+    double* torque = f + ring_ + Z;
     for (int j = 0; j < Z; ++j) {
       const double c = fr.cos_theta[j], s = fr.sin_theta[j];
-      const BallContacts k = contacts(fr, j, x, y, r[j]);
-      fx -= k.load_i * c;
-      fy -= k.load_i * s;
-      radial[j] = k.load_i - k.load_o + centrifugal_ - ball_damping_ * vr[j];
+      const BallContacts k = contacts(fr, j, q, s_dof[j]);
+      fx -= k.load_i * k.ca * c;
+      fy -= k.load_i * k.ca * s;
+      fz -= k.load_i * k.sa;
+      radial[j] = k.load_i - k.load_o + centrifugal_along_ - ball_damping_ * vs[j];
       torque[j] = 0.0;
       if (!friction_) continue;
       const double pi = curve_.coefficient(inner_sliding(spin[j], vx, vy, c, s)) * k.load_i;
       const double po = curve_.coefficient(outer_sliding(spin[j])) * k.load_o;
-      fx += pi * s;  // −μ Q_i t_j on the ring
+      fx += pi * s;  // μ Q_i τ_j on the ring
       fy -= pi * c;
       torque[j] = lever_ * (pi + po);
     }
     f[0] = fx;
     f[1] = fy;
+    if (axial_) f[2] = fz;
   }
 
-  // Row-major n×n; see the header comment of the .h for the forces differentiated here.
+  // Row-major n×n (see the top of this file).
   void force_jacobian(double t, const double* q, const double* v, double* dfdq,
                       double* dfdv) const override {
     const detail::RaceFrame& fr = set_.race_frame(t);
-    const int Z = balls_, n = dofs();
+    const int Z = balls_, n = dofs(), nr = ring_;
     std::fill(dfdq, dfdq + n * n, 0.0);
     std::fill(dfdv, dfdv + n * n, 0.0);
     const auto at = [n](double* m, int i, int k) -> double& { return m[i * n + k]; };
-    const double x = q[0], y = q[1], vx = v[0], vy = v[1];
+    const double vx = v[0], vy = v[1];
     at(dfdv, 0, 0) = at(dfdv, 1, 1) = -damping_;
+    if (axial_) at(dfdv, 2, 2) = -axial_damping_;
     for (int j = 0; j < Z; ++j) {
-      const int R = 2 + j, W = 2 + Z + j;
+      const int S = nr + j, W = nr + Z + j;
       const double c = fr.cos_theta[j], s = fr.sin_theta[j];
-      const BallContacts k = contacts(fr, j, x, y, q[R]);
-      // dQ_i/d(x, y, r_j) = k_i (c, s, −1), dQ_o/dr_j = k_o.
+      const BallContacts k = contacts(fr, j, q, q[S]);
       const double ki = k.delta_i > 0 ? inner_exponent_ * k.load_i / k.delta_i : 0.0;
       const double ko = k.delta_o > 0 ? outer_exponent_ * k.load_o / k.delta_o : 0.0;
       double mi = 0, mo = 0, si = 0, so = 0;  // μ and dμ/dΔv at both contacts
@@ -147,22 +185,25 @@ class BallDofs final : public BallDofModel {
         mi = curve_.coefficient(dvi), si = curve_.slope(dvi);
         mo = curve_.coefficient(dvo), so = curve_.slope(dvo);
       }
-      const double gx = -c + mi * s, gy = -s - mi * c;  // ring force per unit Q_i
-      const double dqi[3] = {ki * c, ki * s, -ki};
-      const int cols[3] = {0, 1, R};
-      for (int m = 0; m < 3; ++m) {
-        at(dfdq, 0, cols[m]) += gx * dqi[m];
-        at(dfdq, 1, cols[m]) += gy * dqi[m];
-        at(dfdq, R, cols[m]) += dqi[m];
-        at(dfdq, W, cols[m]) += lever_ * mi * dqi[m];
+      const double nv[3] = {k.ca * c, k.ca * s, k.sa};  // contact normal, ring components
+      const double ev[3] = {c, s, 0.0}, zv[3] = {0.0, 0.0, 1.0};
+      const double tau[3] = {s, -c, 0.0};
+      const double geo = k.load_i * k.inv_length;  // Q_i/L
+      for (int a = 0; a < nr; ++a) {
+        for (int b = 0; b < nr; ++b)
+          at(dfdq, a, b) += -ki * nv[a] * nv[b] -
+                            geo * (ev[a] * ev[b] + zv[a] * zv[b] - nv[a] * nv[b]) +
+                            mi * ki * tau[a] * nv[b];
+        at(dfdq, a, S) += ki * (nv[a] - mi * tau[a]);
+        at(dfdq, S, a) += ki * nv[a];
+        at(dfdq, W, a) += lever_ * mi * ki * nv[a];
       }
-      at(dfdq, R, R) -= ko;
-      at(dfdq, W, R) += lever_ * mo * ko;
-      at(dfdv, R, R) = -ball_damping_;
+      at(dfdq, S, S) += -ki - ko;
+      at(dfdq, W, S) += lever_ * (mo * ko - mi * ki);
+      at(dfdv, S, S) = -ball_damping_;
       if (!friction_) continue;
-      // dΔv_i/d(ẋ, ẏ, ω_b) = (−s, c, −L), dΔv_o/dω_b = −L.
       const double ai = k.load_i * si, ao = k.load_o * so;
-      const double dvi[3] = {-s, c, -lever_};
+      const double dvi[3] = {-s, c, -lever_};  // ∂Δv_i/∂(ẋ, ẏ, ω_b)
       const int vcols[3] = {0, 1, W};
       for (int m = 0; m < 3; ++m) {
         at(dfdv, 0, vcols[m]) += s * ai * dvi[m];
@@ -173,29 +214,54 @@ class BallDofs final : public BallDofModel {
     }
   }
 
-  std::vector<std::string> dof_names() const override { return {"x", "y"}; }
+  std::vector<std::string> dof_names() const override {
+    return axial_ ? std::vector<std::string>{"x", "y", "z"} : std::vector<std::string>{"x", "y"};
+  }
   int balls() const override { return balls_; }
 
   void ball_loads(double t, const double* q, double* loads) const override {
     detail::RaceFrame fr;
     set_.evaluate_races(t, fr);
-    for (int j = 0; j < balls_; ++j) loads[j] = contacts(fr, j, q[0], q[1], q[2 + j]).load_i;
+    for (int j = 0; j < balls_; ++j) loads[j] = contacts(fr, j, q, q[ring_ + j]).load_i;
   }
 
-  // The ball's total approach δ_i + δ_o, the 2-DOF model's δ_j.
+  // The ball's total approach δ_i + δ_o: the 2-DOF model's δ_j (planar), the 3-DOF model's
+  // δ_j = L_j − A₀ (axial).
   void ball_approaches(double t, const double* q, double* out) const override {
     detail::RaceFrame fr;
     set_.evaluate_races(t, fr);
     for (int j = 0; j < balls_; ++j) {
-      const BallContacts k = contacts(fr, j, q[0], q[1], q[2 + j]);
+      const BallContacts k = contacts(fr, j, q, q[ring_ + j]);
       out[j] = k.delta_i + k.delta_o;
     }
   }
 
-  void ball_motion(double /*t*/, const double* q, const double* v, double* r,
+  // Planar: the DOF itself. Axial: the 3-DOF model's r_j = δ_o cos α_j − Π_o + ΔD_j/2
+  // (bearing_model.h) with δ_o = s_j, and its rate with d(cos α_j)/dt from the ring's motion
+  // (three_dof.cc).
+  void ball_motion(double t, const double* q, const double* v, double* r,
                    double* vr) const override {
-    std::copy(q + 2, q + 2 + balls_, r);
-    std::copy(v + 2, v + 2 + balls_, vr);
+    if (!axial_) {
+      std::copy(q + 2, q + 2 + balls_, r);
+      std::copy(v + 2, v + 2 + balls_, vr);
+      return;
+    }
+    detail::RaceFrame fr;
+    set_.evaluate_races(t, fr);
+    detail::BallRates br;
+    set_.rates(t, br);
+    const double wc = set_.cage_speed(), w = geometry_.w0 + q[2];
+    for (int j = 0; j < balls_; ++j) {
+      const double c = fr.cos_theta[j], s = fr.sin_theta[j];
+      const BallContacts k = contacts(fr, j, q, q[3 + j]);
+      const double rho_rate =
+          v[0] * c + v[1] * s + wc * (q[1] * c - q[0] * s) + br.excitation_rate[j];
+      const double L = 1.0 / k.inv_length;
+      const double L_rate = (k.ca * L * rho_rate + w * v[2]) / L;
+      const double ca_rate = (rho_rate - k.ca * L_rate) / L;
+      r[j] = q[3 + j] * k.ca - br.outer_profile[j] + 0.5 * set_.size_error(j);
+      vr[j] = v[3 + j] * k.ca + q[3 + j] * ca_rate - br.outer_profile_rate[j];
+    }
   }
 
   bool has_ball_dofs() const override { return true; }
@@ -206,8 +272,8 @@ class BallDofs final : public BallDofModel {
     set_.evaluate_races(t, fr);
     const int Z = balls_;
     for (int j = 0; j < Z; ++j) {
-      const double c = fr.cos_theta[j], s = fr.sin_theta[j], w = v[2 + Z + j];
-      const BallContacts k = contacts(fr, j, q[0], q[1], q[2 + j]);
+      const double c = fr.cos_theta[j], s = fr.sin_theta[j], w = v[ring_ + Z + j];
+      const BallContacts k = contacts(fr, j, q, q[ring_ + j]);
       spin[j] = w;
       outer_load[j] = k.load_o;
       friction_inner[j] = curve_.coefficient(inner_sliding(w, v[0], v[1], c, s)) * k.load_i;
@@ -221,27 +287,22 @@ class BallDofs final : public BallDofModel {
     double e = 0.0;
     const double ni = inner_exponent_, no = outer_exponent_;
     for (int j = 0; j < balls_; ++j) {
-      const BallContacts k = contacts(fr, j, q[0], q[1], q[2 + j]);
+      const BallContacts k = contacts(fr, j, q, q[ring_ + j]);
       if (k.delta_i > 0) e += k.load_i * k.delta_i / (ni + 1.0);
       if (k.delta_o > 0) e += k.load_o * k.delta_o / (no + 1.0);
     }
     return e;
   }
 
-  // The ring at its static solution under the constant load (series law, as the 2-DOF model);
-  // each ball where its two contacts and the centrifugal force balance, Q_o = Q_i + F_c, at t = 0.
+  // The ring at the static solution of the 2-DOF (planar) or 3-DOF (axial) model under the
+  // constant loads; each ball where its contacts and the centrifugal load balance at t = 0,
+  // Q_o = Q_i + F_c (cos α).
   std::vector<double> initial_displacement() const override {
-    StaticLoadOptions o;
-    o.phase = phase_;
-    o.exponent = series_exponent_;
-    const StaticLoadResult st =
-        solve_static_load(balls_, series_K_, gap_, Eigen::Vector2d(load_x_, load_y_), o);
     std::vector<double> q(static_cast<std::size_t>(dofs()), 0.0);
-    q[0] = st.deflection.x();
-    q[1] = st.deflection.y();
+    std::copy(ring_start_.begin(), ring_start_.end(), q.begin());
     detail::RaceFrame fr;
     set_.evaluate_races(0.0, fr);
-    for (int j = 0; j < balls_; ++j) q[2 + j] = ball_equilibrium(fr, j, q[0], q[1]);
+    for (int j = 0; j < balls_; ++j) q[ring_ + j] = ball_equilibrium(fr, j, q.data());
     return q;
   }
 
@@ -250,7 +311,7 @@ class BallDofs final : public BallDofModel {
   // s_c = 0 (seed 004 starts from the kinematic spin).
   std::vector<double> initial_velocity() const override {
     std::vector<double> v(static_cast<std::size_t>(dofs()), 0.0);
-    std::fill(v.begin() + 2 + balls_, v.end(), (drive_inner_ + drive_outer_) / (2.0 * lever_));
+    std::fill(v.begin() + ring_ + balls_, v.end(), (drive_inner_ + drive_outer_) / (2.0 * lever_));
     return v;
   }
 
@@ -264,8 +325,8 @@ class BallDofs final : public BallDofModel {
     FrictionPower p;
     const int Z = balls_;
     for (int j = 0; j < Z; ++j) {
-      const double c = fr.cos_theta[j], s = fr.sin_theta[j], w = v[2 + Z + j];
-      const BallContacts k = contacts(fr, j, q[0], q[1], q[2 + j]);
+      const double c = fr.cos_theta[j], s = fr.sin_theta[j], w = v[ring_ + Z + j];
+      const BallContacts k = contacts(fr, j, q, q[ring_ + j]);
       const double dvi = inner_sliding(w, v[0], v[1], c, s), dvo = outer_sliding(w);
       const double pi = curve_.coefficient(dvi) * k.load_i, po = curve_.coefficient(dvo) * k.load_o;
       p.dissipated += pi * dvi + po * dvo;
@@ -276,10 +337,23 @@ class BallDofs final : public BallDofModel {
   }
 
  private:
-  BallContacts contacts(const detail::RaceFrame& fr, int j, double x, double y, double r) const {
+  // Ball j's contacts for the ring state q and the ball's DOF s (ball_dofs.h).
+  BallContacts contacts(const detail::RaceFrame& fr, int j, const double* q, double s) const {
     BallContacts k;
-    k.delta_o = r + fr.outer_excitation[j];
-    k.delta_i = x * fr.cos_theta[j] + y * fr.sin_theta[j] - r - gap_ + fr.inner_excitation[j];
+    const double c = fr.cos_theta[j], sn = fr.sin_theta[j];
+    if (axial_) {
+      const double rho = q[0] * c + q[1] * sn + fr.inner_excitation[j] + fr.outer_excitation[j];
+      double L;
+      const double total = detail::approach(geometry_, rho, q[2], L);
+      k.delta_o = s;
+      k.delta_i = total - s;
+      k.inv_length = 1.0 / L;
+      k.ca = (geometry_.u0 + rho) * k.inv_length;
+      k.sa = (geometry_.w0 + q[2]) * k.inv_length;
+    } else {
+      k.delta_o = s + fr.outer_excitation[j];
+      k.delta_i = q[0] * c + q[1] * sn - s - gap_ + fr.inner_excitation[j];
+    }
     k.load_o = k.delta_o > 0
                    ? detail::contact_load(fr.outer_stiffness[j], outer_exponent_, k.delta_o)
                    : 0.0;
@@ -295,21 +369,20 @@ class BallDofs final : public BallDofModel {
   }
   double outer_sliding(double spin) const { return drive_outer_ - lever_ * spin; }
 
-  // r_j with Q_o(r) − Q_i(r) = F_c for the ring at (x, y): Q_o − Q_i rises monotonically in r,
-  // so bisection between the root's bounds; a ball the ring does not reach rests on the outer race.
-  double ball_equilibrium(const detail::RaceFrame& fr, int j, double x, double y) const {
-    const auto excess = [&](double r) {
-      const BallContacts k = contacts(fr, j, x, y, r);
-      return k.load_o - k.load_i - centrifugal_;
+  // The ball DOF with Q_o − Q_i = F_c (cos α) for the ring at q: Q_o − Q_i rises monotonically in
+  // the DOF, so bisection between the root's bounds; a ball the ring does not reach rests on the
+  // outer race.
+  double ball_equilibrium(const detail::RaceFrame& fr, int j, const double* q) const {
+    const auto excess = [&](double s) {
+      const BallContacts k = contacts(fr, j, q, s);
+      return k.load_o - k.load_i - centrifugal_along_;
     };
-    // At r = −e_o the outer contact just closes (Q_o = 0 ≤ Q_i + F_c); above r_hi, Q_o alone
-    // exceeds the largest Q_i + F_c.
-    double lo = -fr.outer_excitation[j];
-    const double total = x * fr.cos_theta[j] + y * fr.sin_theta[j] - gap_ + fr.inner_excitation[j] +
-                         fr.outer_excitation[j];
-    const double qmax =
-        (total > 0 ? detail::contact_load(fr.inner_stiffness[j], inner_exponent_, total) : 0.0) +
-        centrifugal_;
+    // lo: the outer contact just closes (Q_o = 0 ≤ Q_i + F_c). hi: Q_o alone exceeds the largest
+    // Q_i + F_c, that of the ball at lo.
+    const BallContacts at_zero = contacts(fr, j, q, 0.0);
+    double lo = -at_zero.delta_o;
+    const BallContacts at_lo = contacts(fr, j, q, lo);
+    const double qmax = at_lo.load_i + centrifugal_along_;
     double hi = lo + std::pow(qmax / fr.outer_stiffness[j], 1.0 / outer_exponent_) + 1e-12;
     if (excess(lo) >= 0) return lo;
     for (int it = 0; it < 200 && hi - lo > 1e-16; ++it) {
@@ -320,22 +393,28 @@ class BallDofs final : public BallDofModel {
   }
 
   detail::BallSet set_;
+  bool axial_;  // an axial load: the ring's z and the contact lines of the 3-DOF model
+  int ring_;    // ring DOFs: 2, or 3 with z
   int balls_;
-  double mass_, damping_;
-  double gap_;              // γ = P_d/2 [m], all on the inner side
-  double load_x_, load_y_;  // constant load, gravity included [N]
+  double mass_, axial_mass_;
+  double damping_, axial_damping_;
+  double gap_;              // γ = P_d/2 [m], all on the inner side (planar)
+  double load_x_, load_y_;  // constant radial load, gravity included [N]
+  double load_z_;           // axial load [N]
   double unbalance_force_;  // F_u = m_u e ω_i² [N]
   double phase_;            // φ₀ [rad]
   double slip_;             // s_c [-]
   double inner_exponent_, outer_exponent_;
   TractionCurve curve_;
-  bool friction_;  // μ_m > 0
-  double series_K_, series_exponent_;
+  bool friction_;                    // μ_m > 0
+  detail::GrooveGeometry geometry_;  // axial only
+  std::vector<double> ring_start_;   // the ring's static state
   double ball_mass_ = 0, ball_inertia_ = 0, ball_damping_ = 0;
-  double lever_ = 0;        // L = (D/2) cos α [m]
-  double drive_inner_ = 0;  // A_i = ½ (ω_i − ω_ca) d_m (1 − g) [m/s]
-  double drive_outer_ = 0;  // A_o = ½ ω_ca d_m (1 + g) [m/s]
-  double centrifugal_ = 0;  // F_c [N]
+  double lever_ = 0;              // L_s = (D/2) cos α [m]
+  double drive_inner_ = 0;        // A_i = ½ (ω_i − ω_ca) d_m (1 − g) [m/s]
+  double drive_outer_ = 0;        // A_o = ½ ω_ca d_m (1 + g) [m/s]
+  double centrifugal_ = 0;        // F_c [N]
+  double centrifugal_along_ = 0;  // its component along the ball's DOF [N]
 };
 
 }  // namespace

@@ -1,6 +1,6 @@
 #pragma once
 // The ball-DOF model with cage slip and traction friction (seed 004; MODEL.md §4, "ball DOFs + cage
-// slip"): model.kind = "balls". DOFs (2Z + 2), in this order:
+// slip"): model.kind = "balls". DOFs (2Z + 2; with an axial load 2Z + 3, below), in this order:
 //   q = [x, y, r_1 … r_Z, φ_1 … φ_Z]
 // x, y the inner-ring centre [m]; r_j ball j's centre, radially outward from the position where a
 // nominal ball touches the perfect outer race [m] (the r_j of bearing_model.h's ball_motion);
@@ -51,6 +51,19 @@
 // dE/dt = P_f − c (ẋ² + ẏ²) − c_b Σ_j ṙ_j² + ∂E/∂t, the last the work of the turning contact
 // geometry (0 at zero speed, where the energy decays exactly by what the contacts dissipate).
 //
+// Axial load / preload (operation.axial_load ≠ 0). The ring gets its axial DOF z, and each ball
+// sits on the contact line of the 3-DOF model (three_dof.h): the groove curvature centres are
+// L_j = sqrt((w₀ + z)² + (u₀ + ρ_j)²) apart, ρ_j = x cos θ_j + y sin θ_j + e_i,j + e_o,j, and the
+// ball between them, at s_j along the line from where it touches the outer groove:
+//     δ_o,j = s_j,   δ_i,j = L_j − A₀ − s_j,
+// so δ_i + δ_o is the 3-DOF model's δ_j, and a massless ball in equilibrium gives its forces. The
+// inner contact pushes the ring by −Q_i,j n_j, n_j = (cos α_j cos θ_j, cos α_j sin θ_j, sin α_j)
+// with the loaded angle of the same triangle; the ball moves along the line (its inertia m_b along
+// it, the motion across it neglected: a ball held by two contacts on one line), m_b s̈_j + c_b ṡ_j =
+// Q_i − Q_o + F_c cos α_p. The kinematics (ω_c, the sliding speeds, the lever arm) use the loaded
+// contact angle α_p of the axial static state, as the 3-DOF model's cage speed does. DOFs
+// [x, y, z, s_1 … s_Z, φ_1 … φ_Z], 2Z + 3 of them.
+//
 // Ball mass m_b = ρ π D³/6 (material.ball.density) and J = m_b D²/10 unless given. The analytic
 // Jacobian is provided.
 
@@ -80,9 +93,10 @@ class BallDofModel : public BearingModel {
   virtual FrictionPower friction_power(double t, const double* q, const double* v) const = 0;
 };
 
-/// Builds the ball-DOF model. Throws InputError naming the case key for invalid inputs (those of
-/// the 2-DOF model, and cage.slip outside [0, 1), a negative ball.mass, ball.inertia or
-/// ball.damping, an axial load).
+/// Builds the ball-DOF model: planar (2Z + 2 DOFs), or with the ring's z (2Z + 3) when
+/// inputs.axial_load ≠ 0. Throws InputError naming the case key for invalid inputs (those of the
+/// 2-DOF and, with an axial load, the 3-DOF model, and cage.slip outside [0, 1), a negative
+/// ball.mass, ball.inertia or ball.damping).
 std::unique_ptr<BallDofModel> make_ball_dof_model(const ModelInputs& inputs);
 
 }  // namespace bearing
