@@ -303,6 +303,15 @@ std::string summary_text(const Case& c, const SimulationResult& r, const RunSumm
       "Frequencies: shaft %.3f Hz, FTF %.3f Hz, BPFO %.3f Hz, BPFI %.3f Hz, BSF %.3f Hz\n", f.shaft,
       f.ftf, f.bpfo, f.bpfi, f.bsf);
   o << buf;
+  if (c.model.kind == "balls") {
+    std::snprintf(buf, sizeof buf,
+                  "Cage: slip %.4g %% (speed %.4g rad/s); traction mu_m %.4g at %.4g m/s; ball "
+                  "%.4g g, %.4g kg m^2, damping %.4g N s/m, centrifugal %s\n",
+                  100 * c.cage.slip, 2 * 3.14159265358979323846 * f.ftf, c.cage.friction,
+                  c.cage.slide_speed, 1e3 * c.ball.mass, c.ball.inertia, c.ball.damping,
+                  c.ball.centrifugal ? "on" : "off");
+    o << buf;
+  }
   std::snprintf(buf, sizeof buf, "Statistics over %.4g s after a %.4g s transient:\n",
                 c.solver.duration - c.solver.transient, c.solver.transient);
   o << buf;
