@@ -221,7 +221,7 @@ class BallDofs final : public BallDofModel {
 
   void ball_loads(double t, const double* q, double* loads) const override {
     detail::RaceFrame fr;
-    set_.evaluate_races(t, fr);
+    set_.evaluate(t, fr);
     for (int j = 0; j < balls_; ++j) loads[j] = contacts(fr, j, q, q[ring_ + j]).load_i;
   }
 
@@ -229,7 +229,7 @@ class BallDofs final : public BallDofModel {
   // δ_j = L_j − A₀ (axial).
   void ball_approaches(double t, const double* q, double* out) const override {
     detail::RaceFrame fr;
-    set_.evaluate_races(t, fr);
+    set_.evaluate(t, fr);
     for (int j = 0; j < balls_; ++j) {
       const BallContacts k = contacts(fr, j, q, q[ring_ + j]);
       out[j] = k.delta_i + k.delta_o;
@@ -247,7 +247,7 @@ class BallDofs final : public BallDofModel {
       return;
     }
     detail::RaceFrame fr;
-    set_.evaluate_races(t, fr);
+    set_.evaluate(t, fr);
     detail::BallRates br;
     set_.rates(t, br);
     const double wc = set_.cage_speed(), w = geometry_.w0 + q[2];
@@ -269,7 +269,7 @@ class BallDofs final : public BallDofModel {
   void ball_dynamics(double t, const double* q, const double* v, double* spin, double* outer_load,
                      double* friction_inner, double* friction_outer) const override {
     detail::RaceFrame fr;
-    set_.evaluate_races(t, fr);
+    set_.evaluate(t, fr);
     const int Z = balls_;
     for (int j = 0; j < Z; ++j) {
       const double c = fr.cos_theta[j], s = fr.sin_theta[j], w = v[ring_ + Z + j];
@@ -283,7 +283,7 @@ class BallDofs final : public BallDofModel {
 
   double potential_energy(double t, const double* q) const override {
     detail::RaceFrame fr;
-    set_.evaluate_races(t, fr);
+    set_.evaluate(t, fr);
     double e = 0.0;
     const double ni = inner_exponent_, no = outer_exponent_;
     for (int j = 0; j < balls_; ++j) {
@@ -301,7 +301,7 @@ class BallDofs final : public BallDofModel {
     std::vector<double> q(static_cast<std::size_t>(dofs()), 0.0);
     std::copy(ring_start_.begin(), ring_start_.end(), q.begin());
     detail::RaceFrame fr;
-    set_.evaluate_races(0.0, fr);
+    set_.evaluate(0.0, fr);
     for (int j = 0; j < balls_; ++j) q[ring_ + j] = ball_equilibrium(fr, j, q.data());
     return q;
   }
@@ -321,7 +321,7 @@ class BallDofs final : public BallDofModel {
 
   FrictionPower friction_power(double t, const double* q, const double* v) const override {
     detail::RaceFrame fr;
-    set_.evaluate_races(t, fr);
+    set_.evaluate(t, fr);
     FrictionPower p;
     const int Z = balls_;
     for (int j = 0; j < Z; ++j) {

@@ -78,7 +78,7 @@ struct BallFrame {
   double sin_shaft = 0;          ///< sin ω_i t
 };
 
-/// The ball set at one instant with the two races kept apart (BallSet::evaluate_races), for the
+/// The ball set at one instant with the two races kept apart (BallSet::evaluate), for the
 /// ball-DOF model, where each ball has a contact of its own on each race.
 struct RaceFrame {
   double cos_theta[kMaxBalls];
@@ -499,19 +499,7 @@ class BallSet {
   /// reuse the frame. The memo is keyed by a per-object id, never by address, and each thread
   /// has its own, so force() stays const and thread-safe. The reference is valid until the next
   /// call of frame() on this thread.
-  const BallFrame& frame(double t) const {
-    thread_local struct {
-      std::uint64_t owner = 0;
-      double t = 0.0;
-      BallFrame frame;
-    } memo;
-    if (memo.owner != id_ || memo.t != t) {
-      evaluate(t, memo.frame);
-      memo.owner = id_;
-      memo.t = t;
-    }
-    return memo.frame;
-  }
+  const BallFrame& frame(double t) const { return memoised<BallFrame>(t); }
 
   /// Each ball's load Q_j = K_j [δ_j]_+^n at time t [N], with δ_j = approach(j, frame) [m] the
   /// model's own geometry (shared by the models' ball_loads()).
@@ -573,7 +561,7 @@ class BallSet {
 
   /// Fills `fr` for time t [s] with each race's excitation and constant apart; a ball-size error
   /// ΔD_j takes ΔD_j/2 from each contact.
-  void evaluate_races(double t, RaceFrame& fr) const {
+  void evaluate(double t, RaceFrame& fr) const {
     const int Z = balls_;
     angles(t, fr);
     for (int j = 0; j < Z; ++j)
@@ -596,22 +584,26 @@ class BallSet {
     }
   }
 
-  /// evaluate_races(t), memoised per thread like frame().
-  const RaceFrame& race_frame(double t) const {
+  /// The races' frame at t (evaluate(t, RaceFrame&)), memoised per thread like frame().
+  const RaceFrame& race_frame(double t) const { return memoised<RaceFrame>(t); }
+
+ private:
+  // One memo per thread and frame type (BallFrame, RaceFrame); see frame().
+  template <class Frame>
+  const Frame& memoised(double t) const {
     thread_local struct {
       std::uint64_t owner = 0;
       double t = 0.0;
-      RaceFrame frame;
+      Frame frame;
     } memo;
     if (memo.owner != id_ || memo.t != t) {
-      evaluate_races(t, memo.frame);
+      evaluate(t, memo.frame);
       memo.owner = id_;
       memo.t = t;
     }
     return memo.frame;
   }
 
- private:
   // θ_j and the shaft angle at t: the precomputed (cos, sin) of φ₀ + 2πj/Z rotated by the one
   // phasor of ω_c t (Frame: BallFrame or RaceFrame).
   template <class Frame>
