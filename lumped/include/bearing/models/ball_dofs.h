@@ -37,7 +37,9 @@
 // The friction on the ring acts along −t_j, t_j = (−sin θ_j, cos θ_j) the direction of rotation, as
 // the reaction of +μ(Δv_i) Q_i on the ball. The spin torque: the ball's absolute angular speed is
 // ω_ca − ω_b (seed 004's ω_b is counted against the rotation), and the tangential forces F_bi at
-// its inner and F_bo = −μ(Δv_o) Q_o at its outer contact turn it by (D/2)(F_bo − F_bi) cos α. The
+// its inner and F_bo = −μ(Δv_o) Q_o at its outer contact turn it by (D/2)(F_bo − F_bi) cos α. (Seed
+// 004's eq. 25 with its eq. 9–10 forces has the opposite sign: a ball spinning too slowly would be
+// braked further instead of being brought back to rolling.) The
 // cage carries the balls at ω_ca whatever the forces (seed 004's assumption 4): the tangential
 // forces' net pull on each ball is taken by the cage, the inner ring's friction torque by the
 // drive.
