@@ -106,7 +106,7 @@ const std::vector<KeySpec>& schema() {
       {"cage.slip", Kind::quantity, D::dimensionless,
        "balls: cage slip s_c in [0, 1), cage at (1 - s_c) x its pure-rolling speed (default 0)"},
       {"cage.friction", Kind::quantity, D::dimensionless,
-       "balls: traction coefficient mu_m reached at cage.slide_speed (default 0.05)"},
+       "balls: traction coefficient mu_m reached at cage.slide_speed (default 0.01)"},
       {"cage.slide_speed", Kind::quantity, D::velocity,
        "balls: sliding speed where traction saturates (default 0.1 m/s)"},
       {"ball.mass", Kind::quantity, D::mass, "balls: ball mass (default: density x pi D^3/6)"},

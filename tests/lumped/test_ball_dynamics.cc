@@ -230,7 +230,7 @@ struct FrictionPeak {
 
 FrictionPeak friction_on_ball_one(std::vector<std::string> sets) {
   sets.insert(sets.end(), {"output.ball_dynamics=true", "output.ball_loads=true",
-                           "solver.duration=0.3s", "solver.transient=0.1s"});
+                           "solver.duration=0.3s", "solver.transient=0.1s", "solver.dt=2us"});
   const Case c = seed004(sets);
   const SimulationResult r = simulate(c);
   const auto fi = r.response.steady("Fi1"), fo = r.response.steady("Fo1");
@@ -287,7 +287,8 @@ TEST(BallDynamics, EveryIntegratorAgreesOnTheResponse) {
 
 // Seed 004 integrates with RK4 at 10 µs; with steel balls (3.55 g) on their Hertz contacts the
 // radial contact mode (≈ 3e5 rad/s at 2000 N) makes that unstable, and the run would end with a
-// bounded but meaningless response. The run refuses it, naming solver.dt and the limit.
+// bounded but meaningless response. The run refuses it, naming solver.dt and the limit; likewise
+// a step the balls' spin relaxation makes unstable.
 TEST(BallDynamics, Rk4AboveItsStabilityLimitIsRefused) {
   try {
     simulate(seed004({"solver.dt=10us"}));
@@ -299,6 +300,16 @@ TEST(BallDynamics, Rk4AboveItsStabilityLimitIsRefused) {
   }
   EXPECT_NO_THROW(simulate(seed004(
       {"solver.dt=10us", "solver.method=newmark", "solver.duration=0.01s", "solver.transient=0"})));
+  // The spin's relaxation onto its traction equilibrium, rate L² μ_m/Δv_m (Q_i + Q_o)/J ≈ 1e6 1/s
+  // at μ_m = 0.05 (0.1 m/s, 2000 N), limits RK4 to about 2.6 µs.
+  try {
+    simulate(seed004({"cage.friction=0.05"}));
+    ADD_FAILURE() << "no error";
+  } catch (const InputError& e) {
+    const std::string what = e.what();
+    EXPECT_NE(what.find("solver.dt = 5 us"), std::string::npos) << what;
+    EXPECT_NE(what.find("relaxation"), std::string::npos) << what;
+  }
 }
 
 // --- Outputs and input errors -------------------------------------------------------------

@@ -1007,16 +1007,42 @@ TEST(IntegratorJacobian, CentralDifferencesMatchAnalytic) {
   }
 }
 
-// The highest natural frequency of a two-mass chain against the roots of det(K − λM) = 0,
-// M m λ² − (M k₂ + m (k₁ + k₂)) λ + k₁ k₂ = 0 (the Jacobian by the default central differences).
-TEST(IntegratorStability, HighestLinearFrequencyOfATwoMassChain) {
-  const StiffPair s;
+// RK4's step limit on the linearised system: 2√2/ω for an undamped oscillator (the imaginary
+// axis), 2.7853/|λ| for a pure relaxation (the real axis, where 1 + z + z²/2 + z³/6 + z⁴/24 = −1),
+// and for the two-mass chain the higher of the roots of det(K − λM) = 0,
+// M m λ² − (M k₂ + m (k₁ + k₂)) λ + k₁ k₂ = 0, with its damping (the Jacobian by central
+// differences).
+TEST(IntegratorStability, Rk4StepLimitOfOscillationsAndRelaxations) {
   const double q[2] = {0, 0}, v[2] = {0, 0};
-  const double b = s.M * s.k2 + s.m * (s.k1 + s.k2), a = s.M * s.m, c = s.k1 * s.k2;
-  const double largest = (b + std::sqrt(b * b - 4 * a * c)) / (2 * a);
-  EXPECT_NEAR(highest_linear_frequency(s, 0.0, q, v), std::sqrt(largest),
-              1e-6 * std::sqrt(largest));
+  const LinearOscillator osc(0.5, 2e6, 0.0);
+  const StepLimit a = rk4_step_limit(osc, 0.0, q, v);
+  EXPECT_NEAR(a.step, 2 * std::sqrt(2.0) / std::sqrt(2e6 / 0.5), 1e-9 * a.step);
+  EXPECT_NEAR(a.imag, std::sqrt(2e6 / 0.5), 1e-6 * a.imag);
+  const LinearOscillator drag(2.0, 0.0, 5e3);  // λ = −c/m = −2500 1/s
+  const StepLimit b = rk4_step_limit(drag, 0.0, q, v);
+  EXPECT_NEAR(b.step * 2500, 2.785293563405282, 1e-9);
+  EXPECT_NEAR(b.real, -2500, 1e-6);
+  const StiffPair s;
+  const double bq = s.M * s.k2 + s.m * (s.k1 + s.k2), aq = s.M * s.m, cq = s.k1 * s.k2;
+  const double omega = std::sqrt((bq + std::sqrt(bq * bq - 4 * aq * cq)) / (2 * aq));
+  const StepLimit c = rk4_step_limit(s, 0.0, q, v);
+  EXPECT_GT(c.step * omega, 1.0);  // damped (ζ ≈ 1 on the light mass): inside the region
+  EXPECT_LT(c.step * omega, 2 * std::sqrt(2.0) + 1e-9);
+  // Stable just below the limit and unstable just above: RK4 on the chain itself.
+  for (double factor : {0.98, 1.02}) {
+    IntegratorSettings set;
+    set.dt = factor * c.step;
+    set.max_displacement = 1e300;
+    std::vector<double> times = {2000 * c.step};
+    double end = 0;
+    make_integrator(set)->integrate(
+        s, 0.0, {1e-3, 1e-3}, {0, 0}, times,
+        [&](double, const double* qq, const double*, const double*) { end = std::abs(qq[1]); });
+    if (factor < 1)
+      EXPECT_LT(end, 1e-3);
+    else
+      EXPECT_GT(end, 1.0);
+  }
 }
-
 }  // namespace
 }  // namespace bearing

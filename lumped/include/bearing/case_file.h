@@ -52,7 +52,7 @@ struct Excitations {
 /// this toolkit's assumption.
 struct CageOptions {
   double slip = 0.0;         ///< s_c in [0, 1): the cage turns at (1 − s_c) ω_c [-]
-  double friction = 0.05;    ///< μ_m, the traction coefficient beyond Δv_m [-] (seed 004 Fig. 8)
+  double friction = 0.01;    ///< μ_m, the traction coefficient beyond Δv_m [-] (seed 004 §4.3)
   double slide_speed = 0.1;  ///< Δv_m, the sliding speed where traction saturates [m/s]
 };
 

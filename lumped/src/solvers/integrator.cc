@@ -17,6 +17,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <complex>
 #include <cstddef>
 #include <cstdio>
 #include <limits>
@@ -60,19 +61,53 @@ void validate(const IntegratorSettings& s) {
 
 }  // namespace
 
-double highest_linear_frequency(const MechanicalSystem& system, double t, const double* q,
-                                const double* v) {
+StepLimit rk4_step_limit(const MechanicalSystem& system, double t, const double* q,
+                         const double* v) {
   const int n = system.dofs();
   using RowMajor = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
   RowMajor dfdq(n, n), dfdv(n, n);
   system.force_jacobian(t, q, v, dfdq.data(), dfdv.data());
   std::vector<double> mass(static_cast<std::size_t>(n));
   system.mass(mass.data());
-  for (int i = 0; i < n; ++i) dfdq.row(i) /= mass[static_cast<std::size_t>(i)];
-  const Eigen::MatrixXd a = -dfdq;
+  Eigen::MatrixXd a = Eigen::MatrixXd::Zero(2 * n, 2 * n);
+  a.topRightCorner(n, n).setIdentity();
+  for (int i = 0; i < n; ++i) {
+    a.block(n + i, 0, 1, n) = dfdq.row(i) / mass[static_cast<std::size_t>(i)];
+    a.block(n + i, n, 1, n) = dfdv.row(i) / mass[static_cast<std::size_t>(i)];
+  }
+  StepLimit limit;
+  limit.step = std::numeric_limits<double>::infinity();
   const Eigen::EigenSolver<Eigen::MatrixXd> eig(a, /*computeEigenvectors=*/false);
-  if (eig.info() != Eigen::Success) return 0.0;
-  return std::sqrt(eig.eigenvalues().cwiseAbs().maxCoeff());
+  if (eig.info() != Eigen::Success) return limit;
+  const auto stable = [](std::complex<double> z) {
+    const std::complex<double> r = 1.0 + z * (1.0 + z * (0.5 + z * (1.0 / 6 + z / 24.0)));
+    return std::abs(r) <= 1.0 + 1e-12;
+  };
+  for (int k = 0; k < 2 * n; ++k) {
+    std::complex<double> lambda = eig.eigenvalues()[k];
+    if (lambda.real() > 0) lambda = {0.0, std::abs(lambda)};
+    const double size = std::abs(lambda);
+    if (!(size > 0)) continue;
+    // The boundary along the ray hλ, h > 0: the first s = h|λ| where |R| exceeds 1 (the region
+    // reaches |z| ≈ 2.79–2.83 along every ray of the left half-plane), then bisection.
+    const std::complex<double> dir = lambda / size;
+    double lo = 0.0, hi = 0.0;
+    for (double s = 0.05; s <= 4.0; s += 0.05) {
+      if (!stable(s * dir)) {
+        hi = s;
+        break;
+      }
+      lo = s;
+    }
+    if (hi == 0.0) continue;
+    for (int it = 0; it < 60; ++it) {
+      const double mid = 0.5 * (lo + hi);
+      (stable(mid * dir) ? lo : hi) = mid;
+    }
+    const double h = lo / size;
+    if (h < limit.step) limit = {h, lambda.real(), std::abs(lambda.imag())};
+  }
+  return limit;
 }
 
 std::vector<std::string> integrator_names() {

@@ -59,13 +59,19 @@ std::unique_ptr<Integrator> make_integrator(const IntegratorSettings& settings);
 /// The method names make_integrator accepts.
 std::vector<std::string> integrator_names();
 
-/// The highest natural frequency of the system linearised at (t, q, v) [rad/s]:
-/// √max|λ(M⁻¹ ∂f/∂q)| (force_jacobian). An explicit fixed step is stable only below about
-/// 2.8/ω for RK4 (its stability region reaches ±2√2 i on the imaginary axis).
-double highest_linear_frequency(const MechanicalSystem& system, double t, const double* q,
-                                const double* v);
+/// The largest fixed step for which RK4 is stable on the system linearised at (t, q, v).
+struct StepLimit {
+  double step = 0.0;  ///< h_max [s] (infinity when nothing limits it)
+  double real = 0.0;  ///< the limiting eigenvalue λ of the first-order system, Re [1/s]
+  double imag = 0.0;  ///< and |Im| [rad/s]: an oscillation, or (≈ 0) a relaxation rate −Re
+};
 
-/// RK4's stability limit on the imaginary axis, |h ω| ≤ 2√2.
-constexpr double kRk4StabilityLimit = 2.8284271247461903;
+/// Every eigenvalue λ of the first-order Jacobian [[0, I], [M⁻¹ ∂f/∂q, M⁻¹ ∂f/∂v]]
+/// (force_jacobian) must satisfy |R(hλ)| ≤ 1, R(z) = 1 + z + z²/2 + z³/6 + z⁴/24 (RK4's stability
+/// function): h ≤ 2√2/ω for an undamped oscillation ω, h ≤ 2.785/|λ| for a relaxation. Both the
+/// oscillations of stiff contacts and the fast relaxations of stiff damping or traction limit it.
+/// An eigenvalue with Re λ > 0 (a state that is unstable itself) is taken on the imaginary axis.
+StepLimit rk4_step_limit(const MechanicalSystem& system, double t, const double* q,
+                         const double* v);
 
 }  // namespace bearing
