@@ -5,13 +5,16 @@
 #     examples/run_studies.sh [OUTDIR]        # default: out/studies (relative to the current dir)
 #
 # Environment: BEARING_SIM (default build/lumped/bearing-sim of this repository), JOBS (parallel
-# cases per sweep, default 2). About 2 minutes on 2 cores (seed 000's noise study, 70 runs of
-# seed000_noise.sh, is the last ~20 s). Writes OUTDIR/<study>/... (sweep.csv,
-# run folders) and OUTDIR/tables.txt (what is printed), and PNG plots in OUTDIR/plots/ when
+# cases per sweep and runs, default 2). About 2.5 minutes on 2 cores (seed 000's noise study, 70
+# runs of seed000_noise.sh, takes ~20 s and seed 004's, seed004_studies.sh, ~40 s at the end).
+# Writes OUTDIR/<study>/... (sweep.csv, run folders; seed 004 in OUTDIR/seed004/) and
+# OUTDIR/tables.txt (what is printed), and PNG plots in OUTDIR/plots/ when
 # /usr/bin/python3 has matplotlib (Debian: python3-matplotlib); otherwise plotting is skipped.
 set -euo pipefail
 
 here=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)
+# shellcheck source=examples/studies_lib.sh
+source "$here/studies_lib.sh"
 root=$(dirname "$here")
 out=${1:-out/studies}
 sim=${BEARING_SIM:-$root/build/lumped/bearing-sim}
@@ -24,20 +27,6 @@ start=$SECONDS
 sweep() { "$sim" sweep "$@" --jobs "$jobs" --quiet >/dev/null; }
 run() { "$sim" run "$@" --quiet >/dev/null; }
 
-# col FILE NAME: one column of a sweep.csv by header name (no header). Fails on a failed case.
-col() {
-  awk -F, -v c="$2" -v f="$1" '
-    NR == 1 { for (i = 1; i <= NF; i++) if ($i == c) k = i
-              if (!k) { print "no column " c " in " f > "/dev/stderr"; exit 1 }; next }
-    $0 !~ /,ok,/ { print "failed case in " f ": " $0 > "/dev/stderr"; exit 1 }
-    { print $k }' "$1"
-}
-# stat DIR CHANNEL KEY: one statistic of a run folder's summary.json (channels.<ch>.<key>).
-stat() {
-  tr -d ' \n' <"$1/summary.json" |
-    sed -E "s/.*\"channels\":\{(.*)\},\"frequencies\".*/\1/" |
-    grep -oE "\"$2\":\{[^}]*\}" | grep -oE "\"$3\":[-+0-9.eE]+" | cut -d: -f2
-}
 
 exec > >(tee "$out/tables.txt")
 
@@ -236,8 +225,14 @@ BEARING_SIM=$sim "$here/seed000_noise.sh" "$out"
 
 # ------------------------------------------------------------------------------------------------
 echo
+BEARING_SIM=$sim JOBS=$jobs PLOTS=0 "$here/seed004_studies.sh" "$out/seed004"
+
+# ------------------------------------------------------------------------------------------------
+echo
 if /usr/bin/python3 -c "import matplotlib" 2>/dev/null; then
-  /usr/bin/python3 "$here/plot_studies.py" "$out" && echo "Plots: $out/plots/*.png"
+  /usr/bin/python3 "$here/plot_studies.py" "$out" &&
+    /usr/bin/python3 "$here/plot_seed004.py" "$out/seed004" "$out/plots" &&
+    echo "Plots: $out/plots/*.png"
 else
   echo "Plots skipped: /usr/bin/python3 has no matplotlib (Debian: apt-get install python3-matplotlib)."
 fi

@@ -12,6 +12,8 @@
 set -euo pipefail
 
 here=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)
+# shellcheck source=examples/studies_lib.sh
+source "$here/studies_lib.sh"
 root=$(dirname "$here")
 out=${1:-out/studies}
 sim=${BEARING_SIM:-$root/build/lumped/bearing-sim}
@@ -28,12 +30,6 @@ value() {
 levels() {
   local s=$1/summary.json m=${2:-1}
   echo "$(value spl_total "$s" "$m") $(value spl_ring "$s" "$m") $(value spl_balls "$s" "$m")"
-}
-# stat DIR CHANNEL KEY: one statistic of a run folder's summary.json (channels.<ch>.<key>).
-stat() {
-  tr -d ' \n' <"$1/summary.json" |
-    sed -E "s/.*\"channels\":\{(.*)\},\"frequencies\".*/\1/" |
-    grep -oE "\"$2\":\{[^}]*\}" | grep -oE "\"$3\":[-+0-9.eE]+" | cut -d: -f2
 }
 run() { "$sim" run "$case0" --quiet "$@" >/dev/null; }
 point_a=(--set 'acoustics.microphones=[["10 mm", "-90 deg"]]')
