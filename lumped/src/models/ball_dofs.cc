@@ -91,7 +91,10 @@ class BallDofs final : public BallDofModel {
         inner_exponent_(in.contact.inner.exponent),
         outer_exponent_(in.contact.outer.exponent),
         curve_(in.traction),
-        friction_(in.traction.max_coefficient > 0) {
+        friction_(in.traction.max_coefficient > 0),
+        mu_max_(in.traction.max_coefficient),
+        traction_gain_(in.traction.max_coefficient / in.traction.slide_speed),
+        hertz_(in.contact.inner.exponent == 1.5 && in.contact.outer.exponent == 1.5) {
     const Bearing& b = in.bearing;
     const double D = b.ball_diameter, dm = b.pitch_diameter;
     double alpha = b.contact_angle;
@@ -131,35 +134,16 @@ class BallDofs final : public BallDofModel {
   bool cyclic(int i) const override { return i >= ring_ + balls_; }
 
   void force(double t, const double* q, const double* v, double* f) const override {
+    // One instantiation per geometry, friction on/off and Hertz exponents: the hot loop has no
+    // per-ball branches on them.
     const detail::RaceFrame& fr = set_.race_frame(t);
-    const int Z = balls_;
-    const double vx = v[0], vy = v[1];
-    const double* s_dof = q + ring_;
-    const double* vs = v + ring_;
-    const double* spin = v + ring_ + Z;
-    double fx = load_x_ + unbalance_force_ * fr.cos_shaft - damping_ * vx;
-    double fy = load_y_ + unbalance_force_ * fr.sin_shaft - damping_ * vy;
-    double fz = axial_ ? load_z_ - axial_damping_ * v[2] : 0.0;
-    double* radial = f + ring_;
-    double* torque = f + ring_ + Z;
-    for (int j = 0; j < Z; ++j) {
-      const double c = fr.cos_theta[j], s = fr.sin_theta[j];
-      const BallContacts k = contacts(fr, j, q, s_dof[j]);
-      fx -= k.load_i * k.ca * c;
-      fy -= k.load_i * k.ca * s;
-      fz -= k.load_i * k.sa;
-      radial[j] = k.load_i - k.load_o + centrifugal_along_ - ball_damping_ * vs[j];
-      torque[j] = 0.0;
-      if (!friction_) continue;
-      const double pi = curve_.coefficient(inner_sliding(spin[j], vx, vy, c, s)) * k.load_i;
-      const double po = curve_.coefficient(outer_sliding(spin[j])) * k.load_o;
-      fx += pi * s;  // μ Q_i τ_j on the ring
-      fy -= pi * c;
-      torque[j] = lever_ * (pi + po);
-    }
-    f[0] = fx;
-    f[1] = fy;
-    if (axial_) f[2] = fz;
+    if (axial_)
+      friction_ ? force_impl<true, true>(fr, q, v, f) : force_impl<true, false>(fr, q, v, f);
+    else if (hertz_)
+      friction_ ? force_impl<false, true, true>(fr, q, v, f)
+                : force_impl<false, false, true>(fr, q, v, f);
+    else
+      friction_ ? force_impl<false, true>(fr, q, v, f) : force_impl<false, false>(fr, q, v, f);
   }
 
   // Row-major n×n (see the top of this file).
@@ -337,6 +321,64 @@ class BallDofs final : public BallDofModel {
   }
 
  private:
+  // Q = K [δ]_+^n, without a branch for n = 3/2.
+  template <bool kHertz>
+  static double load(double K, double n, double delta) {
+    delta = std::max(delta, 0.0);
+    return kHertz ? K * delta * std::sqrt(delta) : K * std::pow(delta, n);
+  }
+
+  // force(): the equations of ball_dofs.h; kHertz: both exponents 3/2.
+  template <bool kAxial, bool kFriction, bool kHertz = false>
+  void force_impl(const detail::RaceFrame& fr, const double* q, const double* v, double* f) const {
+    const int Z = balls_;
+    const double vx = v[0], vy = v[1];
+    const double* s_dof = q + ring_;
+    const double* vs = v + ring_;
+    const double* spin = v + ring_ + Z;
+    double fx = load_x_ + unbalance_force_ * fr.cos_shaft - damping_ * vx;
+    double fy = load_y_ + unbalance_force_ * fr.sin_shaft - damping_ * vy;
+    double fz = kAxial ? load_z_ - axial_damping_ * v[2] : 0.0;
+    double* radial = f + ring_;
+    double* torque = f + ring_ + Z;
+    // Locals, not members: the stores to f could alias *this and would force reloads.
+    const double x = q[0], y = q[1], gap = gap_, ni = inner_exponent_, no = outer_exponent_;
+    const double fc = centrifugal_along_, cb = ball_damping_, lever = lever_;
+    const double ai = drive_inner_, ao = drive_outer_, gain = traction_gain_, cap = mu_max_;
+    for (int j = 0; j < Z; ++j) {
+      const double c = fr.cos_theta[j], s = fr.sin_theta[j];
+      double load_i, load_o, ca = 1.0, sa = 0.0;
+      if (kAxial) {
+        const BallContacts k = contacts(fr, j, q, s_dof[j]);
+        load_i = k.load_i, load_o = k.load_o, ca = k.ca, sa = k.sa;
+      } else {
+        const double delta_o = s_dof[j] + fr.outer_excitation[j];
+        const double delta_i = x * c + y * s - s_dof[j] - gap + fr.inner_excitation[j];
+        load_o = load<kHertz>(fr.outer_stiffness[j], no, delta_o);
+        load_i = load<kHertz>(fr.inner_stiffness[j], ni, delta_i);
+      }
+      fx -= load_i * ca * c;
+      fy -= load_i * ca * s;
+      if (kAxial) fz -= load_i * sa;
+      radial[j] = load_i - load_o + fc - cb * vs[j];
+      if (!kFriction) {
+        torque[j] = 0.0;
+        continue;
+      }
+      // μ(Δv) = clamp(μ_m/Δv_m · Δv, ±μ_m) (traction.h), without a division.
+      const double dvi = ai - lever * spin[j] + (vy * c - vx * s);
+      const double dvo = ao - lever * spin[j];
+      const double pi = std::min(std::max(gain * dvi, -cap), cap) * load_i;
+      const double po = std::min(std::max(gain * dvo, -cap), cap) * load_o;
+      fx += pi * s;  // μ Q_i τ_j on the ring
+      fy -= pi * c;
+      torque[j] = lever * (pi + po);
+    }
+    f[0] = fx;
+    f[1] = fy;
+    if (kAxial) f[2] = fz;
+  }
+
   // Ball j's contacts for the ring state q and the ball's DOF s (ball_dofs.h).
   BallContacts contacts(const detail::RaceFrame& fr, int j, const double* q, double s) const {
     BallContacts k;
@@ -407,6 +449,9 @@ class BallDofs final : public BallDofModel {
   double inner_exponent_, outer_exponent_;
   TractionCurve curve_;
   bool friction_;                    // μ_m > 0
+  double mu_max_;                    // μ_m [-]
+  double traction_gain_;             // μ_m/Δv_m [s/m]
+  bool hertz_;                       // both exponents 3/2
   detail::GrooveGeometry geometry_;  // axial only
   std::vector<double> ring_start_;   // the ring's static state
   double ball_mass_ = 0, ball_inertia_ = 0, ball_damping_ = 0;
