@@ -10,8 +10,7 @@
 // Contacts. The ball sits between two Hertz contacts of its own, with each race's constant:
 //     δ_o,j = r_j + Π_o(θ_j) − ΔD_j/2,
 //     δ_i,j = x cos θ_j + y sin θ_j − r_j − γ + Π_i(θ_j − ω_i t) − ΔD_j/2,
-//     Q_o,j = K_o [δ_o,j]_+^{n_o},   Q_i,j = K_i [δ_i,j]_+^{n_i}   (with TVDS, K per race per
-//     ball).
+//     Q_o,j = K_o [δ_o,j]_+^{n_o},   Q_i,j = K_i [δ_i,j]_+^{n_i}   (TVDS: K per race and ball).
 // Their sum is the 2-DOF model's approach (MODEL.md §1). Clearance split: all of the per-ball gap
 // γ = P_d/2 (bearing.clearance, the ISO diametral clearance) sits on the inner side, the convention
 // every model of the toolkit uses (outer raceway diameter d_m + D). Any other split g_in + g_out =
@@ -23,26 +22,26 @@
 // (traction.h, seed 004 eqs. 7–8), with g = D cos α / d_m and the lever arm L = (D/2) cos α:
 //     Δv_i = ½ (ω_i − ω_ca) d_m (1 − g) − L ω_b + u_t,   u_t = −ẋ sin θ_j + ẏ cos θ_j,
 //     Δv_o = ½ ω_ca d_m (1 + g) − L ω_b.
-// u_t, the inner ring's translation along the rolling direction at the contact, is not in seed 004;
-// it is mm/s against the m/s of Δv, but without it the friction on the ring would do work that no
-// sliding accounts for, and the power balance below would not close.
+// u_t, the inner ring's translation along the rolling direction at the contact, is not in seed 004.
+// Without it the friction on the ring would do work that no sliding accounts for, and the power
+// balance below would not close. It is mm/s, but on the linear part of the traction curve it makes
+// each loaded ball a damper of about (μ_m/Δv_m) Q_i/2 on the ring's tangential motion (spin in
+// equilibrium; 370 N s/m for the seed 004 case at μ_m = 0.05: examples/README.md, §6).
 //
 // Equations of motion (friction forces as derived in traction.h; seed 004's eqs. 20–23 apply the
 // ring's friction with inconsistent signs, sin θ for x and cos θ for y, subtracted in both):
 //     m ẍ + c ẋ = F_x + F_u cos ω_i t − Σ_j [Q_i,j cos θ_j − μ(Δv_i,j) Q_i,j sin θ_j]
 //     m ÿ + c ẏ = F_y + F_u sin ω_i t (− m g) − Σ_j [Q_i,j sin θ_j + μ(Δv_i,j) Q_i,j cos θ_j]
-//     m_b r̈_j + c_b ṙ_j = Q_i,j − Q_o,j (+ m_b ω_ca² d_m/2 with centrifugal)        (seed 004 eq.
-//     24) J ω̇_b,j = L [μ(Δv_i,j) Q_i,j + μ(Δv_o,j) Q_o,j]                                (seed 004
-//     eq. 25)
+//     m_b r̈_j + c_b ṙ_j = Q_i,j − Q_o,j (+ F_c = m_b ω_ca² d_m/2, centrifugal)   (seed 004 eq. 24)
+//     J ω̇_b,j = L [μ(Δv_i,j) Q_i,j + μ(Δv_o,j) Q_o,j]                           (seed 004 eq. 25)
 // The friction on the ring acts along −t_j, t_j = (−sin θ_j, cos θ_j) the direction of rotation, as
 // the reaction of +μ(Δv_i) Q_i on the ball. The spin torque: the ball's absolute angular speed is
 // ω_ca − ω_b (seed 004's ω_b is counted against the rotation), and the tangential forces F_bi at
-// its inner and F_bo = −μ(Δv_o) Q_o at its outer contact turn it by (D/2)(F_bo − F_bi) cos α. (Seed
-// 004's eq. 25 with its eq. 9–10 forces has the opposite sign: a ball spinning too slowly would be
-// braked further instead of being brought back to rolling.) The
-// cage carries the balls at ω_ca whatever the forces (seed 004's assumption 4): the tangential
-// forces' net pull on each ball is taken by the cage, the inner ring's friction torque by the
-// drive.
+// its inner and F_bo = −μ(Δv_o) Q_o at its outer contact turn it by (D/2)(F_bo − F_bi) cos α.
+// Seed 004's eq. 25 with its eq. 9–10 forces has the opposite sign: a ball spinning too slowly
+// would be braked further instead of being brought back to rolling. The cage carries the balls at
+// ω_ca whatever the forces (seed 004's assumption 4): the tangential forces' net pull on each ball
+// is taken by the cage, the inner ring's friction torque by the drive.
 //
 // Power. Friction on the model's DOFs does P_f = Σ_j −μ(Δv_i) Q_i u_t + L ω_b [μ(Δv_i) Q_i +
 // μ(Δv_o) Q_o]; the prescribed rotations (the inner ring, and the cage, in whose frame ω_b is
