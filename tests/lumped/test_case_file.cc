@@ -259,6 +259,30 @@ TEST(CaseFile, OverrideReachesIntoWavinessEntries) {
 }
 
 // case.toml must let a run be repeated exactly: every resolved value survives the round trip.
+// The ball-DOF model's tables, with the defaults resolved (ball mass and inertia from the density,
+// damping from the rotor), survive the resolved TOML exactly.
+TEST(CaseFile, BallModelTablesRoundTripExactly) {
+  const Case a = parse_case(
+      "[bearing]\npreset = \"6304\"\n[model]\nkind = \"balls\"\n[cage]\nslip = 0.03\n"
+      "slide_speed = \"0.05 m/s\"\n[ball]\ncentrifugal = false\n[output]\nball_dynamics = true\n",
+      "balls.toml");
+  const double D = a.bearing.ball_diameter;
+  EXPECT_NEAR(a.ball.mass, 7850 * 3.14159265358979 * D * D * D / 6, 1e-12);
+  EXPECT_NEAR(a.ball.inertia, a.ball.mass * D * D / 10, 1e-18);
+  EXPECT_EQ(a.ball.damping, a.rotor.damping);
+  EXPECT_EQ(a.cage.friction, 0.01);
+  const Case b = parse_case(bearing::case_to_toml(a), "case.toml");
+  EXPECT_EQ(b.model.kind, "balls");
+  EXPECT_EQ(b.cage.slip, a.cage.slip);
+  EXPECT_EQ(b.cage.friction, a.cage.friction);
+  EXPECT_EQ(b.cage.slide_speed, a.cage.slide_speed);
+  EXPECT_EQ(b.ball.mass, a.ball.mass);
+  EXPECT_EQ(b.ball.inertia, a.ball.inertia);
+  EXPECT_EQ(b.ball.damping, a.ball.damping);
+  EXPECT_EQ(b.ball.centrifugal, a.ball.centrifugal);
+  EXPECT_EQ(b.output.ball_dynamics, a.output.ball_dynamics);
+}
+
 TEST(CaseFile, ResolvedCaseRoundTripsExactly) {
   const Case a = parse_case(kDynamics, "dyn.toml");
   const Case b = parse_case(bearing::case_to_toml(a), "case.toml");
