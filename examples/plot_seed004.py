@@ -64,40 +64,34 @@ def friction_angle(out, plots):
     plt.close(fig)
 
 
-def friction_slip(out, plots):
-    r = rows(os.path.join(out, "fig9.csv"))
+def friction_peaks(out, plots, csv, group, x_key, x_scale, label, xlabel, prediction, title, png):
+    """Peak friction on ball 1 (and its prediction, dotted) against x_key, one line per group."""
+    r = rows(os.path.join(out, csv))
     fig, ax = plt.subplots(figsize=(7, 4.5))
-    for k, mu in enumerate(sorted({x["mu_m"] for x in r}, key=float)):
-        sel = [x for x in r if x["mu_m"] == mu]
-        s = [100 * float(x["slip"]) for x in sel]
-        ax.plot(s, [float(x["Fi1_peak"]) for x in sel], "o-", color=f"C{k}", label=f"mu_m = {mu}")
-        ax.plot(s, [float(x["predicted"]) for x in sel], ":", color=f"C{k}")
-    ax.plot([], [], "k:", label="mu_m Q_max min(1, s w_i r_i / 2 Dv_m)")
-    ax.set(xlabel="cage slip s_c [%]", ylabel="peak friction on ball 1, Fi1 [N]",
-           title="Seed 004 Fig. 9: 2000 rpm, 2000 N")
+    for k, g in enumerate(sorted({x[group] for x in r}, key=float)):
+        sel = [x for x in r if x[group] == g]
+        xs = [x_scale * float(x[x_key]) for x in sel]
+        ax.plot(xs, [float(x["Fi1_peak"]) for x in sel], "o-", color=f"C{k}", label=label.format(g))
+        ax.plot(xs, [float(x["predicted"]) for x in sel], ":", color=f"C{k}")
+    ax.plot([], [], "k:", label=prediction)
+    ax.set(xlabel=xlabel, ylabel="peak friction on ball 1, Fi1 [N]", title=title)
     ax.grid(alpha=0.3)
     ax.legend(fontsize=8)
     fig.tight_layout()
-    fig.savefig(os.path.join(plots, "seed004_friction_slip.png"), dpi=110)
+    fig.savefig(os.path.join(plots, png), dpi=110)
     plt.close(fig)
+
+
+def friction_slip(out, plots):
+    friction_peaks(out, plots, "fig9.csv", "mu_m", "slip", 100, "mu_m = {}", "cage slip s_c [%]",
+                   "mu_m Q_max min(1, s w_i r_i / 2 Dv_m)", "Seed 004 Fig. 9: 2000 rpm, 2000 N",
+                   "seed004_friction_slip.png")
 
 
 def friction_speed(out, plots):
-    r = rows(os.path.join(out, "fig10.csv"))
-    fig, ax = plt.subplots(figsize=(7, 4.5))
-    for k, w in enumerate(sorted({x["load"] for x in r}, key=float)):
-        sel = [x for x in r if x["load"] == w]
-        n = [float(x["speed_rpm"]) for x in sel]
-        ax.plot(n, [float(x["Fi1_peak"]) for x in sel], "o-", color=f"C{k}", label=f"W = {w} N")
-        ax.plot(n, [float(x["predicted"]) for x in sel], ":", color=f"C{k}")
-    ax.plot([], [], "k:", label="mu_m Q_max s w_i r_i / 2 Dv_m")
-    ax.set(xlabel="inner-ring speed [rpm]", ylabel="peak friction on ball 1, Fi1 [N]",
-           title="Seed 004 Fig. 10: s_c = 2 %, mu_m = 0.01")
-    ax.grid(alpha=0.3)
-    ax.legend(fontsize=8)
-    fig.tight_layout()
-    fig.savefig(os.path.join(plots, "seed004_friction_speed.png"), dpi=110)
-    plt.close(fig)
+    friction_peaks(out, plots, "fig10.csv", "load", "speed_rpm", 1, "W = {} N",
+                   "inner-ring speed [rpm]", "mu_m Q_max s w_i r_i / 2 Dv_m",
+                   "Seed 004 Fig. 10: s_c = 2 %, mu_m = 0.01", "seed004_friction_speed.png")
 
 
 STATS = (("ax.ptp", "PTP [m/s^2]"), ("ax.rms", "RMS [m/s^2]"), ("ax.kurtosis", "kurtosis [-]"))

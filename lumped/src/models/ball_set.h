@@ -542,12 +542,7 @@ class BallSet {
     angles(t, fr);
     for (int j = 0; j < Z; ++j) fr.excitation[j] = -size_error_[j];
     double curv_i[kMaxBalls], curv_o[kMaxBalls];
-    // Outer race: φ_j = θ_j, reference θ_0. Inner race: φ_j = θ_j − ω_i t.
-    const double c0 = fr.cos_theta[0], s0 = fr.sin_theta[0];
-    outer_.evaluate(c0, s0, table_cos_.data(), table_sin_.data(), fr.excitation, curv_o);
-    const double ci = c0 * fr.cos_shaft + s0 * fr.sin_shaft;
-    const double si = s0 * fr.cos_shaft - c0 * fr.sin_shaft;
-    inner_.evaluate(ci, si, table_cos_.data(), table_sin_.data(), fr.excitation, curv_i);
+    add_waviness(fr, fr.excitation, fr.excitation, curv_i, curv_o);
 
     if (!tvds()) {
       std::fill(fr.stiffness, fr.stiffness + Z, K_);
@@ -567,11 +562,7 @@ class BallSet {
     for (int j = 0; j < Z; ++j)
       fr.inner_excitation[j] = fr.outer_excitation[j] = -0.5 * size_error_[j];
     double curv_i[kMaxBalls], curv_o[kMaxBalls];
-    const double c0 = fr.cos_theta[0], s0 = fr.sin_theta[0];
-    outer_.evaluate(c0, s0, table_cos_.data(), table_sin_.data(), fr.outer_excitation, curv_o);
-    const double ci = c0 * fr.cos_shaft + s0 * fr.sin_shaft;
-    const double si = s0 * fr.cos_shaft - c0 * fr.sin_shaft;
-    inner_.evaluate(ci, si, table_cos_.data(), table_sin_.data(), fr.inner_excitation, curv_i);
+    add_waviness(fr, fr.inner_excitation, fr.outer_excitation, curv_i, curv_o);
     if (!tvds()) {
       std::fill(fr.inner_stiffness, fr.inner_stiffness + Z, inner_K_);
       std::fill(fr.outer_stiffness, fr.outer_stiffness + Z, outer_K_);
@@ -617,6 +608,19 @@ class BallSet {
       fr.cos_theta[j] = base_cos_[j] * cc - base_sin_[j] * sc;
       fr.sin_theta[j] = base_sin_[j] * cc + base_cos_[j] * sc;
     }
+  }
+
+  // Adds each race's waviness at the balls of `fr` (angles set) to `inner` and `outer` (one array
+  // for the combined excitation) and writes Π + Π'' per race (TVDS). Outer race: φ_j = θ_j,
+  // reference θ_0; inner race: φ_j = θ_j − ω_i t.
+  template <class Frame>
+  void add_waviness(const Frame& fr, double* inner, double* outer, double* curv_i,
+                    double* curv_o) const {
+    const double c0 = fr.cos_theta[0], s0 = fr.sin_theta[0];
+    outer_.evaluate(c0, s0, table_cos_.data(), table_sin_.data(), outer, curv_o);
+    const double ci = c0 * fr.cos_shaft + s0 * fr.sin_shaft;
+    const double si = s0 * fr.cos_shaft - c0 * fr.sin_shaft;
+    inner_.evaluate(ci, si, table_cos_.data(), table_sin_.data(), inner, curv_i);
   }
 
   // K^{−2/3} of a ball on each race with TVDS, from the race's Π + Π'' at the contact.
