@@ -42,7 +42,8 @@ struct ModelInputs {
   double ball_mass = 0.0;     ///< m_b [kg]; 0: from the ball density, ρ π D³/6
   double ball_inertia = 0.0;  ///< J [kg m²] about the spin axis; 0: m_b D²/10 (solid sphere)
   double ball_damping = 0.0;  ///< c_b [N s/m] on each ball's radial velocity (seed 004 eq. 24)
-  bool centrifugal = false;   ///< add the centrifugal load m_b ω_ca² d_m/2 on each ball
+  bool centrifugal = false;   ///< add the centrifugal load m_b ω_ca² d_m/2 on each ball (the case
+                              ///< file's ball.centrifugal defaults to true)
 };
 
 }  // namespace bearing
