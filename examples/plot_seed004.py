@@ -23,6 +23,13 @@ import matplotlib.pyplot as plt  # noqa: E402
 TRANSIENT = 0.2  # s, the friction runs' transient (seed004_studies.sh)
 
 
+
+def save(fig, plots, name):
+    """Lays out, writes PLOTDIR/name and closes the figure."""
+    fig.tight_layout()
+    fig.savefig(os.path.join(plots, name), dpi=110)
+    plt.close(fig)
+
 def rows(path):
     return list(csv.DictReader(open(path)))
 
@@ -59,9 +66,7 @@ def friction_angle(out, plots):
     h1, l1 = ax.get_legend_handles_labels()
     h2, l2 = ax2.get_legend_handles_labels()
     ax.legend(h1 + h2, l1 + l2, fontsize=8, loc="upper right")
-    fig.tight_layout()
-    fig.savefig(os.path.join(plots, "seed004_friction_angle.png"), dpi=110)
-    plt.close(fig)
+    save(fig, plots, "seed004_friction_angle.png")
 
 
 def friction_peaks(out, plots, csv, group, x_key, x_scale, label, xlabel, prediction, title, png):
@@ -77,9 +82,7 @@ def friction_peaks(out, plots, csv, group, x_key, x_scale, label, xlabel, predic
     ax.set(xlabel=xlabel, ylabel="peak friction on ball 1, Fi1 [N]", title=title)
     ax.grid(alpha=0.3)
     ax.legend(fontsize=8)
-    fig.tight_layout()
-    fig.savefig(os.path.join(plots, png), dpi=110)
-    plt.close(fig)
+    save(fig, plots, png)
 
 
 def friction_slip(out, plots):
@@ -112,9 +115,7 @@ def ax_slip(out, plots):
         a.grid(alpha=0.3)
     ax[0].legend(fontsize=8)
     fig.suptitle("Seed 004 Fig. 12: inner-ring x acceleration vs cage slip, 2000 rpm, 2000 N")
-    fig.tight_layout()
-    fig.savefig(os.path.join(plots, "seed004_ax_slip.png"), dpi=110)
-    plt.close(fig)
+    save(fig, plots, "seed004_ax_slip.png")
 
 
 def ax_speed(out, plots):
@@ -132,9 +133,7 @@ def ax_speed(out, plots):
             a.grid(alpha=0.3)
     ax[1].legend(fontsize=8)
     fig.suptitle("Seed 004 Fig. 13: inner-ring x acceleration vs speed, s_c = 2 %, mu_m = 0.01")
-    fig.tight_layout()
-    fig.savefig(os.path.join(plots, "seed004_ax_speed.png"), dpi=110)
-    plt.close(fig)
+    save(fig, plots, "seed004_ax_speed.png")
 
 
 def main():
