@@ -23,12 +23,12 @@ import matplotlib.pyplot as plt  # noqa: E402
 TRANSIENT = 0.2  # s, the friction runs' transient (seed004_studies.sh)
 
 
-
 def save(fig, plots, name):
     """Lays out, writes PLOTDIR/name and closes the figure."""
     fig.tight_layout()
     fig.savefig(os.path.join(plots, name), dpi=110)
     plt.close(fig)
+
 
 def rows(path):
     return list(csv.DictReader(open(path)))
