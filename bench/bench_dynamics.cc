@@ -144,7 +144,7 @@ struct Sink {
 
 IntegratorSettings settings_for(const std::string& method) {
   IntegratorSettings s;
-  s.method = method;
+  s.method = bearing::find_named(bearing::kIntegratorMethods, method).value();
   s.dt = kDt;     // the step (rk4) or the first step (adaptive)
   s.rtol = 1e-6;  // adaptive methods (target 2)
   return s;

@@ -390,7 +390,7 @@ SeriesLaw series_law(const RaceLaw& inner, const RaceLaw& outer, double load_min
 ContactConstants calibrated_contact_constants(const Bearing& b, const ContactCalibration& cal) {
   const auto exact = make_exact_hertz();
   ContactConstants cc;
-  cc.method = "calibrated";
+  cc.method = ContactLaw::calibrated;
   cc.inner = race_contact(b, Race::inner, *exact);
   cc.outer = race_contact(b, Race::outer, *exact);
   cc.inner.K = cal.inner.K;

@@ -139,9 +139,34 @@ double series_stiffness(double k_inner, double k_outer, double exponent) {
                   -exponent);
 }
 
+ContactLaw contact_law(HertzMethod method) {
+  switch (method) {
+    case HertzMethod::hamrock_brewe:
+      return ContactLaw::hamrock_brewe;
+    case HertzMethod::harris_table:
+      return ContactLaw::harris_table;
+    case HertzMethod::exact:
+      break;
+  }
+  return ContactLaw::exact;
+}
+
+HertzMethod hertz_shape_method(ContactLaw law) {
+  switch (law) {
+    case ContactLaw::hamrock_brewe:
+      return HertzMethod::hamrock_brewe;
+    case ContactLaw::harris_table:
+      return HertzMethod::harris_table;
+    case ContactLaw::exact:
+    case ContactLaw::calibrated:
+      break;
+  }
+  return HertzMethod::exact;
+}
+
 ContactConstants contact_constants(const Bearing& b, const HertzSolution& method) {
   ContactConstants cc;
-  cc.method = std::string(method.name());
+  cc.method = contact_law(method.method());
   cc.inner = race_contact(b, Race::inner, method);
   cc.outer = race_contact(b, Race::outer, method);
   cc.K = series_stiffness(cc.inner.K, cc.outer.K);

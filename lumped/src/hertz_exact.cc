@@ -16,7 +16,6 @@
 
 #include "bearing/errors.h"
 #include "bearing/hertz.h"
-#include "edit_distance.h"
 #include "hertz_internal.h"
 
 namespace bearing {
@@ -139,7 +138,7 @@ class ExactHertz final : public HertzSolution {
     const EllipticPair p = elliptic_integrals(kappa);
     return hertz_shape_from(kappa, p.K, p.E);
   }
-  std::string_view name() const override { return "exact"; }
+  HertzMethod method() const override { return HertzMethod::exact; }
 };
 
 }  // namespace
@@ -148,23 +147,20 @@ std::unique_ptr<HertzSolution> make_exact_hertz() {
   return std::make_unique<ExactHertz>();
 }
 
-std::unique_ptr<HertzSolution> make_hertz_solution(std::string_view name, const std::string& key) {
-  if (name == "exact") return make_exact_hertz();
-  if (name == "hamrock-brewe") return make_hamrock_brewe_hertz();
-  if (name == "harris-table") return make_harris_table_hertz();
-
-  static constexpr std::string_view kNames[] = {"exact", "hamrock-brewe", "harris-table"};
-  std::string_view nearest = kNames[0];
-  std::size_t best = detail::edit_distance(name, nearest);
-  for (std::string_view candidate : kNames) {
-    const std::size_t d = detail::edit_distance(name, candidate);
-    if (d < best) best = d, nearest = candidate;
+std::unique_ptr<HertzSolution> make_hertz_solution(HertzMethod method) {
+  switch (method) {
+    case HertzMethod::hamrock_brewe:
+      return make_hamrock_brewe_hertz();
+    case HertzMethod::harris_table:
+      return make_harris_table_hertz();
+    case HertzMethod::exact:
+      break;
   }
-  std::string msg = key + " = \"" + std::string(name) +
-                    "\": unknown Hertz contact method; allowed: \"exact\", \"hamrock-brewe\", "
-                    "\"harris-table\"";
-  if (best <= 3) msg += " (did you mean \"" + std::string(nearest) + "\"?)";
-  throw InputError(msg);
+  return make_exact_hertz();
+}
+
+std::unique_ptr<HertzSolution> make_hertz_solution(std::string_view name, const std::string& key) {
+  return make_hertz_solution(parse_named(kHertzMethods, name, key, "Hertz contact method"));
 }
 
 }  // namespace bearing

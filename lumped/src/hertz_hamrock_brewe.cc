@@ -26,7 +26,7 @@ class HamrockBreweHertz final : public HertzSolution {
     const double K = 1.5277 + 0.6023 * std::log(ratio);
     return hertz_shape_from(kappa, K, E);
   }
-  std::string_view name() const override { return "hamrock-brewe"; }
+  HertzMethod method() const override { return HertzMethod::hamrock_brewe; }
 };
 
 }  // namespace

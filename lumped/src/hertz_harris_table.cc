@@ -71,7 +71,7 @@ class HarrisTableHertz final : public HertzSolution {
     s.delta_star = delta_star(f_rho);
     return s;
   }
-  std::string_view name() const override { return "harris-table"; }
+  HertzMethod method() const override { return HertzMethod::harris_table; }
 
  private:
   double delta_star(double f_rho) const {

@@ -72,7 +72,7 @@ nlohmann::json info_json(const InfoReport& r) {
                      {"bpfo", r.frequencies.bpfo},
                      {"bpfi", r.frequencies.bpfi},
                      {"bsf", r.frequencies.bsf}};
-  j["contact"] = {{"method", r.contact.method},
+  j["contact"] = {{"method", name_of(kContactLaws, r.contact.method)},
                   {"inner", race(r.contact.inner)},
                   {"outer", race(r.contact.outer)},
                   {"K", r.contact.K},
@@ -190,7 +190,7 @@ std::string info_text(const InfoReport& r) {
   if (cal)
     o << calibrated_law_text(*cal, r.contact);
   else
-    o << "Hertz contact (method: " << r.contact.method << ")\n";
+    o << "Hertz contact (method: " << name_of(kContactLaws, r.contact.method) << ")\n";
   o << "  " << pad("", 24) << rpad("inner", 14) << rpad("outer", 14) << "\n";
   const auto row = [&](const std::string& name, const std::string& unit, double a, double bb) {
     o << "  " << pad(name + " [" + unit + "]", 24) << rpad(num(a), 14) << rpad(num(bb), 14) << "\n";

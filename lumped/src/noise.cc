@@ -58,19 +58,11 @@ std::optional<double> level(double p_rms, bool present) {
 
 }  // namespace
 
-std::string ring_source_model(const AcousticsOptions& a) {
-  return a.ring_source == "paper" ? "cylinder-dipole-paper" : a.ring_source;
-}
-
-std::string ball_source_model(const AcousticsOptions& a) {
-  return a.ball_source == "paper" ? "pulsating-sphere-paper" : a.ball_source;
-}
-
 BearingNoise bearing_noise(const Case& c, const Response& response, double cage_speed) {
   const AcousticsOptions& ac = c.acoustics;
   if (!ac.enabled) throw InputError("acoustics: the case has no [acoustics] table");
   const Air air{ac.density, ac.sound_speed};
-  const Summation summation = parse_summation(ac.summation, "acoustics.summation");
+  const Summation summation = ac.summation;
   const double rate = c.solver.output_rate;
 
   BearingNoise out;
@@ -81,12 +73,13 @@ BearingNoise bearing_noise(const Case& c, const Response& response, double cage_
   out.band_low = rate / static_cast<double>(n);
   out.band_high = kPressureBandFraction * rate / 2;
 
-  const bool ring_on = ac.ring_source != "none";
-  const bool balls_on = ac.ball_source != "none";
+  const bool ring_on = ac.ring_source != RingSource::none;
+  const bool balls_on = ac.ball_source != BallSource::none;
   std::unique_ptr<AcousticSource> ring;
   std::vector<double> vx, vy;
   if (ring_on) {
-    ring = make_source(ring_source_model(ac), ac.ring_radius, air, "acoustics.ring_source");
+    ring = make_source(source_model_name(ac.ring_source), ac.ring_radius, air,
+                       "acoustics.ring_source");
     vx = window_and_next(response, "vx");
     vy = window_and_next(response, "vy");
     out.ring_centre = {mean(response.steady("x")), mean(response.steady("y"))};
@@ -96,7 +89,7 @@ BearingNoise bearing_noise(const Case& c, const Response& response, double cage_
   const int Z = c.bearing.balls;
   std::vector<std::vector<double>> radial, radial_velocity;
   if (balls_on) {
-    ball = make_series_source(ball_source_model(ac), 0.5 * c.bearing.ball_diameter, air,
+    ball = make_series_source(source_model_name(ac.ball_source), 0.5 * c.bearing.ball_diameter, air,
                               "acoustics.ball_source");
     interpolator.emplace();
     for (int j = 0; j < Z; ++j) {

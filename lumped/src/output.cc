@@ -170,11 +170,11 @@ nlohmann::json acoustics_json(const Case& c, const BearingNoise& noise) {
                     {"spl_ring", optional(m.spl_ring)},
                     {"spl_balls", optional(m.spl_balls)},
                     {"nearest_ball_surface", optional(m.nearest_ball_surface)}});
-  return {{"ring_source", ac.ring_source},
-          {"ring_model", ac.ring_source == "none" ? "none" : ring_source_model(ac)},
-          {"ball_source", ac.ball_source},
-          {"ball_model", ac.ball_source == "none" ? "none" : ball_source_model(ac)},
-          {"summation", ac.summation},
+  return {{"ring_source", name_of(kRingSources, ac.ring_source)},
+          {"ring_model", source_model_name(ac.ring_source)},
+          {"ball_source", name_of(kBallSources, ac.ball_source)},
+          {"ball_model", source_model_name(ac.ball_source)},
+          {"summation", name_of(kSummations, ac.summation)},
           {"ring_radius", ac.ring_radius},
           {"ball_radius", 0.5 * c.bearing.ball_diameter},
           {"ring_centre", {noise.ring_centre.x(), noise.ring_centre.y()}},
@@ -192,8 +192,8 @@ nlohmann::json summary_json(const Case& c, const SimulationResult& r, const RunS
   json j;
   j["case"] = {{"source", c.source},
                {"bearing", c.bearing.designation},
-               {"model", c.model.kind},
-               {"contact", c.model.contact},
+               {"model", name_of(kModelKinds, c.model.kind)},
+               {"contact", name_of(kContactLaws, c.model.contact)},
                {"speed", c.operation.speed},
                {"load", {c.operation.load.x(), c.operation.load.y()}},
                {"axial_load", c.operation.axial_load},
@@ -205,14 +205,14 @@ nlohmann::json summary_json(const Case& c, const SimulationResult& r, const RunS
   // The contact law the run used: Q = K δ^n per race and for the ball between both races.
   const auto law = [](double K, double n) { return json{{"K", K}, {"exponent", n}}; };
   j["contact"] = law(r.contact.K, r.contact.exponent);
-  j["contact"]["method"] = r.contact.method;
+  j["contact"]["method"] = name_of(kContactLaws, r.contact.method);
   j["contact"]["inner"] = law(r.contact.inner.K, r.contact.inner.exponent);
   j["contact"]["outer"] = law(r.contact.outer.K, r.contact.outer.exponent);
   const auto& f = r.frequencies;
   j["frequencies"] = {
       {"shaft", f.shaft}, {"ftf", f.ftf}, {"bpfo", f.bpfo}, {"bpfi", f.bpfi}, {"bsf", f.bsf}};
   // The ball-DOF model's cage as it ran: the frequencies above already turn at ω_ca.
-  if (c.model.kind == "balls")
+  if (c.model.kind == ModelKind::balls)
     j["cage"] = {{"slip", c.cage.slip},
                  {"speed", 2 * 3.14159265358979323846 * f.ftf},
                  {"friction", c.cage.friction},
@@ -249,7 +249,7 @@ nlohmann::json summary_json(const Case& c, const SimulationResult& r, const RunS
     // F_smooth is infinite for Z <= 4 (JSON has no infinity): left out there.
     if (std::isfinite(q.smooth_load)) j["solver"]["smooth_load"] = q.smooth_load;
   } else {
-    j["solver"] = {{"method", c.solver.method},
+    j["solver"] = {{"method", name_of(kIntegratorMethods, c.solver.method)},
                    {"dt", c.solver.dt},
                    {"tolerance", c.solver.tolerance},
                    {"steps", r.stats.steps},
@@ -271,7 +271,7 @@ nlohmann::json summary_json(const Case& c, const SimulationResult& r, const RunS
     j["units"]["solver.smooth_load"] = "N";
   }
   if (c.model.calibration) j["units"]["case.calibration.load_range"] = "N";
-  if (c.model.kind == "balls") {
+  if (c.model.kind == ModelKind::balls) {
     j["units"]["cage.speed"] = "rad/s";
     j["units"]["cage.slide_speed"] = "m/s";
     j["units"]["cage.ball_mass"] = "kg";
@@ -296,14 +296,16 @@ std::string summary_text(const Case& c, const SimulationResult& r, const RunSumm
   std::ostringstream o;
   char buf[256];
   const auto& f = r.frequencies;
-  o << "Case: " << c.source << " — bearing " << c.bearing.designation << ", model " << c.model.kind
-    << ", " << (r.quasi_static ? std::string("quasistatic newton") : c.solver.method) << "\n";
+  o << "Case: " << c.source << " — bearing " << c.bearing.designation << ", model "
+    << name_of(kModelKinds, c.model.kind) << ", "
+    << (r.quasi_static ? "quasistatic newton" : name_of(kIntegratorMethods, c.solver.method))
+    << "\n";
   std::snprintf(
       buf, sizeof buf,
       "Frequencies: shaft %.3f Hz, FTF %.3f Hz, BPFO %.3f Hz, BPFI %.3f Hz, BSF %.3f Hz\n", f.shaft,
       f.ftf, f.bpfo, f.bpfi, f.bsf);
   o << buf;
-  if (c.model.kind == "balls") {
+  if (c.model.kind == ModelKind::balls) {
     std::snprintf(buf, sizeof buf,
                   "Cage: slip %.4g %% (speed %.4g rad/s); traction mu_m %.4g at %.4g m/s; ball "
                   "%.4g g, %.4g kg m^2, damping %.4g N s/m, centrifugal %s\n",
@@ -345,8 +347,8 @@ std::string summary_text(const Case& c, const SimulationResult& r, const RunSumm
     const AcousticsOptions& ac = c.acoustics;
     std::snprintf(buf, sizeof buf,
                   "Sound (dB re 20 uPa, %s sum, %.4g Hz … %.4g kHz; ring %s, balls %s):\n",
-                  ac.summation.c_str(), s.noise->band_low, s.noise->band_high / 1e3,
-                  ac.ring_source.c_str(), ac.ball_source.c_str());
+                  name_of(kSummations, ac.summation), s.noise->band_low, s.noise->band_high / 1e3,
+                  name_of(kRingSources, ac.ring_source), name_of(kBallSources, ac.ball_source));
     o << buf;
     // A missing level is a source left out ("none") or one that did not move (SPL −∞).
     const auto db = [](const std::optional<double>& v, bool present) {
@@ -357,7 +359,8 @@ std::string summary_text(const Case& c, const SimulationResult& r, const RunSumm
         std::snprintf(b, sizeof b, "%9s", present ? "silent" : "none");
       return std::string(b);
     };
-    const bool ring = ac.ring_source != "none", balls = ac.ball_source != "none";
+    const bool ring = ac.ring_source != RingSource::none;
+    const bool balls = ac.ball_source != BallSource::none;
     for (std::size_t i = 0; i < s.noise->microphones.size(); ++i) {
       const MicrophoneLevels& m = s.noise->microphones[i];
       std::snprintf(buf, sizeof buf, "  microphone %zu at %.4g mm, %.4g deg:", i + 1,

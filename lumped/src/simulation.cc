@@ -54,15 +54,19 @@ ModelInputs model_inputs(const Case& c) {
 
 std::unique_ptr<BearingModel> make_model(const Case& c) {
   const ModelInputs in = model_inputs(c);
-  if (c.model.kind == "2dof") return make_two_dof_model(in);
-  if (c.model.kind == "3dof") return make_three_dof_model(in);
-  if (c.model.kind == "balls") return make_ball_dof_model(in);
-  if (c.model.kind == "quasistatic")
-    throw InputError(
-        "model.kind = \"quasistatic\" has no equations of motion (no integrator "
-        "runs it): make_quasi_static_model builds it");
-  throw InputError("model.kind = \"" + c.model.kind +
-                   "\": allowed: 2dof, 3dof, balls, quasistatic");
+  switch (c.model.kind) {
+    case ModelKind::two_dof:
+      return make_two_dof_model(in);
+    case ModelKind::three_dof:
+      return make_three_dof_model(in);
+    case ModelKind::balls:
+      return make_ball_dof_model(in);
+    case ModelKind::quasi_static:
+      break;
+  }
+  throw InputError(
+      "model.kind = \"quasistatic\" has no equations of motion (no integrator "
+      "runs it): make_quasi_static_model builds it");
 }
 
 bool is_ball_channel(const std::string& name) {
@@ -82,16 +86,18 @@ namespace {
 // contact angle.
 BearingFrequencies run_frequencies(const Case& c) {
   Bearing b = c.bearing;
-  if (c.model.kind == "3dof" || (c.model.kind == "balls" && c.operation.axial_load != 0))
+  if (c.model.kind == ModelKind::three_dof ||
+      (c.model.kind == ModelKind::balls && c.operation.axial_load != 0))
     b.contact_angle = solve_axial_preload(model_inputs(c)).contact_angle;
-  const double slip = c.model.kind == "balls" ? c.cage.slip : 0.0;
+  const double slip = c.model.kind == ModelKind::balls ? c.cage.slip : 0.0;
   return bearing_frequencies(b, c.operation.speed, 0.0, slip);
 }
 
 // The ball-motion channels are written when asked for, and when the acoustics needs them (the
 // balls as sound sources).
 bool wants_ball_motion(const Case& c) {
-  return c.output.ball_motion || (c.acoustics.enabled && c.acoustics.ball_source != "none");
+  return c.output.ball_motion ||
+         (c.acoustics.enabled && c.acoustics.ball_source != BallSource::none);
 }
 
 // The channels of a run: the DOFs, their velocities and accelerations, then Q1..QZ
@@ -158,7 +164,7 @@ void store_balls(const Case& c, std::size_t first, std::size_t k, const BallSamp
 // convergence check.
 void check_explicit_step(const Case& c, const BearingModel& model, const std::vector<double>& q0,
                          const std::vector<double>& v0) {
-  if (c.solver.method != "rk4") return;
+  if (c.solver.method != IntegratorMethod::rk4) return;
   const StepLimit limit = rk4_step_limit(model, 0.0, q0.data(), v0.data());
   if (c.solver.dt <= limit.step) return;
   const auto g3 = [](double v) {
@@ -266,35 +272,23 @@ void run_quasi_static(const Case& c, const Progress& progress, SimulationResult&
   r.quasi_static = st;
 }
 
-// How each model kind produces a response (dynamic integration or quasi-static following).
-struct ModelKind {
-  const char* name;
-  void (*run)(const Case&, const Progress&, SimulationResult&);
-};
-constexpr ModelKind kModelKinds[] = {{"2dof", run_dynamic},
-                                     {"3dof", run_dynamic},
-                                     {"balls", run_dynamic},
-                                     {"quasistatic", run_quasi_static}};
-
 }  // namespace
 
 SimulationResult simulate(const Case& c, const Progress& progress) {
-  for (const ModelKind& kind : kModelKinds)
-    if (c.model.kind == kind.name) {
-      SimulationResult r;
-      r.contact = contact_constants(c);
-      r.frequencies = run_frequencies(c);
-      kind.run(c, progress, r);
-      return r;
-    }
-  throw InputError("model.kind = \"" + c.model.kind +
-                   "\": allowed: 2dof, 3dof, balls, quasistatic");
+  SimulationResult r;
+  r.contact = contact_constants(c);
+  r.frequencies = run_frequencies(c);
+  if (c.model.kind == ModelKind::quasi_static)
+    run_quasi_static(c, progress, r);
+  else
+    run_dynamic(c, progress, r);
+  return r;
 }
 
 RunSummary summarize(const Case& c, const SimulationResult& result) {
   const Response& resp = result.response;
   RunSummary s;
-  const Window window = parse_window(c.output.window, "output.window");
+  const Window window = c.output.window;
   const double rate = c.solver.output_rate;
   const auto& f = result.frequencies;
   const auto names = bearing_frequency_names(f.shaft, f.ftf, f.bpfo, f.bpfi, f.bsf);

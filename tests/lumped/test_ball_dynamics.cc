@@ -132,7 +132,7 @@ struct Trajectory {
 Trajectory integrate(const BallDofModel& m, std::vector<double> q0, std::vector<double> v0,
                      double duration, int samples) {
   IntegratorSettings set;
-  set.method = "rk8pd";
+  set.method = IntegratorMethod::rk8pd;
   set.dt = 1e-7;
   set.rtol = 1e-11;
   set.atol = 1e-17;

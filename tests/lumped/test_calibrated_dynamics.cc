@@ -52,14 +52,15 @@ TEST(CalibratedDynamics, HertzConstantsRunLikeTheExactLaw) {
   const std::string path =
       test::write_calibration("dyn_hertz.json", test::hertz_calibration_doc(exact.bearing));
   const Case cal = case_with(base + calibrated(path));
-  for (const char* kind : {"2dof", "3dof"}) {
+  for (const ModelKind kind : {ModelKind::two_dof, ModelKind::three_dof}) {
     Case a = exact, b = cal;
     a.model.kind = b.model.kind = kind;
     const RunSummary sa = summarize(a, simulate(a)), sb = summarize(b, simulate(b));
     ASSERT_EQ(sa.channels.size(), sb.channels.size());
     for (std::size_t i = 0; i < sa.channels.size(); ++i) {
       const double ra = sa.channels[i].statistics.rms, rb = sb.channels[i].statistics.rms;
-      EXPECT_LE(std::abs(ra - rb), 1e-12 * std::abs(ra)) << kind << " " << sa.channels[i].name;
+      EXPECT_LE(std::abs(ra - rb), 1e-12 * std::abs(ra))
+          << name_of(kModelKinds, kind) << " " << sa.channels[i].name;
     }
   }
 }

@@ -53,11 +53,11 @@ double rel(double a, double b) {
 TEST(Calibration, HertzConstantsGiveTheExactLaw) {
   const Case cal = parse_with(hertz_calibration_doc(case_bearing()));
   Case exact = cal;
-  exact.model.contact = "exact";
+  exact.model.contact = ContactLaw::exact;
   exact.model.calibration.reset();
   const ContactConstants a = contact_constants(cal), b = contact_constants(exact);
-  EXPECT_EQ(a.method, "calibrated");
-  EXPECT_EQ(b.method, "exact");
+  EXPECT_EQ(a.method, ContactLaw::calibrated);
+  EXPECT_EQ(b.method, ContactLaw::exact);
   EXPECT_LE(rel(a.K, b.K), 1e-12);
   EXPECT_LE(rel(a.inner.K, b.inner.K), 1e-12);
   EXPECT_LE(rel(a.outer.K, b.outer.K), 1e-12);
@@ -68,7 +68,7 @@ TEST(Calibration, HertzConstantsGiveTheExactLaw) {
   EXPECT_EQ(a.outer.f_rho, b.outer.f_rho);
   EXPECT_EQ(a.inner.shape.ellipticity, b.inner.shape.ellipticity);
   EXPECT_EQ(a.outer.semi_major(100.0), b.outer.semi_major(100.0));  // Hertz ellipse kept
-  EXPECT_EQ(hertz_shape_method(cal.model), "exact");
+  EXPECT_EQ(hertz_shape_method(cal.model), HertzMethod::exact);
 }
 
 // The file's values reach the Case: constants, provenance, the absolute path.
@@ -303,7 +303,7 @@ TEST(Calibration, CaseLevelErrors) {
   const Case c =
       parse_case(calibrated_case(good), "t.toml",
                  {parse_override("model.contact=exact"), parse_override("model.calibration=\"\"")});
-  EXPECT_EQ(c.model.contact, "exact");
+  EXPECT_EQ(c.model.contact, ContactLaw::exact);
   EXPECT_FALSE(c.model.calibration.has_value());
 }
 
@@ -361,7 +361,7 @@ TEST(Calibration, AcceptsAFileDifferingOnlyInClearanceBallsAndRotor) {
                             {"bearing.clearance=20um", "bearing.balls=9", "material.density=3200",
                              "rotor.mass=1.5kg", "operation.speed=3000rpm"});
   EXPECT_EQ(c.bearing.balls, 9);
-  EXPECT_EQ(contact_constants(c).method, "calibrated");
+  EXPECT_EQ(contact_constants(c).method, ContactLaw::calibrated);
 }
 
 // Paths: relative to the case file's folder in the file, to the working directory on the command

@@ -1,5 +1,7 @@
 #include <cmath>
+#include <filesystem>
 #include <fstream>
+#include <sstream>
 #include <string>
 
 #include <gtest/gtest.h>
@@ -8,10 +10,7 @@
 #include "bearing/errors.h"
 #include "bearing/presets.h"
 
-using bearing::Case;
-using bearing::Override;
-using bearing::parse_case;
-using bearing::parse_override;
+using namespace bearing;
 
 namespace {
 constexpr double kPi = 3.14159265358979323846;
@@ -57,7 +56,7 @@ TEST(CaseFile, ReadsEveryKeyInSI) {
   EXPECT_DOUBLE_EQ(c.bearing.rings.young, 208e9);
   EXPECT_DOUBLE_EQ(c.operation.speed, 2000 * 2 * kPi / 60);
   EXPECT_DOUBLE_EQ(c.operation.load.y(), -500.0);
-  EXPECT_EQ(c.model.contact, "hamrock-brewe");
+  EXPECT_EQ(c.model.contact, ContactLaw::hamrock_brewe);
 }
 
 TEST(CaseFile, PlainNumbersAreSI) {
@@ -77,7 +76,7 @@ TEST(CaseFile, PresetThenFileKeysOverrideIt) {
   EXPECT_EQ(c.bearing.balls, 9);
   EXPECT_DOUBLE_EQ(c.bearing.ball_diameter, p.ball_diameter);
   EXPECT_DOUBLE_EQ(c.bearing.ball.young, 2.07e11);  // preset material kept
-  EXPECT_EQ(c.model.contact, "exact");              // default method
+  EXPECT_EQ(c.model.contact, ContactLaw::exact);    // default method
 }
 
 TEST(CaseFile, CommandLineOverridesWinOverTheFile) {
@@ -91,7 +90,7 @@ TEST(CaseFile, CommandLineOverridesWinOverTheFile) {
   EXPECT_DOUBLE_EQ(c.bearing.rings.young, 200e9);
   EXPECT_DOUBLE_EQ(c.bearing.ball.young, 315e9);
   EXPECT_DOUBLE_EQ(c.operation.load.y(), -1000.0);
-  EXPECT_EQ(c.model.contact, "harris-table");
+  EXPECT_EQ(c.model.contact, ContactLaw::harris_table);
 }
 
 TEST(CaseFile, OverrideCanChooseAPresetByNumber) {
@@ -195,13 +194,13 @@ TEST(CaseFile, ReadsTheDynamicsTables) {
   ASSERT_EQ(c.excitation.ball_size_errors.size(), 8u);
   EXPECT_DOUBLE_EQ(c.excitation.ball_size_errors[0], -1e-6);
   EXPECT_DOUBLE_EQ(c.excitation.ball_size_errors[1], 1e-6);
-  EXPECT_EQ(c.model.kind, "3dof");
+  EXPECT_EQ(c.model.kind, ModelKind::three_dof);
   EXPECT_TRUE(c.model.waviness_stiffness);
-  EXPECT_EQ(c.solver.method, "rk8pd");
+  EXPECT_EQ(c.solver.method, IntegratorMethod::rk8pd);
   EXPECT_DOUBLE_EQ(c.solver.dt, 2e-6);
   EXPECT_DOUBLE_EQ(c.solver.output_rate, 1e4);
   EXPECT_TRUE(c.output.ball_loads);
-  EXPECT_EQ(c.output.window, "flattop");
+  EXPECT_EQ(c.output.window, Window::flattop);
   EXPECT_EQ(c.output.peaks, 5);
 }
 
@@ -209,8 +208,8 @@ TEST(CaseFile, DefaultsMatchTheSeeds) {
   const Case c = bearing::default_case();
   EXPECT_DOUBLE_EQ(c.rotor.mass, 0.6);  // seeds 001–003
   EXPECT_DOUBLE_EQ(c.rotor.damping, 200.0);
-  EXPECT_EQ(c.model.kind, "2dof");
-  EXPECT_EQ(c.solver.method, "rk4");
+  EXPECT_EQ(c.model.kind, ModelKind::two_dof);
+  EXPECT_EQ(c.solver.method, IntegratorMethod::rk4);
   EXPECT_DOUBLE_EQ(c.solver.dt, 5e-6);  // seeds 002/003
   EXPECT_TRUE(c.excitation.inner_waviness.empty());
   EXPECT_TRUE(c.excitation.ball_size_errors.empty());
@@ -272,7 +271,7 @@ TEST(CaseFile, BallModelTablesRoundTripExactly) {
   EXPECT_EQ(a.ball.damping, a.rotor.damping);
   EXPECT_EQ(a.cage.friction, 0.01);
   const Case b = parse_case(bearing::case_to_toml(a), "case.toml");
-  EXPECT_EQ(b.model.kind, "balls");
+  EXPECT_EQ(b.model.kind, ModelKind::balls);
   EXPECT_EQ(b.cage.slip, a.cage.slip);
   EXPECT_EQ(b.cage.friction, a.cage.friction);
   EXPECT_EQ(b.cage.slide_speed, a.cage.slide_speed);
@@ -335,9 +334,9 @@ TEST(CaseFile, ReadsTheAcousticsTable) {
   EXPECT_DOUBLE_EQ(ac.microphones[0].angle, -kPi / 2);
   EXPECT_DOUBLE_EQ(ac.microphones[1].radius, 0.5);
   EXPECT_DOUBLE_EQ(ac.microphones[1].angle, 0.25);
-  EXPECT_EQ(ac.summation, "energetic");
-  EXPECT_EQ(ac.ring_source, "cylinder-dipole");
-  EXPECT_EQ(ac.ball_source, "oscillating-sphere");
+  EXPECT_EQ(ac.summation, Summation::energetic);
+  EXPECT_EQ(ac.ring_source, RingSource::cylinder_dipole);
+  EXPECT_EQ(ac.ball_source, BallSource::oscillating_sphere);
   EXPECT_DOUBLE_EQ(ac.ring_radius, 0.5 * c.bearing.inner_raceway_diameter());
   EXPECT_DOUBLE_EQ(ac.density, 1.204);
   EXPECT_DOUBLE_EQ(ac.sound_speed, 343.2);
@@ -352,4 +351,48 @@ TEST(CaseFile, ReadsTheAcousticsTable) {
   EXPECT_EQ(b.acoustics.summation, ac.summation);
   EXPECT_EQ(b.acoustics.ring_radius, ac.ring_radius);
   EXPECT_NEAR(b.acoustics.sound_speed, 1235 / 3.6, 1e-12);
+}
+
+// The schema drives reading and writing: the written case read back writes the same text, for
+// every example and for a case that has every table (balls, waviness, ball errors, acoustics).
+TEST(CaseSchema, WrittenCaseIsAFixedPointForEveryExample) {
+  std::vector<Case> cases;
+  for (const auto& entry :
+       std::filesystem::directory_iterator(std::string(BEARING_SOURCE_DIR) + "/examples"))
+    if (entry.path().extension() == ".toml") cases.push_back(read_case_file(entry.path()));
+  ASSERT_GE(cases.size(), 10u);
+  cases.push_back(
+      parse_case(kFull, "full.toml",
+                 {parse_override("model.kind=balls"), parse_override("cage.slip=0.02"),
+                  parse_override("ball.mass=0.03"), parse_override("ball_errors.band=\"1 um\""),
+                  parse_override("acoustics.microphones=[[\"1 m\", \"30 deg\"]]"),
+                  parse_override("output.ball_dynamics=true")}));
+  // The text without its comments (the file it came from, where ball errors were drawn from).
+  const auto body = [](const std::string& text) {
+    std::istringstream in(text);
+    std::string out;
+    for (std::string line; std::getline(in, line);)
+      if (line.rfind('#', 0) != 0) out += line + "\n";
+    return out;
+  };
+  for (const Case& a : cases) {
+    const std::string text = case_to_toml(a);
+    const Case b = parse_case(text, "case.toml");
+    EXPECT_EQ(body(case_to_toml(b)), body(text)) << a.source;
+    EXPECT_EQ(b.acoustics.enabled, a.acoustics.enabled) << a.source;
+    EXPECT_EQ(b.model.kind, a.model.kind) << a.source;
+  }
+}
+
+// Every key the reader accepts is listed in --help with its units, and each numeric one has a
+// dimension for sweeps.
+TEST(CaseSchema, EveryKeyIsDocumented) {
+  const std::string help = case_keys_help();
+  for (const std::string& key : known_keys()) {
+    EXPECT_NE(help.find("  " + key + " "), std::string::npos) << key;
+    if (key_is_integer(key)) EXPECT_EQ(key_dimension(key), Dimension::dimensionless) << key;
+  }
+  EXPECT_EQ(key_dimension("operation.speed"), Dimension::angular_speed);
+  EXPECT_EQ(key_dimension("waviness.outer.3.phase"), Dimension::angle);
+  EXPECT_THROW(key_dimension("model.kind"), InputError);
 }

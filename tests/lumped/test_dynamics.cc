@@ -50,8 +50,7 @@ TEST(Dynamics, PerfectBearingVibratesAtBpfo) {
   c.output.peaks = 40;
   const SimulationResult r = simulate(c);
   const RunSummary s = summarize(c, r);
-  const double bin =
-      c.solver.output_rate / static_cast<double>(r.response.steady("y").size());
+  const double bin = c.solver.output_rate / static_cast<double>(r.response.steady("y").size());
   EXPECT_NEAR(r.frequencies.bpfo, 102.4, 0.05);
   const Peak& p = largest_peak(s, "y");
   EXPECT_NEAR(p.frequency, r.frequencies.bpfo, bin);
@@ -142,7 +141,7 @@ struct Trajectory {
 Trajectory integrate(const BearingModel& model, const std::string& method, double dt, double rtol,
                      std::vector<double> q0, double duration, int samples) {
   IntegratorSettings set;
-  set.method = method;
+  set.method = find_named(kIntegratorMethods, method).value();
   set.dt = dt;
   set.rtol = rtol;
   set.atol = 1e-15;

@@ -157,7 +157,7 @@ struct Trajectory {
 IntegratorSettings settings(const std::string& method, double dt, double rtol = 1e-10,
                             double atol = 1e-18) {
   IntegratorSettings s;
-  s.method = method;
+  s.method = find_named(kIntegratorMethods, method).value();
   s.dt = dt;
   s.rtol = rtol;
   s.atol = atol;
@@ -939,7 +939,12 @@ std::string input_error(const IntegratorSettings& s) {
 }
 
 TEST(IntegratorFactory, UnknownMethodNamesKeyValueAndChoices) {
-  const std::string message = input_error(settings("euler", 5e-6));
+  std::string message;
+  try {
+    parse_named(kIntegratorMethods, "euler", "solver.method", "method");
+  } catch (const InputError& e) {
+    message = e.what();
+  }
   EXPECT_NE(message.find("solver.method"), std::string::npos) << message;
   EXPECT_NE(message.find("euler"), std::string::npos) << message;
   for (const std::string& name : integrator_names())

@@ -13,10 +13,14 @@
 
 #include <Eigen/Dense>
 
+#include "bearing/acoustics/acoustics_options.h"
 #include "bearing/bearing.h"
 #include "bearing/calibration.h"
 #include "bearing/contact.h"
 #include "bearing/excitation.h"
+#include "bearing/models/model_kind.h"
+#include "bearing/signal/spectrum.h"
+#include "bearing/solvers/integrator.h"
 #include "bearing/units.h"
 
 namespace bearing {
@@ -67,11 +71,10 @@ struct BallOptions {
 
 /// Model choices.
 struct ModelOptions {
-  std::string kind = "2dof";  ///< "2dof" | "3dof" | "balls" | "quasistatic" (no integrator:
-                              ///< [solver] method, dt, tolerance unused)
-  /// Contact law: a Hertz method "exact" | "hamrock-brewe" | "harris-table", or "calibrated"
-  /// (the FE constants of `calibration`).
-  std::string contact = "exact";
+  ModelKind kind = ModelKind::two_dof;  ///< quasi_static: no integrator ([solver] method, dt,
+                                        ///< tolerance unused)
+  /// Contact law: a Hertz method, or calibrated (the FE constants of `calibration`).
+  ContactLaw contact = ContactLaw::exact;
   /// `model.calibration`, read and checked against the bearing when the case is parsed: present
   /// exactly when contact == "calibrated". Its path is absolute.
   std::optional<ContactCalibration> calibration;
@@ -81,10 +84,10 @@ struct ModelOptions {
 /// Time integration. Defaults: RK4 at 5 µs (seeds 002/003) for 1.2 s, the first 0.2 s discarded
 /// as transient, output at 20 kHz.
 struct SolverOptions {
-  std::string method = "rk4";  ///< "rk4" | "rkf45" | "rk8pd" | "newmark" | "bdf"
-  double dt = 5e-6;            ///< step (fixed-step methods) or first step [s]
-  double duration = 1.2;       ///< simulated time [s]
-  double transient = 0.2;      ///< discarded before statistics and spectra [s]
+  IntegratorMethod method = IntegratorMethod::rk4;
+  double dt = 5e-6;        ///< step (fixed-step methods) or first step [s]
+  double duration = 1.2;   ///< simulated time [s]
+  double transient = 0.2;  ///< discarded before statistics and spectra [s]
   /// Relative tolerance (adaptive, bdf, Newton) [-]; the absolute one on displacements is
   /// tolerance × max(|q0|, P_d/2, 1 um).
   double tolerance = 1e-6;
@@ -100,32 +103,8 @@ struct OutputOptions {
   /// add, per ball, the spin wb1… [rad/s], the outer-race load Qo1… [N] and the friction forces
   /// on the ball at its inner and outer contact Fi1…, Fo1… [N] (model.kind = "balls" only)
   bool ball_dynamics = false;
-  std::string window = "hann";  ///< spectrum window: "hann" | "flattop" | "rectangular"
-  int peaks = 10;               ///< spectrum peaks listed per channel in summary.json
-};
-
-/// A microphone in the bearing plane, in the fixed frame with its origin at the bearing centre.
-struct Microphone {
-  double radius = 0.0;  ///< distance from the bearing centre [m]
-  double angle = 0.0;   ///< from +x towards +y (up) [rad]
-};
-
-/// Sound radiated by the inner ring and the balls (MODEL.md §8); on when the case has an
-/// [acoustics] table. Source names are those of bearing/acoustics/source_models.h, or "none".
-struct AcousticsOptions {
-  bool enabled = false;
-  /// The inner ring: "cylinder-dipole" (exact in ka), "paper" (seed 000's low-ka cylinder), "none".
-  std::string ring_source = "cylinder-dipole";
-  /// Each ball, driven by its centre's radial velocity: "oscillating-sphere" (a translating rigid
-  /// ball, exact in ka; the default because the FE field of a translating ball matches it, while
-  /// it lies 7–30 dB below the pulsating sphere: fem/README.md), "pulsating-sphere" (seed 000's
-  /// choice, exact in ka), "paper" (seed 000's eq. 23), "none".
-  std::string ball_source = "oscillating-sphere";
-  std::string summation = "coherent";   ///< "coherent" (sum of pressures) | "energetic" (seed 000)
-  std::vector<Microphone> microphones;  ///< at least one when enabled
-  double ring_radius = 0.0;             ///< radiating radius of the inner ring [m] (default d_i/2)
-  double density = 1.204;               ///< air density ρ₀ [kg/m^3] (20 °C, 1 atm)
-  double sound_speed = 343.2;           ///< speed of sound c₀ [m/s] (20 °C)
+  Window window = Window::hann;  ///< spectrum window
+  int peaks = 10;                ///< spectrum peaks listed per channel in summary.json
 };
 
 struct Case {
@@ -140,7 +119,7 @@ struct Case {
   BallOptions ball;  ///< model.kind = "balls" only
   SolverOptions solver;
   OutputOptions output;
-  AcousticsOptions acoustics;
+  AcousticsOptions acoustics;  ///< on when the case has an [acoustics] table
 };
 
 /// The contact constants of the case's law (the one place models, the static solution and `info`
@@ -149,8 +128,8 @@ struct Case {
 ContactConstants contact_constants(const Case& c);
 
 /// The Hertz method behind the curvatures and ellipse shape of the case's law (for TVDS): the
-/// method itself, or "exact" for "calibrated".
-std::string hertz_shape_method(const ModelOptions& m);
+/// method itself, or exact for calibrated.
+HertzMethod hertz_shape_method(const ModelOptions& m);
 
 /// One command-line override `table.key=value` (the value is TOML, or else taken as a string, so
 /// `operation.speed=3000 rpm` and `model.contact=exact` need no quotes). A numeric path part

@@ -61,8 +61,23 @@ double series_stiffness(double k_inner, double k_outer);
 double series_stiffness(double k_inner, double k_outer, double exponent);
 
 /// Contact constants of the whole bearing: both races and the ball between them.
+/// The contact law a case selects (model.contact): a Hertz method, or the FE-calibrated constants
+/// of calibration.h.
+enum class ContactLaw { exact, hamrock_brewe, harris_table, calibrated };
+inline constexpr Named<ContactLaw> kContactLaws[] = {{ContactLaw::exact, "exact"},
+                                                     {ContactLaw::hamrock_brewe, "hamrock-brewe"},
+                                                     {ContactLaw::harris_table, "harris-table"},
+                                                     {ContactLaw::calibrated, "calibrated"}};
+
+/// The law of a Hertz method.
+ContactLaw contact_law(HertzMethod method);
+
+/// The Hertz method behind a law's curvatures and ellipse shape (TVDS): the method itself, or
+/// exact for the calibrated law.
+HertzMethod hertz_shape_method(ContactLaw law);
+
 struct ContactConstants {
-  std::string method;  ///< "exact", "hamrock-brewe", "harris-table" or "calibrated"
+  ContactLaw method = ContactLaw::exact;  ///< the law these constants come from
   RaceContact inner;
   RaceContact outer;
   double K = 0;           ///< series constant of one ball between both races [N/m^n]

@@ -14,6 +14,8 @@
 #include <string>
 #include <string_view>
 
+#include "bearing/choice.h"
+
 namespace bearing {
 
 struct HertzShape {
@@ -25,14 +27,23 @@ struct HertzShape {
   double b_star = 1;       ///< dimensionless minor semi-axis b* [-]
 };
 
+/// The ways of obtaining the Hertz solution, by their case-file names.
+enum class HertzMethod { exact, hamrock_brewe, harris_table };
+inline constexpr Named<HertzMethod> kHertzMethods[] = {
+    {HertzMethod::exact, "exact"},
+    {HertzMethod::hamrock_brewe, "hamrock-brewe"},
+    {HertzMethod::harris_table, "harris-table"}};
+
 /// One way of obtaining the dimensionless Hertz solution from F(ρ) ∈ [0, 1).
 class HertzSolution {
  public:
   virtual ~HertzSolution() = default;
   /// The solution at curvature difference `f_rho` ∈ [0, 1). Throws InputError outside it.
   virtual HertzShape shape(double f_rho) const = 0;
+  /// Which method this is.
+  virtual HertzMethod method() const = 0;
   /// The case-file name of the method ("exact", "hamrock-brewe", "harris-table").
-  virtual std::string_view name() const = 0;
+  std::string_view name() const { return name_of(kHertzMethods, method()); }
 };
 
 /// Exact: κ by bracketed root finding on the F(ρ) equation, K and E from GSL.
@@ -43,6 +54,9 @@ std::unique_ptr<HertzSolution> make_hamrock_brewe_hertz();
 /// Harris's δ*(F(ρ)) table as printed in seed 001 Table 1, interpolated; κ, K, E, a*, b* of the
 /// exact solution (the table gives δ* only).
 std::unique_ptr<HertzSolution> make_harris_table_hertz();
+
+/// The method itself.
+std::unique_ptr<HertzSolution> make_hertz_solution(HertzMethod method);
 
 /// The method by case-file name; throws InputError naming `key` and listing the allowed names.
 std::unique_ptr<HertzSolution> make_hertz_solution(std::string_view name,

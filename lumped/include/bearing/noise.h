@@ -57,9 +57,4 @@ struct BearingNoise {
 /// instant (naming acoustics.microphones[i]).
 BearingNoise bearing_noise(const Case& c, const Response& response, double cage_speed);
 
-/// The source models the case's names stand for: ring "paper" → "cylinder-dipole-paper" (seed 000
-/// eq. 19 as derived), ball "paper" → "pulsating-sphere-paper" (its eq. 23); others unchanged.
-std::string ring_source_model(const AcousticsOptions& a);
-std::string ball_source_model(const AcousticsOptions& a);
-
 }  // namespace bearing

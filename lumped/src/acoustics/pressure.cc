@@ -199,9 +199,7 @@ std::vector<double> radiate_moving(const RadialSeriesSource& source,
 }
 
 Summation parse_summation(const std::string& name, const std::string& key) {
-  if (name == "coherent") return Summation::coherent;
-  if (name == "energetic") return Summation::energetic;
-  throw InputError(key + " = \"" + name + "\": allowed: \"coherent\", \"energetic\"");
+  return parse_named(kSummations, name, key, "summation");
 }
 
 std::vector<double> sum_pressures(const std::vector<std::vector<double>>& pressures,

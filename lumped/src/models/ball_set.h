@@ -634,7 +634,7 @@ class BallSet {
   void setup_tvds(const ModelInputs& in) {
     const bool hertz_exponents = in.contact.exponent == 1.5 && in.contact.inner.exponent == 1.5 &&
                                  in.contact.outer.exponent == 1.5;
-    if (!hertz_exponents && in.contact.method == "calibrated")
+    if (!hertz_exponents && in.contact.method == ContactLaw::calibrated)
       throw InputError(
           "model.waviness_stiffness = true (TVDS) needs the Hertz exponent 3/2 on both races, but "
           "the calibrated contact law (model.calibration) has n = " +

@@ -12,7 +12,6 @@
 #include <string>
 #include <utility>
 
-#include "../edit_distance.h"
 #include "bearing/errors.h"
 #include "bearing/signal/fft.h"
 #include "bearing/units.h"
@@ -22,13 +21,6 @@ namespace bearing {
 namespace {
 
 constexpr double kTwoPi = 6.283185307179586476925286766559;
-
-struct WindowName {
-  std::string_view name;
-  Window window;
-};
-constexpr std::array<WindowName, 3> kWindows{
-    {{"hann", Window::hann}, {"flattop", Window::flattop}, {"rectangular", Window::rectangular}}};
 
 // Periodic cosine-sum windows w_j = Σ_m c_m cos(m·2πj/N); signs folded into c_m.
 constexpr std::array<double, 2> kHann{0.5, -0.5};
@@ -67,25 +59,11 @@ std::vector<double> window_values(Window window, std::size_t n) {
 }  // namespace
 
 Window parse_window(std::string_view name, const std::string& key) {
-  for (const WindowName& w : kWindows)
-    if (name == w.name) return w.window;
-
-  std::string_view nearest = kWindows[0].name;
-  std::size_t best = detail::edit_distance(name, nearest);
-  for (const WindowName& w : kWindows) {
-    const std::size_t d = detail::edit_distance(name, w.name);
-    if (d < best) best = d, nearest = w.name;
-  }
-  std::string msg = key + " = \"" + std::string(name) +
-                    "\": unknown window; allowed: \"hann\", \"flattop\", \"rectangular\"";
-  if (best <= 3) msg += " (did you mean \"" + std::string(nearest) + "\"?)";
-  throw InputError(msg);
+  return parse_named(kWindows, name, key, "window");
 }
 
 std::string_view window_name(Window window) {
-  for (const WindowName& w : kWindows)
-    if (w.window == window) return w.name;
-  return "unknown";
+  return name_of(kWindows, window);
 }
 
 SpectrumPlan::SpectrumPlan(std::size_t n, double sample_rate, Window window)

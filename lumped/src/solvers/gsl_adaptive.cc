@@ -118,11 +118,11 @@ class GslAdaptive final : public Integrator {
                              const std::vector<double>& q0, const std::vector<double>& v0,
                              const std::vector<double>& output_times, const Observer& observe,
                              const Progress& progress) const override {
-    return integrate_gsl(settings_.method, type_, nullptr, settings_, system, t0, q0, v0,
-                         output_times, observe, progress);
+    return integrate_gsl(name(), type_, nullptr, settings_, system, t0, q0, v0, output_times,
+                         observe, progress);
   }
 
-  std::string name() const override { return settings_.method; }
+  std::string name() const override { return name_of(kIntegratorMethods, settings_.method); }
 
  private:
   IntegratorSettings settings_;
@@ -277,7 +277,7 @@ IntegrationStats integrate_gsl(const std::string& method, const gsl_odeiv2_step_
 
 std::unique_ptr<Integrator> make_gsl_adaptive(const IntegratorSettings& settings) {
   const gsl_odeiv2_step_type* type =
-      settings.method == "rk8pd" ? gsl_odeiv2_step_rk8pd : gsl_odeiv2_step_rkf45;
+      settings.method == IntegratorMethod::rk8pd ? gsl_odeiv2_step_rk8pd : gsl_odeiv2_step_rkf45;
   return std::make_unique<GslAdaptive>(settings, type);
 }
 

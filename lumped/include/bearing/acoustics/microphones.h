@@ -6,8 +6,9 @@
 
 #include <Eigen/Dense>
 
+#include "bearing/acoustics/acoustics_options.h"
 #include "bearing/acoustics/pressure.h"
-#include "bearing/case_file.h"
+#include "bearing/bearing.h"
 
 namespace bearing {
 

@@ -35,6 +35,7 @@
 #include <vector>
 
 #include "bearing/acoustics/sources.h"
+#include "bearing/choice.h"
 #include "bearing/signal/fft.h"
 
 namespace bearing {
@@ -103,6 +104,8 @@ enum class Summation {
   energetic,  ///< p = sqrt(Σ_i p_i(t)²) (seed 000 eq. 26): an envelope whose RMS is sqrt(Σ
               ///< p_rms,i²)
 };
+inline constexpr Named<Summation> kSummations[] = {{Summation::coherent, "coherent"},
+                                                   {Summation::energetic, "energetic"}};
 
 /// "coherent" or "energetic"; InputError naming `key` otherwise.
 Summation parse_summation(const std::string& name, const std::string& key);

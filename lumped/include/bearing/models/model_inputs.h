@@ -16,8 +16,8 @@ namespace bearing {
 struct ModelInputs {
   Bearing bearing;           ///< geometry and materials
   ContactConstants contact;  ///< constants per race and in series (the case's contact law)
-  std::string hertz_method = "exact";  ///< TVDS: the Hertz method of the curvature–compliance
-                                       ///< table ("exact" for an FE-calibrated law)
+  /// TVDS: the Hertz method of the curvature–compliance table (exact for an FE-calibrated law)
+  HertzMethod hertz_method = HertzMethod::exact;
 
   double inner_speed = 0.0;                        ///< ω_i [rad/s], outer ring fixed
   double cage_phase = 0.0;                         ///< φ₀, angle of ball 0 at t = 0 [rad]

@@ -8,6 +8,7 @@
 #include <string_view>
 #include <vector>
 
+#include "bearing/choice.h"
 #include "bearing/signal/fft.h"
 
 namespace bearing {
@@ -23,6 +24,8 @@ namespace bearing {
 ///    0.0039 dB (0.045 %) anywhere between bins, −90 dB sidelobes, main lobe ±5 bins wide.
 ///  - rectangular: w = 1. Exact only on bins; up to −3.9 dB (−36 %) between bins, and leaks.
 enum class Window { hann, flattop, rectangular };
+inline constexpr Named<Window> kWindows[] = {
+    {Window::hann, "hann"}, {Window::flattop, "flattop"}, {Window::rectangular, "rectangular"}};
 
 /// The window named "hann", "flattop" or "rectangular" (exact spelling). `key` is the case-file
 /// key the name came from, used in the message. Throws InputError for any other name, listing the

@@ -8,15 +8,25 @@
 #include <string>
 #include <vector>
 
+#include "bearing/choice.h"
 #include "bearing/solvers/mechanical_system.h"
 
 namespace bearing {
 
+/// The integration methods ([solver] method), each one file in src/solvers/.
+enum class IntegratorMethod { rk4, rkf45, rk8pd, newmark, bdf };
+inline constexpr Named<IntegratorMethod> kIntegratorMethods[] = {
+    {IntegratorMethod::rk4, "rk4"},
+    {IntegratorMethod::rkf45, "rkf45"},
+    {IntegratorMethod::rk8pd, "rk8pd"},
+    {IntegratorMethod::newmark, "newmark"},
+    {IntegratorMethod::bdf, "bdf"}};
+
 struct IntegratorSettings {
-  std::string method = "rk4";  ///< "rk4" | "rkf45" | "rk8pd" | "newmark" | "bdf"
-  double dt = 5e-6;            ///< fixed step (rk4, newmark) or initial step (adaptive) [s]
-  double rtol = 1e-6;          ///< relative tolerance (adaptive, bdf; newmark's Newton) [-]
-  double atol = 1e-12;         ///< absolute tolerance on displacements [m] (velocities scaled) [-]
+  IntegratorMethod method = IntegratorMethod::rk4;
+  double dt = 5e-6;     ///< fixed step (rk4, newmark) or initial step (adaptive) [s]
+  double rtol = 1e-6;   ///< relative tolerance (adaptive, bdf; newmark's Newton) [-]
+  double atol = 1e-12;  ///< absolute tolerance on displacements [m] (velocities scaled) [-]
   /// Blow-up bound on |q_i| [m]; exceeded → SolverError. Cyclic DOFs (MechanicalSystem::cyclic)
   /// are exempt: they must only stay finite.
   double max_displacement = 1e-3;
@@ -52,8 +62,8 @@ class Integrator {
   virtual std::string name() const = 0;
 };
 
-/// The integrator for settings.method; throws InputError naming `solver.method` and listing the
-/// methods for an unknown name, or naming `solver.dt` / `solver.tolerance` for invalid values.
+/// The integrator for settings.method; throws InputError naming `solver.dt` / `solver.tolerance`
+/// for invalid values.
 std::unique_ptr<Integrator> make_integrator(const IntegratorSettings& settings);
 
 /// The method names make_integrator accepts.

@@ -1,0 +1,422 @@
+// The case-file schema: one row per key (case_schema.h), table by table in the order a case file
+// is read, written and listed in --help. The rules that tie several keys of a table together sit
+// in that table's row (before/after); the tables whose keys need more than a value each (bearing
+// preset, waviness entries, ball errors, the calibration file, acoustics) have them in
+// case_rules.cc.
+
+#include "bearing/constants.h"
+#include "case_rules.h"
+#include "key_builders.h"
+
+namespace bearing::case_schema {
+
+namespace {
+
+using D = Dimension;
+
+// Absent, a geometry key keeps the preset's value; without a preset it is required.
+template <class At>
+auto preset_or_required(std::string leaf, At at) {
+  return [leaf, at](const Case& c) {
+    if (c.preset.empty())
+      throw InputError("bearing." + leaf +
+                       " is missing: give it, or choose a catalogue bearing with bearing.preset (" +
+                       "608, 6304, 6308, 6205, 209)");
+    return at(c);
+  };
+}
+
+template <class At>
+Key geometry(const std::string& leaf, Dimension dim, std::string help, At at) {
+  return quantity("bearing." + leaf, dim, std::move(help), at, {}, preset_or_required(leaf, at));
+}
+
+std::vector<Key> bearing_keys() {
+  Key preset = described("bearing.preset", Kind::text, D::dimensionless,
+                         "catalogue bearing (608, 6304, 6308, 6205, 209); other keys override it");
+  preset.read = read_preset;
+  const auto balls = [](auto& c) -> auto& {
+    return c.bearing.balls;
+  };
+  return {
+      table("bearing", "geometry"),
+      preset,
+      geometry(
+          "ball_diameter", D::length, "ball diameter D",
+          [](auto& c) -> auto& { return c.bearing.ball_diameter; }),
+      geometry(
+          "pitch_diameter", D::length, "pitch diameter d_m",
+          [](auto& c) -> auto& { return c.bearing.pitch_diameter; }),
+      integer("bearing.balls", "number of balls Z (>= 3)", balls, {},
+              preset_or_required("balls", balls)),
+      geometry(
+          "inner_conformity", D::dimensionless, "inner groove radius / D (> 0.5)",
+          [](auto& c) -> auto& { return c.bearing.inner_conformity; }),
+      geometry(
+          "outer_conformity", D::dimensionless, "outer groove radius / D (> 0.5)",
+          [](auto& c) -> auto& { return c.bearing.outer_conformity; }),
+      geometry(
+          "clearance", D::length,
+          "ISO radial internal clearance P_d (diametral); each ball's gap is P_d/2",
+          [](auto& c) -> auto& { return c.bearing.clearance; }),
+      quantity(
+          "bearing.contact_angle", D::angle, "free contact angle alpha",
+          [](auto& c) -> auto& { return c.bearing.contact_angle; }),
+  };
+}
+
+// One material table: [material.ball] or [material.rings].
+template <class At>
+std::vector<Key> material_keys(const std::string& name, const std::string& what, At at) {
+  return {
+      table("material." + name, what + " material (young, poisson, density)"),
+      quantity(
+          "material." + name + ".young", D::pressure,
+          what + " Young's modulus", [at](auto& c) -> auto& { return at(c).young; }),
+      quantity(
+          "material." + name + ".poisson", D::dimensionless,
+          what + " Poisson ratio", [at](auto& c) -> auto& { return at(c).poisson; }),
+      quantity(
+          "material." + name + ".density", D::density,
+          what + " density", [at](auto& c) -> auto& { return at(c).density; }),
+  };
+}
+
+std::vector<Key> material_keys() {
+  Key t = table("material", "balls and rings");
+  // Bearing::validate checks the geometry and both materials, once everything is read.
+  t.after = [](Case& c) { c.bearing.validate(); };
+  std::vector<Key> out{t};
+  // The plain [material] keys set both materials.
+  const auto both = [](std::string leaf, double Material::*member, Dimension dim,
+                       std::string help) {
+    Key k = described("material." + leaf, Kind::quantity, dim, std::move(help));
+    k.read = [leaf, member](TableReader& r, Case& c, const ReadContext&) {
+      if (const auto v = r.quantity(leaf)) c.bearing.ball.*member = c.bearing.rings.*member = *v;
+    };
+    return k;
+  };
+  out.push_back(both("young", &Material::young, D::pressure, "Young's modulus, balls and rings"));
+  out.push_back(
+      both("poisson", &Material::poisson, D::dimensionless, "Poisson ratio in (-1, 0.5)"));
+  out.push_back(both("density", &Material::density, D::density, "density"));
+  for (auto& k : material_keys(
+           "ball", "ball", [](auto& c) -> auto& { return c.bearing.ball; }))
+    out.push_back(std::move(k));
+  for (auto& k : material_keys(
+           "rings", "ring", [](auto& c) -> auto& { return c.bearing.rings; }))
+    out.push_back(std::move(k));
+  return out;
+}
+
+std::vector<Key> rotor_keys() {
+  return {
+      table("rotor", "inner ring and shaft"),
+      quantity(
+          "rotor.mass", D::mass, "inner ring + shaft mass (default 0.6 kg)",
+          [](auto& c) -> auto& { return c.rotor.mass; }, positive("must be positive (> 0 kg)")),
+      quantity(
+          "rotor.damping", D::damping, "radial damping (default 200 N s/m)",
+          [](auto& c) -> auto& { return c.rotor.damping; }, non_negative()),
+      quantity(
+          "rotor.axial_mass", D::mass, "axial mass, 3dof (default: rotor.mass)",
+          [](auto& c) -> auto& { return c.rotor.axial_mass; },
+          positive("must be positive (> 0 kg)"), [](const Case& c) { return c.rotor.mass; }),
+      quantity(
+          "rotor.axial_damping", D::damping, "axial damping, 3dof (default: rotor.damping)",
+          [](auto& c) -> auto& { return c.rotor.axial_damping; }, non_negative(),
+          [](const Case& c) { return c.rotor.damping; }),
+  };
+}
+
+std::vector<Key> operation_keys() {
+  Limit speed =
+      non_negative("must be >= 0 rpm (the inner ring turns counter-clockwise seen from +z)");
+  speed.unit = "rpm";
+  Key load = described("operation.load", Kind::vector2, D::force,
+                       "radial load [Fx, Fy] on the inner ring (y up: Fy < 0 pushes down)");
+  load.read = [](TableReader& r, Case& c, const ReadContext&) {
+    if (const auto v = r.vector2("load")) c.operation.load = *v;
+  };
+  load.write = [](std::ostream& o, const Case& c) {
+    o << "load = [" << num17(c.operation.load.x()) << ", " << num17(c.operation.load.y()) << "]\n";
+  };
+  return {
+      table("operation", "operating conditions"),
+      quantity(
+          "operation.speed", D::angular_speed, "inner-ring speed",
+          [](auto& c) -> auto& { return c.operation.speed; }, speed),
+      load,
+      quantity(
+          "operation.axial_load", D::force, "axial load / preload Fz, 3dof",
+          [](auto& c) -> auto& { return c.operation.axial_load; }),
+      quantity(
+          "operation.unbalance", D::mass_length,
+          "unbalance m_u e; force m_u e w^2 rotating with the shaft",
+          [](auto& c) -> auto& { return c.operation.unbalance; }, non_negative()),
+      boolean(
+          "operation.gravity", "add the rotor weight -m g to Fy",
+          [](auto& c) -> auto& { return c.operation.gravity; }),
+  };
+}
+
+std::vector<Key> waviness_keys() {
+  Key t = table("waviness", "raceway waviness");
+  t.write_table = write_waviness;
+  std::vector<Key> out{t};
+  for (const std::string race : {"inner", "outer"}) {
+    const std::string name = "waviness." + race;
+    Key entries =
+        described(name, Kind::table_array, D::dimensionless,
+                  "[[" + name + "]] entries: order, amplitude, phase; or table = \"file.csv\"");
+    entries.read = [race](TableReader& r, Case& c, const ReadContext& context) {
+      read_waviness(r, race, c, context);
+    };
+    out.push_back(entries);
+    out.push_back(
+        described(name + ".order", Kind::integer, D::dimensionless, "waves per revolution (>= 1)"));
+    out.push_back(described(name + ".amplitude", Kind::quantity, D::length, "waviness amplitude"));
+    out.push_back(described(name + ".phase", Kind::quantity, D::angle, "waviness phase"));
+    out.push_back(described(name + ".table", Kind::text, D::dimensionless,
+                            "CSV order,amplitude[,phase] (um, deg unless the header says)"));
+  }
+  return out;
+}
+
+std::vector<Key> ball_error_keys() {
+  Key t = table("ball_errors", "ball-size errors");
+  t.read = read_ball_errors;
+  t.write_table = write_ball_errors;
+  return {
+      t,
+      described("ball_errors.values", Kind::list, D::length,
+                "each ball's diameter deviation D_j - D (one per ball)"),
+      described("ball_errors.band", Kind::quantity, D::length,
+                "draw D_j - D uniformly in [-band/2, band/2]"),
+      described("ball_errors.seed", Kind::integer, D::dimensionless,
+                "seed of the band draw (default 1)"),
+  };
+}
+
+std::vector<Key> model_keys() {
+  Key calibration = described("model.calibration", Kind::text, D::dimensionless,
+                              "FE constants for contact = \"calibrated\": the JSON of bearing-fem "
+                              "calibrate");
+  calibration.read = read_calibration_file;
+  calibration.write = [](std::ostream& o, const Case& c) {
+    if (c.model.calibration) o << "calibration = " << quoted(c.model.calibration->path) << "\n";
+  };
+  return {
+      table("model", "model choices"),
+      choice(
+          "model.kind",
+          "2dof | 3dof | balls (seed 004: ball DOFs, cage slip, friction) | quasistatic (seed "
+          "000: equilibrium per output instant, no [solver] method)",
+          kModelKinds, "model", [](auto& c) -> auto& { return c.model.kind; }),
+      choice(
+          "model.contact", "contact law: exact | hamrock-brewe | harris-table | calibrated",
+          kContactLaws, "contact law", [](auto& c) -> auto& { return c.model.contact; }),
+      calibration,
+      boolean(
+          "model.waviness_stiffness",
+          "TVDS: contact stiffness follows the waviness curvature (default false: TVD)",
+          [](auto& c) -> auto& { return c.model.waviness_stiffness; }),
+  };
+}
+
+// [cage] and [ball]: the ball-DOF model's; an error with any other model, which would ignore them.
+Key balls_only_table(const std::string& name, const std::string& help) {
+  Key t = table(name, help);
+  t.before = [name](const TableReader& r, Case& c) {
+    if (c.model.kind != ModelKind::balls && r.present())
+      throw InputError("[" + name + "] is used by model.kind = \"balls\" only (the case has " +
+                       "model.kind = \"" + name_of(kModelKinds, c.model.kind) +
+                       "\"): remove it or set kind");
+  };
+  t.written = [](const Case& c) { return c.model.kind == ModelKind::balls; };
+  return t;
+}
+
+std::vector<Key> cage_keys() {
+  return {
+      balls_only_table("cage", "the cage and the traction at the ball contacts (balls)"),
+      quantity(
+          "cage.slip", D::dimensionless,
+          "balls: cage slip s_c in [0, 1), cage at (1 - s_c) x its pure-rolling speed "
+          "(default 0)",
+          [](auto& c) -> auto& { return c.cage.slip; },
+          within(0, 1, false, true, "must lie in [0, 1) (0: pure rolling; 0.02: 2 %)")),
+      quantity(
+          "cage.friction", D::dimensionless,
+          "balls: traction coefficient mu_m reached at cage.slide_speed (default 0.01)",
+          [](auto& c) -> auto& { return c.cage.friction; },
+          within(0, 1, false, false, "must lie in [0, 1] (0: no friction)")),
+      quantity(
+          "cage.slide_speed", D::velocity,
+          "balls: sliding speed where traction saturates (default 0.1 m/s)",
+          [](auto& c) -> auto& { return c.cage.slide_speed; },
+          within(0, 100, true, false, "must lie in (0, 100 m/s]")),
+  };
+}
+
+std::vector<Key> ball_keys() {
+  return {
+      balls_only_table("ball", "each ball's dynamics (balls)"),
+      quantity(
+          "ball.mass", D::mass, "balls: ball mass (default: density x pi D^3/6)",
+          [](auto& c) -> auto& { return c.ball.mass; }, positive("must be positive"),
+          [](const Case& c) {
+            const double D = c.bearing.ball_diameter;
+            return c.bearing.ball.density * pi * D * D * D / 6.0;
+          }),
+      quantity(
+          "ball.inertia", D::inertia, "balls: ball moment of inertia (default: mass x D^2/10)",
+          [](auto& c) -> auto& { return c.ball.inertia; }, positive("must be positive"),
+          [](const Case& c) {
+            const double D = c.bearing.ball_diameter;
+            return c.ball.mass * D * D / 10.0;
+          }),
+      quantity(
+          "ball.damping", D::damping,
+          "balls: damping of each ball's radial motion (default: rotor.damping)",
+          [](auto& c) -> auto& { return c.ball.damping; }, non_negative(),
+          [](const Case& c) { return c.rotor.damping; }),
+      boolean(
+          "ball.centrifugal",
+          "balls: centrifugal load m_b w_cage^2 d_m/2 on each ball (default true)",
+          [](auto& c) -> auto& { return c.ball.centrifugal; }),
+  };
+}
+
+std::vector<Key> solver_keys() {
+  Key t = table("solver", "time integration");
+  t.after = check_solver_times;
+  return {
+      t,
+      choice(
+          "solver.method", "rk4 | rkf45 | rk8pd | newmark | bdf", kIntegratorMethods, "method",
+          [](auto& c) -> auto& { return c.solver.method; }),
+      quantity(
+          "solver.dt", D::time, "time step, or first step (default 5 us)",
+          [](auto& c) -> auto& { return c.solver.dt; },
+          within(0, 1e-3, true, false, "must lie in (0, 1 ms]; the Hertz contacts need a few us")),
+      quantity(
+          "solver.duration", D::time, "simulated time (default 1.2 s)",
+          [](auto& c) -> auto& { return c.solver.duration; },
+          within(0, 1000, true, false, "must lie in (0, 1000 s]")),
+      quantity(
+          "solver.transient", D::time, "discarded before statistics (default 0.2 s)",
+          [](auto& c) -> auto& { return c.solver.transient; }),
+      quantity(
+          "solver.tolerance", D::dimensionless,
+          "relative tolerance, adaptive/bdf/newmark (default 1e-6)",
+          [](auto& c) -> auto& { return c.solver.tolerance; },
+          within(0, 0.1, true, false, "must lie in (0, 0.1]")),
+      quantity(
+          "solver.output_rate", D::frequency, "samples written per second (20 kHz)",
+          [](auto& c) -> auto& { return c.solver.output_rate; },
+          within(0, 1e7, true, false, "must lie in (0, 10 MHz]")),
+      quantity(
+          "solver.max_displacement", D::length,
+          "blow-up bound on the ring displacement (default 1 mm)",
+          [](auto& c) -> auto& { return c.solver.max_displacement; }, positive("must be positive")),
+  };
+}
+
+std::vector<Key> output_keys() {
+  Key dynamics = boolean(
+      "output.ball_dynamics",
+      "balls: write each ball's spin wb [rad/s], outer load Qo [N], friction Fi, Fo [N]",
+      [](auto& c) -> auto& { return c.output.ball_dynamics; });
+  dynamics.check = [](const Case& c) {
+    if (c.output.ball_dynamics && c.model.kind != ModelKind::balls)
+      throw InputError(
+          "output.ball_dynamics = true: the spin, outer load and friction channels "
+          "need model.kind = \"balls\" (the case has \"" +
+          std::string(name_of(kModelKinds, c.model.kind)) + "\")");
+  };
+  return {
+      table("output", "what run writes"),
+      boolean(
+          "output.ball_loads", "write each ball's load Q1..QZ",
+          [](auto& c) -> auto& { return c.output.ball_loads; }),
+      boolean(
+          "output.ball_motion",
+          "write each ball centre's radial displacement r1..rZ [m] and velocity vr1..vrZ [m/s]",
+          [](auto& c) -> auto& { return c.output.ball_motion; }),
+      boolean(
+          "output.ball_approach",
+          "write each ball's approach d1..dZ [m] (positive: elastic approach; negative: gap)",
+          [](auto& c) -> auto& { return c.output.ball_approach; }),
+      dynamics,
+      choice(
+          "output.window", "hann | flattop | rectangular", kWindows, "window",
+          [](auto& c) -> auto& { return c.output.window; }),
+      integer(
+          "output.peaks", "peaks listed per channel (default 10)",
+          [](auto& c) -> auto& { return c.output.peaks; },
+          within(0, 1000, false, false, "allowed 0 to 1000")),
+  };
+}
+
+std::vector<Key> acoustics_keys() {
+  Key t = table("acoustics", "sound at microphones");
+  // The table's presence turns the sound-pressure outputs on.
+  t.before = [](const TableReader& r, Case& c) { c.acoustics.enabled = r.present(); };
+  t.after = check_acoustics;
+  t.written = [](const Case& c) { return c.acoustics.enabled; };
+  Key microphones =
+      described("acoustics.microphones", Kind::points, D::length,
+                "[[r, angle], ...] in the bearing plane from the bearing centre, angle from +x "
+                "towards +y");
+  microphones.read = [](TableReader& r, Case& c, const ReadContext&) {
+    if (const auto v = r.points("microphones")) c.acoustics.microphones = *v;
+  };
+  microphones.write = write_microphones;
+  return {
+      t,
+      choice(
+          "acoustics.ring_source", "inner ring as: cylinder-dipole (default) | paper | none",
+          kRingSources, "ring source", [](auto& c) -> auto& { return c.acoustics.ring_source; }),
+      choice(
+          "acoustics.ball_source",
+          "each ball as: oscillating-sphere (default) | pulsating-sphere | paper | none",
+          kBallSources, "ball source", [](auto& c) -> auto& { return c.acoustics.ball_source; }),
+      choice(
+          "acoustics.summation",
+          "coherent (default: sum of pressures) | energetic (seed 000: sqrt of summed squares)",
+          kSummations, "summation", [](auto& c) -> auto& { return c.acoustics.summation; }),
+      microphones,
+      quantity(
+          "acoustics.ring_radius", D::length,
+          "radiating radius of the inner ring (default: inner raceway radius (d_m - D)/2)",
+          [](auto& c) -> auto& { return c.acoustics.ring_radius; }, {},
+          [](const Case& c) { return 0.5 * c.bearing.inner_raceway_diameter(); }),
+      quantity(
+          "acoustics.density", D::density, "air density (default 1.204 kg/m^3)",
+          [](auto& c) -> auto& { return c.acoustics.density; },
+          within(0, 2e4, true, false, "must lie in (0, 20000 kg/m^3]")),
+      quantity(
+          "acoustics.sound_speed", D::velocity, "speed of sound (default 343.2 m/s)",
+          [](auto& c) -> auto& { return c.acoustics.sound_speed; },
+          within(0, 1e4, true, false, "must lie in (0, 10000 m/s]")),
+  };
+}
+
+std::vector<Key> all_keys() {
+  std::vector<Key> out;
+  for (auto part :
+       {bearing_keys, material_keys, rotor_keys, operation_keys, waviness_keys, ball_error_keys,
+        model_keys, cage_keys, ball_keys, solver_keys, output_keys, acoustics_keys})
+    for (Key& k : part()) out.push_back(std::move(k));
+  return out;
+}
+
+}  // namespace
+
+const std::vector<Key>& keys() {
+  static const std::vector<Key> all = all_keys();
+  return all;
+}
+
+}  // namespace bearing::case_schema

@@ -1,0 +1,36 @@
+#pragma once
+// Private to the case schema: the tables whose keys need more than one value each — the bearing
+// preset, waviness entries (or a CSV table), ball-size errors (given or drawn), the calibration
+// file, and the rules that tie the [solver] and [acoustics] keys together.
+
+#include <ostream>
+#include <string>
+
+#include "case_schema.h"
+
+namespace bearing::case_schema {
+
+/// bearing.preset: the catalogue bearing that the other [bearing] keys override.
+void read_preset(TableReader& r, Case& c, const ReadContext& context);
+
+/// [[waviness.<race>]] entries: order, amplitude, phase, or table = "file.csv".
+void read_waviness(TableReader& parent, const std::string& race, Case& c,
+                   const ReadContext& context);
+void write_waviness(std::ostream& o, const Case& c);
+
+/// [ball_errors]: values per ball, or a band drawn with a seed.
+void read_ball_errors(TableReader& r, Case& c, const ReadContext& context);
+void write_ball_errors(std::ostream& o, const Case& c);
+
+/// model.calibration: read and checked against the bearing now, so a calibration for another
+/// bearing never reaches a model.
+void read_calibration_file(TableReader& r, Case& c, const ReadContext& context);
+
+/// solver.transient against solver.duration, and the number of output samples.
+void check_solver_times(Case& c);
+
+/// The microphones against the sources, and that something radiates.
+void check_acoustics(Case& c);
+void write_microphones(std::ostream& o, const Case& c);
+
+}  // namespace bearing::case_schema
