@@ -12,7 +12,6 @@
 #include "bearing/acoustics/pressure.h"
 #include "bearing/acoustics/sources.h"
 #include "bearing/errors.h"
-#include "bearing/simulation.h"
 #include "bearing/units.h"
 
 namespace bearing {
@@ -58,12 +57,13 @@ std::optional<double> level(double p_rms, bool present) {
 
 }  // namespace
 
-BearingNoise bearing_noise(const Case& c, const Response& response, double cage_speed) {
-  const AcousticsOptions& ac = c.acoustics;
+BearingNoise radiate(const Response& response, const AcousticsOptions& ac, const Bearing& bearing,
+                     const RunKinematics& kinematics) {
   if (!ac.enabled) throw InputError("acoustics: the case has no [acoustics] table");
   const Air air{ac.density, ac.sound_speed};
   const Summation summation = ac.summation;
-  const double rate = c.solver.output_rate;
+  const double rate = response.rate;
+  const double cage_speed = kinematics.cage_speed;
 
   BearingNoise out;
   out.time.assign(response.time.begin() + static_cast<std::ptrdiff_t>(response.first_steady),
@@ -86,10 +86,10 @@ BearingNoise bearing_noise(const Case& c, const Response& response, double cage_
   }
   std::unique_ptr<RadialSeriesSource> ball;
   std::optional<PeriodicInterpolator> interpolator;  // the balls' delays, one table for all
-  const int Z = c.bearing.balls;
+  const int Z = bearing.balls;
   std::vector<std::vector<double>> radial, radial_velocity;
   if (balls_on) {
-    ball = make_series_source(source_model_name(ac.ball_source), 0.5 * c.bearing.ball_diameter, air,
+    ball = make_series_source(source_model_name(ac.ball_source), 0.5 * bearing.ball_diameter, air,
                               "acoustics.ball_source");
     interpolator.emplace();
     for (int j = 0; j < Z; ++j) {
@@ -126,7 +126,7 @@ BearingNoise bearing_noise(const Case& c, const Response& response, double cage_
       double nearest = std::numeric_limits<double>::infinity();
       const double a = ball->radius();
       for (int j = 0; j < Z; ++j) {
-        const SourcePath path = ball_path(lv.position, 0.5 * c.bearing.pitch_diameter,
+        const SourcePath path = ball_path(lv.position, 0.5 * bearing.pitch_diameter,
                                           2 * kPi * j / Z, cage_speed, out.time, radial[j]);
         const auto closest = std::min_element(path.distance.begin(), path.distance.end());
         if (*closest <= a) {
@@ -136,8 +136,8 @@ BearingNoise bearing_noise(const Case& c, const Response& response, double cage_
                            "ball " +
                            std::to_string(j + 1) + " at t = " + format_number(out.time[k]) +
                            " s (" + mm(*closest) + " from its centre, radius " + mm(a) +
-                           "); the balls sweep radii " + mm(ball_annulus(c.bearing).x()) + " … " +
-                           mm(ball_annulus(c.bearing).y()));
+                           "); the balls sweep radii " + mm(ball_annulus(bearing).x()) + " … " +
+                           mm(ball_annulus(bearing).y()));
         }
         nearest = std::min(nearest, *closest - a);
         each.push_back(radiate_moving(*ball, radial_velocity[j], rate, path, fft, *interpolator));

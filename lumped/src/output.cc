@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "bearing/acoustics/sources.h"
+#include "bearing/constants.h"
 #include "bearing/decimal.h"
 #include "bearing/errors.h"
 #include "bearing/info_report.h"
@@ -23,6 +24,11 @@ namespace bearing {
 namespace fs = std::filesystem;
 
 namespace {
+
+// The run has a cage of its own (the [cage] table's kinds): its slip, speed and traction.
+bool has_cage(const Case& c) {
+  return model_descriptor(c.model.kind).owns("cage");
+}
 
 // Significant digits of the numbers in response.csv and spectrum.csv: a relative resolution of
 // 5e-12, far below the integrators' error, and the same text as printf("%.12g").
@@ -115,10 +121,12 @@ void write_table(const fs::path& path, const std::string& x_name, const std::vec
 }
 
 void write_response_csv(const fs::path& path, const Response& r) {
+  std::vector<std::string> names;
+  for (const Channel& ch : r.channels) names.push_back(ch.name);
   write_table(
-      path, "t", r.time, r.channels, [&](std::size_t i, std::size_t k) { return r.values[i][k]; },
+      path, "t", r.time, names, [&](std::size_t i, std::size_t k) { return r.values[i][k]; },
       [&](std::size_t i, std::size_t k) {
-        return "response " + r.channels[i] + " at t = " + std::to_string(r.time[k]) + " s";
+        return "response " + r.channels[i].name + " at t = " + std::to_string(r.time[k]) + " s";
       });
 }
 
@@ -212,9 +220,9 @@ nlohmann::json summary_json(const Case& c, const SimulationResult& r, const RunS
   j["frequencies"] = {
       {"shaft", f.shaft}, {"ftf", f.ftf}, {"bpfo", f.bpfo}, {"bpfi", f.bpfi}, {"bsf", f.bsf}};
   // The ball-DOF model's cage as it ran: the frequencies above already turn at ω_ca.
-  if (c.model.kind == ModelKind::balls)
+  if (has_cage(c))
     j["cage"] = {{"slip", c.cage.slip},
-                 {"speed", 2 * 3.14159265358979323846 * f.ftf},
+                 {"speed", r.cage_speed},
                  {"friction", c.cage.friction},
                  {"slide_speed", c.cage.slide_speed},
                  {"ball_mass", c.ball.mass},
@@ -227,7 +235,7 @@ nlohmann::json summary_json(const Case& c, const SimulationResult& r, const RunS
     const auto& st = ch.statistics;
     j["channels"][ch.name] = {{"mean", st.mean},         {"rms", st.rms},     {"ptp", st.ptp},
                               {"kurtosis", st.kurtosis}, {"crest", st.crest}, {"unit", ch.unit}};
-    if (is_ball_channel(ch.name)) continue;
+    if (ch.group == ChannelGroup::ball) continue;
     json peaks = json::array();
     for (const auto& p : ch.peaks)
       peaks.push_back({{"frequency", p.frequency}, {"amplitude", p.amplitude}, {"label", p.label}});
@@ -271,7 +279,7 @@ nlohmann::json summary_json(const Case& c, const SimulationResult& r, const RunS
     j["units"]["solver.smooth_load"] = "N";
   }
   if (c.model.calibration) j["units"]["case.calibration.load_range"] = "N";
-  if (c.model.kind == ModelKind::balls) {
+  if (has_cage(c)) {
     j["units"]["cage.speed"] = "rad/s";
     j["units"]["cage.slide_speed"] = "m/s";
     j["units"]["cage.ball_mass"] = "kg";
@@ -305,12 +313,12 @@ std::string summary_text(const Case& c, const SimulationResult& r, const RunSumm
       "Frequencies: shaft %.3f Hz, FTF %.3f Hz, BPFO %.3f Hz, BPFI %.3f Hz, BSF %.3f Hz\n", f.shaft,
       f.ftf, f.bpfo, f.bpfi, f.bsf);
   o << buf;
-  if (c.model.kind == ModelKind::balls) {
+  if (has_cage(c)) {
     std::snprintf(buf, sizeof buf,
                   "Cage: slip %.4g %% (speed %.4g rad/s); traction mu_m %.4g at %.4g m/s; ball "
                   "%.4g g, %.4g kg m^2, damping %.4g N s/m, centrifugal %s\n",
-                  100 * c.cage.slip, 2 * 3.14159265358979323846 * f.ftf, c.cage.friction,
-                  c.cage.slide_speed, 1e3 * c.ball.mass, c.ball.inertia, c.ball.damping,
+                  100 * c.cage.slip, r.cage_speed, c.cage.friction, c.cage.slide_speed,
+                  1e3 * c.ball.mass, c.ball.inertia, c.ball.damping,
                   c.ball.centrifugal ? "on" : "off");
     o << buf;
   }
@@ -318,7 +326,7 @@ std::string summary_text(const Case& c, const SimulationResult& r, const RunSumm
                 c.solver.duration - c.solver.transient, c.solver.transient);
   o << buf;
   for (const auto& ch : s.channels) {
-    if (is_ball_channel(ch.name)) continue;
+    if (ch.group == ChannelGroup::ball) continue;
     const auto& st = ch.statistics;
     std::snprintf(buf, sizeof buf,
                   "  %-3s mean %11.4g  rms %11.4g  ptp %11.4g %-6s kurtosis %6.3f  crest %6.3f",
@@ -364,7 +372,7 @@ std::string summary_text(const Case& c, const SimulationResult& r, const RunSumm
     for (std::size_t i = 0; i < s.noise->microphones.size(); ++i) {
       const MicrophoneLevels& m = s.noise->microphones[i];
       std::snprintf(buf, sizeof buf, "  microphone %zu at %.4g mm, %.4g deg:", i + 1,
-                    m.microphone.radius * 1e3, m.microphone.angle * 180 / 3.14159265358979323846);
+                    m.microphone.radius * 1e3, m.microphone.angle * 180 / pi);
       o << buf << "  total " << db(m.spl_total, true) << "  ring " << db(m.spl_ring, ring)
         << "  balls " << db(m.spl_balls, balls);
       std::snprintf(buf, sizeof buf, "  (p_rms %.3g Pa)\n", m.p_rms);

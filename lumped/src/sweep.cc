@@ -162,7 +162,7 @@ std::string sweep_csv(const std::vector<SweepAxis>& axes, const std::vector<Swee
   for (const auto& r : rows)
     if (r.ok) {
       for (const auto& ch : r.channels)
-        if (!is_ball_channel(ch.name)) channels.push_back(ch.name);
+        if (ch.group == ChannelGroup::ring) channels.push_back(ch.name);
       microphones = r.microphones.size();
       break;
     }

@@ -323,11 +323,12 @@ TEST(BallDynamics, WritesPerBallChannelsAndTheCageUsed) {
     for (int j = 1; j <= 7; ++j) {
       const std::string name = stem + std::to_string(j);
       EXPECT_NO_THROW(r.response.channel(name)) << name;
-      EXPECT_TRUE(is_ball_channel(name)) << name;
+      const Channel& ch = r.response.channels[r.response.index(name)];
+      EXPECT_EQ(ch.group, ChannelGroup::ball) << name;
+      EXPECT_EQ(ch.index, j - 1) << name;
     }
-  EXPECT_FALSE(is_ball_channel("x"));
-  EXPECT_FALSE(is_ball_channel("vx"));
-  EXPECT_FALSE(is_ball_channel("Qo"));
+  EXPECT_EQ(r.response.channels[r.response.index("vx")].group, ChannelGroup::ring);
+  EXPECT_THROW(r.response.index("Qo"), std::out_of_range);
   const RunSummary s = summarize(c, r);
   const auto j = summary_json(c, r, s);
   EXPECT_EQ(j["cage"]["slip"].get<double>(), 0.03);

@@ -81,19 +81,8 @@ struct ModelOptions {
   bool waviness_stiffness = false;  ///< TVDS (seed 002): K follows the waviness curvature
 };
 
-/// Time integration. Defaults: RK4 at 5 µs (seeds 002/003) for 1.2 s, the first 0.2 s discarded
-/// as transient, output at 20 kHz.
-struct SolverOptions {
-  IntegratorMethod method = IntegratorMethod::rk4;
-  double dt = 5e-6;        ///< step (fixed-step methods) or first step [s]
-  double duration = 1.2;   ///< simulated time [s]
-  double transient = 0.2;  ///< discarded before statistics and spectra [s]
-  /// Relative tolerance (adaptive, bdf, Newton) [-]; the absolute one on displacements is
-  /// tolerance × max(|q0|, P_d/2, 1 um).
-  double tolerance = 1e-6;
-  double output_rate = 20000.0;    ///< samples per second written [Hz]
-  double max_displacement = 1e-3;  ///< blow-up bound on the ring displacement [m]
-};
+/// [solver]: the integration and the output times (solvers/integrator.h).
+using SolverOptions = SolverSettings;
 
 /// What `run` writes besides the ring's channels.
 struct OutputOptions {

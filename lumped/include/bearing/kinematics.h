@@ -13,6 +13,14 @@ struct BearingFrequencies {
   double bsf = 0;    ///< ball spin frequency (relative to the cage) [Hz]
 };
 
+/// The kinematics a run turns at: its bearing frequencies, and the cage speed and contact angle of
+/// its model (with cage slip and under an axial load, not the free pure-rolling ones).
+struct RunKinematics {
+  BearingFrequencies frequencies;  ///< [Hz]
+  double cage_speed = 0;           ///< ω_ca, as the model's balls turn [rad/s]
+  double contact_angle = 0;        ///< [rad]
+};
+
 /// Cage angular speed for pure rolling [rad/s]:
 /// ω_c = ½ ω_i (1 − D cos α / d_m) + ½ ω_o (1 + D cos α / d_m).
 double cage_speed(const Bearing& b, double inner_speed, double outer_speed = 0.0);

@@ -22,11 +22,12 @@
 
 #include <Eigen/Dense>
 
-#include "bearing/case_file.h"
+#include "bearing/acoustics/acoustics_options.h"
+#include "bearing/bearing.h"
+#include "bearing/kinematics.h"
+#include "bearing/response.h"
 
 namespace bearing {
-
-struct Response;
 
 /// Levels at one microphone.
 struct MicrophoneLevels {
@@ -51,10 +52,11 @@ struct BearingNoise {
   Eigen::Vector2d ring_centre = Eigen::Vector2d::Zero();  ///< the ring source's position [m]
 };
 
-/// The sound of a run at every microphone of c.acoustics (which must be enabled). `response`
-/// must hold vx, vy and, with a ball source, r1…rZ, vr1…vrZ; `cage_speed` ω_c [rad/s] is the
-/// run's. Throws InputError if a microphone lies inside the ring or inside a ball at some
-/// instant (naming acoustics.microphones[i]).
-BearingNoise bearing_noise(const Case& c, const Response& response, double cage_speed);
+/// The sound of a run at every microphone of `acoustics` (which must be enabled). `response`
+/// must hold vx, vy and, with a ball source, r1…rZ, vr1…vrZ; the balls turn at
+/// kinematics.cage_speed, the run's. Throws InputError if a microphone lies inside the ring or
+/// inside a ball at some instant (naming acoustics.microphones[i]).
+BearingNoise radiate(const Response& response, const AcousticsOptions& acoustics,
+                     const Bearing& bearing, const RunKinematics& kinematics);
 
 }  // namespace bearing

@@ -1,85 +1,66 @@
 #pragma once
-// `bearing-sim run`: a case through model and integrator into a response (time series), and the
-// post-processing of that response into statistics, spectra and named peaks.
+// `bearing-sim run` as pipeline stages, each with its own inputs and outputs:
+//
+//   Case ──run_settings──▶ RunSettings
+//   simulate(kind, ModelInputs, SolverSettings, OutputRequest) ──▶ SimulationResult (Response)
+//   analyse(Response, frequencies, AnalysisSettings)           ──▶ RunSummary
+//   radiate(Response, AcousticsOptions, Bearing, RunKinematics) ──▶ BearingNoise
+//
+// summarize() is analyse() plus radiate() for a case.
 
-#include <memory>
 #include <optional>
-#include <string>
-#include <vector>
 
+#include "bearing/analysis.h"
 #include "bearing/case_file.h"
 #include "bearing/contact.h"
 #include "bearing/kinematics.h"
-#include "bearing/models/bearing_model.h"
 #include "bearing/models/model_inputs.h"
-#include "bearing/models/quasi_static.h"
+#include "bearing/models/model_registry.h"
 #include "bearing/noise.h"
-#include "bearing/signal/peaks.h"
-#include "bearing/signal/spectrum.h"
-#include "bearing/signal/statistics.h"
+#include "bearing/response.h"
 #include "bearing/solvers/integrator.h"
 
 namespace bearing {
 
-/// Time series of a run, sampled at the case's output rate from t = 0.
-struct Response {
-  /// "x","y","vx","vy","ax","ay" (+ "z","vz","az"), then per ball "Q1"… (output.ball_loads),
-  /// "d1"… (output.ball_approach), "r1"…, "vr1"… (output.ball_motion)
-  std::vector<std::string> channels;
-  std::vector<std::string> units;           ///< SI unit of each channel
-  std::vector<double> time;                 ///< [s]
-  std::vector<std::vector<double>> values;  ///< values[channel][sample], SI
-  std::size_t first_steady = 0;             ///< first sample at or after solver.transient
-
-  /// The samples of one channel; throws std::out_of_range for an unknown name.
-  const std::vector<double>& channel(const std::string& name) const;
-  /// The analysis window of one channel: the half-open interval [transient, duration), exactly
-  /// (duration − transient)·rate samples, so spectral bins fall on multiples of
-  /// 1/(duration − transient) (the last sample, at t = duration, is written but not analysed).
-  std::vector<double> steady(const std::string& name) const;
+/// Everything one run is made of, mapped from a case once.
+struct RunSettings {
+  ModelKind kind = ModelKind::two_dof;
+  ModelInputs model;  ///< excitations resolved, contact constants computed
+  SolverSettings solver;
+  OutputRequest output;
+  AnalysisSettings analysis;
+  AcousticsOptions acoustics;  ///< enabled only with an [acoustics] table
 };
+
+/// The one Case → settings mapper.
+RunSettings run_settings(const Case& c);
+
+/// The model inputs a case describes (run_settings(c).model).
+ModelInputs model_inputs(const Case& c);
+
+/// The dynamic model of `c.model.kind` (InputError for a kind without equations of motion).
+std::unique_ptr<BearingModel> make_model(const Case& c);
 
 struct SimulationResult {
   Response response;
   IntegrationStats stats;                        ///< dynamic models; quasistatic: steps only
   std::optional<QuasiStaticStats> quasi_static;  ///< quasistatic only
   ContactConstants contact;
-  BearingFrequencies frequencies;  ///< with the loaded contact angle for a preloaded 3-DOF case
+  BearingFrequencies frequencies;  ///< at the model's contact angle, with cage slip
+  double cage_speed = 0;           ///< ω_ca of the model's balls [rad/s]
+  /// The frequencies and the model's cage speed and contact angle together.
+  RunKinematics kinematics() const;
 };
 
-/// The model inputs a case describes (excitations resolved, contact constants computed).
-ModelInputs model_inputs(const Case& c);
+/// Runs a model kind (model_registry.h) through the output times. Throws InputError (bad
+/// settings) or SolverError (blow-up, no convergence).
+SimulationResult simulate(ModelKind kind, const ModelInputs& inputs, const SolverSettings& solver,
+                          const OutputRequest& output, const Progress& progress = {});
 
-/// The dynamic model of `c.model.kind` ("2dof" or "3dof"; InputError for "quasistatic", which
-/// make_quasi_static_model(model_inputs(c)) builds).
-std::unique_ptr<BearingModel> make_model(const Case& c);
-
-/// Whether a response channel belongs to one ball (Q1…, d1…, r1…, vr1…): statistics only, no spectrum
-/// or peaks (the ring's channels get those).
-bool is_ball_channel(const std::string& name);
-
-/// Runs the case: a dynamic model (2dof, 3dof) through the case's integrator, or the quasi-static
-/// equilibrium followed through the output times (solver.method, dt and tolerance unused). Throws
-/// InputError (bad settings) or SolverError (blow-up, no convergence).
+/// simulate() with a case's settings.
 SimulationResult simulate(const Case& c, const Progress& progress = {});
 
-struct ChannelSummary {
-  std::string name;
-  std::string unit;
-  ChannelStatistics statistics;  ///< over the post-transient window
-  std::vector<Peak> peaks;       ///< largest first (ring channels only)
-};
-
-struct RunSummary {
-  std::vector<ChannelSummary> channels;        ///< in response order
-  std::vector<std::string> spectrum_channels;  ///< channels with a spectrum (the ring's)
-  std::vector<Spectrum> spectra;               ///< one per spectrum channel
-  std::optional<BearingNoise> noise;           ///< sound at the microphones ([acoustics] only)
-};
-
-/// Statistics of every channel and spectra and peaks of the ring's channels (not the ball
-/// loads), over the post-transient window, with the case's window and peak count; and, with an
-/// [acoustics] table, the sound at the microphones (bearing_noise).
+/// analyse() with the case's window and peak count, and, with an [acoustics] table, radiate().
 RunSummary summarize(const Case& c, const SimulationResult& result);
 
 }  // namespace bearing

@@ -5,6 +5,7 @@
 // case_rules.cc.
 
 #include "bearing/constants.h"
+#include "bearing/models/model_registry.h"
 #include "case_rules.h"
 #include "key_builders.h"
 
@@ -224,22 +225,28 @@ std::vector<Key> model_keys() {
   };
 }
 
-// [cage] and [ball]: the ball-DOF model's; an error with any other model, which would ignore them.
-Key balls_only_table(const std::string& name, const std::string& help) {
+// A table one model kind owns (model_registry.h); an error with any other kind, which would
+// ignore it.
+Key owned_table(const std::string& name, const std::string& help) {
   Key t = table(name, help);
   t.before = [name](const TableReader& r, Case& c) {
-    if (c.model.kind != ModelKind::balls && r.present())
-      throw InputError("[" + name + "] is used by model.kind = \"balls\" only (the case has " +
-                       "model.kind = \"" + name_of(kModelKinds, c.model.kind) +
-                       "\"): remove it or set kind");
+    if (!r.present() || model_descriptor(c.model.kind).owns(name)) return;
+    std::string owners;
+    for (const ModelDescriptor& d : model_registry())
+      if (d.owns(name))
+        owners += std::string(owners.empty() ? "" : " or ") + "model.kind = \"" +
+                  name_of(kModelKinds, d.kind) + "\"";
+    throw InputError("[" + name + "] is used by " + owners + " only (the case has " +
+                     "model.kind = \"" + name_of(kModelKinds, c.model.kind) +
+                     "\"): remove it or set kind");
   };
-  t.written = [](const Case& c) { return c.model.kind == ModelKind::balls; };
+  t.written = [name](const Case& c) { return model_descriptor(c.model.kind).owns(name); };
   return t;
 }
 
 std::vector<Key> cage_keys() {
   return {
-      balls_only_table("cage", "the cage and the traction at the ball contacts (balls)"),
+      owned_table("cage", "the cage and the traction at the ball contacts (balls)"),
       quantity(
           "cage.slip", D::dimensionless,
           "balls: cage slip s_c in [0, 1), cage at (1 - s_c) x its pure-rolling speed "
@@ -261,7 +268,7 @@ std::vector<Key> cage_keys() {
 
 std::vector<Key> ball_keys() {
   return {
-      balls_only_table("ball", "each ball's dynamics (balls)"),
+      owned_table("ball", "each ball's dynamics (balls)"),
       quantity(
           "ball.mass", D::mass, "balls: ball mass (default: density x pi D^3/6)",
           [](auto& c) -> auto& { return c.ball.mass; }, positive("must be positive"),
@@ -329,7 +336,7 @@ std::vector<Key> output_keys() {
       "balls: write each ball's spin wb [rad/s], outer load Qo [N], friction Fi, Fo [N]",
       [](auto& c) -> auto& { return c.output.ball_dynamics; });
   dynamics.check = [](const Case& c) {
-    if (c.output.ball_dynamics && c.model.kind != ModelKind::balls)
+    if (c.output.ball_dynamics && !model_descriptor(c.model.kind).ball_dofs)
       throw InputError(
           "output.ball_dynamics = true: the spin, outer load and friction channels "
           "need model.kind = \"balls\" (the case has \"" +

@@ -192,7 +192,7 @@ void check_acoustics(Case& c) {
           ac.ring_radius, Dimension::length,
           "must lie in (0, d_m/2 = " + fmt_si(0.5 * b.pitch_diameter, Dimension::length) + ")");
   // A microphone must lie outside every source: outside the ring, and outside the annulus the
-  // balls sweep (its radii move by the micrometres of the run; bearing_noise checks again).
+  // balls sweep (its radii move by the micrometres of the run; radiate checks again).
   const double swept_in = 0.5 * (b.pitch_diameter - b.ball_diameter);
   const double swept_out = 0.5 * (b.pitch_diameter + b.ball_diameter);
   for (std::size_t i = 0; i < ac.microphones.size(); ++i) {

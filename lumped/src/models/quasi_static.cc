@@ -81,6 +81,7 @@ class QuasiStatic final : public QuasiStaticModel {
   }
 
   int balls() const override { return set_.balls(); }
+  double cage_speed() const override { return set_.cage_speed(); }
   double minimum_load() const override { return minimum_load_; }
   double smooth_load() const override { return smooth_load_; }
   Eigen::Vector2d static_position() const override { return static_; }

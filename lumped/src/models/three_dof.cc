@@ -173,6 +173,7 @@ class ThreeDofModel final : public BearingModel {
 
   std::vector<std::string> dof_names() const override { return {"x", "y", "z"}; }
   int balls() const override { return set_.balls(); }
+  double cage_speed() const override { return set_.cage_speed(); }
 
   void ball_loads(double t, const double* q, double* loads) const override {
     set_.ball_loads(

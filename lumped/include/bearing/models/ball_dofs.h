@@ -84,8 +84,6 @@ struct FrictionPower {
 
 class BallDofModel : public BearingModel {
  public:
-  /// The cage speed the model runs at, ω_ca = (1 − s_c) ω_c [rad/s].
-  virtual double cage_speed() const = 0;
   /// The cage slip s_c [-].
   virtual double cage_slip() const = 0;
   /// The constant radial force on each ball [N]: m_b ω_ca² d_m/2 with centrifugal, else 0.

@@ -6,20 +6,15 @@
 #include <string>
 #include <vector>
 
+#include "bearing/models/model_outputs.h"
 #include "bearing/solvers/mechanical_system.h"
 
 namespace bearing {
 
-class BearingModel : public MechanicalSystem {
+/// A model's further DOFs beyond dof_names() (the ball-DOF model's radial positions and spins)
+/// reach the output through the per-ball fields.
+class BearingModel : public MechanicalSystem, public ModelOutputs {
  public:
-  /// Names of the ring's DOFs, the first dof_names().size() DOFs, used as output channel stems:
-  /// {"x", "y"} (2-DOF, ball DOFs), {"x", "y", "z"} (3-DOF). A model's further DOFs (the ball-DOF
-  /// model's radial positions and spins) reach the output through the per-ball channels.
-  virtual std::vector<std::string> dof_names() const = 0;
-
-  /// Number of balls Z.
-  virtual int balls() const = 0;
-
   /// Each ball's contact load Q_j ≥ 0 at (t, q) [N], Z entries (for the ball-DOF model, the
   /// inner-race load).
   virtual void ball_loads(double t, const double* q, double* loads) const = 0;
@@ -57,9 +52,6 @@ class BearingModel : public MechanicalSystem {
     return std::vector<double>(static_cast<std::size_t>(dofs()), 0.0);
   }
 
-  /// Whether the model has ball DOFs, and so ball_dynamics().
-  virtual bool has_ball_dofs() const { return false; }
-
   /// The ball-DOF model's per-ball channels at (t, q, v), Z entries each: the spin ω_b,j relative
   /// to the cage [rad/s], the outer-race load Q_o,j [N] (ball_loads gives the inner one), and the
   /// tangential friction forces on the ball at its inner and outer contact [N], positive in the
@@ -68,6 +60,19 @@ class BearingModel : public MechanicalSystem {
                              double* /*spin*/, double* /*outer_load*/, double* /*friction_inner*/,
                              double* /*friction_outer*/) const {
     throw std::logic_error("ball_dynamics: this model has no ball DOFs");
+  }
+
+  /// The per-ball fields from the calls above.
+  void ball_state(double t, const double* q, const double* v, BallFields fields,
+                  BallState& s) const override {
+    if (has(fields, BallField::load)) ball_loads(t, q, s[BallField::load].data());
+    if (has(fields, BallField::approach)) ball_approaches(t, q, s[BallField::approach].data());
+    if (has(fields, BallField::radial) || has(fields, BallField::radial_velocity))
+      ball_motion(t, q, v, s[BallField::radial].data(), s[BallField::radial_velocity].data());
+    if (has(fields, BallField::spin) || has(fields, BallField::outer_load) ||
+        has(fields, BallField::friction_inner) || has(fields, BallField::friction_outer))
+      ball_dynamics(t, q, v, s[BallField::spin].data(), s[BallField::outer_load].data(),
+                    s[BallField::friction_inner].data(), s[BallField::friction_outer].data());
   }
 };
 

@@ -90,6 +90,8 @@ class QuasiStaticModel {
 
   /// Number of balls Z.
   virtual int balls() const = 0;
+  /// The cage speed ω_c the balls turn at [rad/s].
+  virtual double cage_speed() const = 0;
   /// F_min of the header [N].
   virtual double minimum_load() const = 0;
   /// F_smooth of the header [N].

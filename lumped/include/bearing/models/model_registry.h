@@ -1,0 +1,76 @@
+#pragma once
+// The model kinds (model.kind), one descriptor each: what the kind is built from, whether an
+// integrator runs it, which case tables only it reads, and the contact angle its kinematics use.
+// Adding a model kind is one file with its make function and one row in model_registry.cc.
+
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "bearing/models/bearing_model.h"
+#include "bearing/models/model_inputs.h"
+#include "bearing/models/model_kind.h"
+#include "bearing/models/model_outputs.h"
+#include "bearing/models/quasi_static.h"
+#include "bearing/solvers/integrator.h"
+
+namespace bearing {
+
+/// What a run did: the integrator's counts, or the quasi-static follower's.
+struct RunStats {
+  IntegrationStats integration;                  ///< dynamic models; quasi-static: steps only
+  std::optional<QuasiStaticStats> quasi_static;  ///< quasi-static only
+};
+
+/// A model ready to run through the output times.
+class ModelRun {
+ public:
+  virtual ~ModelRun() = default;
+  /// What the outputs read from the model.
+  virtual const ModelOutputs& outputs() const = 0;
+  /// Calls `observe` at each of `times` (ascending) with the state and its acceleration [SI].
+  /// Throws SolverError (blow-up, no convergence).
+  virtual RunStats run(const std::vector<double>& times, const Observer& observe,
+                       const Progress& progress) const = 0;
+};
+
+struct ModelDescriptor {
+  ModelKind kind;
+  const char* summary;  ///< one line
+  /// The case tables only this kind reads (an error with any other kind).
+  std::vector<std::string> tables;
+  /// Has ball DOFs: the spin, outer-load and friction channels (output.ball_dynamics).
+  bool ball_dofs;
+  /// The contact angle the model's kinematics use [rad]: the free one, or the loaded one of the
+  /// axial static state.
+  double (*contact_angle)(const ModelInputs&);
+  /// A dynamic model (equations of motion): an integrator runs it, [solver] method, dt and
+  /// tolerance apply. nullptr for a kind that runs otherwise (`run`).
+  std::unique_ptr<BearingModel> (*dynamic)(const ModelInputs&) = nullptr;
+  /// How a kind without equations of motion runs (nullptr for a dynamic one).
+  std::unique_ptr<ModelRun> (*run)(const ModelInputs&, const SolverSettings&) = nullptr;
+
+  /// Whether this kind reads the case table `name`.
+  bool owns(const std::string& name) const;
+};
+
+/// Every model kind, in the order of kModelKinds.
+const std::vector<ModelDescriptor>& model_registry();
+
+/// The descriptor of `kind`.
+const ModelDescriptor& model_descriptor(ModelKind kind);
+
+/// The model of `kind` built from `inputs`, ready to run with `solver`. Throws InputError naming
+/// the case key for inputs the model cannot run.
+std::unique_ptr<ModelRun> make_run(ModelKind kind, const ModelInputs& inputs,
+                                   const SolverSettings& solver);
+
+/// A dynamic model through the [solver] integrator (dynamic_run.cc).
+std::unique_ptr<ModelRun> make_dynamic_run(std::unique_ptr<BearingModel> model,
+                                           const ModelInputs& inputs, const SolverSettings& solver);
+/// The quasi-static model followed through the output times (quasi_static_run.cc).
+std::unique_ptr<ModelRun> make_quasi_static_run(const ModelInputs& inputs,
+                                                const SolverSettings& solver);
+
+}  // namespace bearing

@@ -1,0 +1,80 @@
+// One row per model kind (model_registry.h).
+
+#include "bearing/models/model_registry.h"
+
+#include <algorithm>
+#include <stdexcept>
+
+#include "bearing/models/ball_dofs.h"
+#include "bearing/models/three_dof.h"
+#include "bearing/models/two_dof.h"
+
+namespace bearing {
+
+namespace {
+
+double free_angle(const ModelInputs& in) {
+  return in.bearing.contact_angle;
+}
+double loaded_angle(const ModelInputs& in) {
+  return solve_axial_preload(in).contact_angle;
+}
+// The ball-DOF model turns at the 3-DOF model's loaded angle when it carries an axial load.
+double ball_angle(const ModelInputs& in) {
+  return in.axial_load != 0 ? loaded_angle(in) : free_angle(in);
+}
+
+}  // namespace
+
+const std::vector<ModelDescriptor>& model_registry() {
+  static const std::vector<ModelDescriptor> registry{
+      {ModelKind::two_dof,
+       "inner ring x, y (seeds 001-003)",
+       {},
+       false,
+       free_angle,
+       make_two_dof_model},
+      {ModelKind::three_dof,
+       "x, y and the axial z under an axial load or preload (seed 001)",
+       {},
+       false,
+       loaded_angle,
+       make_three_dof_model},
+      {ModelKind::balls,
+       "ball DOFs, cage slip and traction (seed 004)",
+       {"cage", "ball"},
+       true,
+       ball_angle,
+       [](const ModelInputs& in) -> std::unique_ptr<BearingModel> {
+         return make_ball_dof_model(in);
+       }},
+      {ModelKind::quasi_static,
+       "equilibrium per output instant, no inertia (seed 000)",
+       {},
+       false,
+       free_angle,
+       nullptr,
+       make_quasi_static_run},
+  };
+  return registry;
+}
+
+bool ModelDescriptor::owns(const std::string& name) const {
+  return std::find(tables.begin(), tables.end(), name) != tables.end();
+}
+
+std::unique_ptr<ModelRun> make_run(ModelKind kind, const ModelInputs& inputs,
+                                   const SolverSettings& solver) {
+  const ModelDescriptor& d = model_descriptor(kind);
+  if (d.dynamic) return make_dynamic_run(d.dynamic(inputs), inputs, solver);
+  return d.run(inputs, solver);
+}
+
+const ModelDescriptor& model_descriptor(ModelKind kind) {
+  for (const ModelDescriptor& d : model_registry())
+    if (d.kind == kind) return d;
+  throw std::logic_error("model registry: no row for model kind " +
+                         std::string(name_of(kModelKinds, kind)));
+}
+
+}  // namespace bearing
