@@ -14,6 +14,7 @@
 #include <gsl/gsl_roots.h>
 #include <gsl/gsl_sf_ellint.h>
 
+#include "bearing/constants.h"
 #include "bearing/errors.h"
 #include "bearing/hertz.h"
 #include "hertz_internal.h"
@@ -47,9 +48,9 @@ HertzShape hertz_shape_from(double ellipticity, double elliptic_K, double ellipt
   h.elliptic_K = elliptic_K;
   h.elliptic_E = elliptic_E;
   const double k2E = ellipticity * ellipticity * elliptic_E;
-  h.delta_star = (2.0 * elliptic_K / M_PI) * std::cbrt(M_PI / (2.0 * k2E));
-  h.a_star = std::cbrt(2.0 * k2E / M_PI);
-  h.b_star = std::cbrt(2.0 * elliptic_E / (M_PI * ellipticity));
+  h.delta_star = (2.0 * elliptic_K / pi) * std::cbrt(pi / (2.0 * k2E));
+  h.a_star = std::cbrt(2.0 * k2E / pi);
+  h.b_star = std::cbrt(2.0 * elliptic_E / (pi * ellipticity));
   return h;
 }
 
@@ -133,7 +134,7 @@ class ExactHertz final : public HertzSolution {
   HertzShape shape(double f_rho) const override {
     detail::require_curvature_difference(f_rho, name());
     // Sphere on sphere/plane: the F equation is 0/0 at κ = 1; its limit is F = 0.
-    if (f_rho == 0.0) return hertz_shape_from(1.0, M_PI_2, M_PI_2);
+    if (f_rho == 0.0) return hertz_shape_from(1.0, pi / 2, pi / 2);
     const double kappa = solve_ellipticity(f_rho);
     const EllipticPair p = elliptic_integrals(kappa);
     return hertz_shape_from(kappa, p.K, p.E);

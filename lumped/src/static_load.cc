@@ -32,6 +32,7 @@
 #include <utility>
 #include <vector>
 
+#include "bearing/constants.h"
 #include "bearing/errors.h"
 #include "bearing/units.h"
 
@@ -39,7 +40,6 @@ namespace bearing {
 
 namespace {
 
-constexpr double kPi = 3.14159265358979323846264338327950288;
 constexpr double kEps = std::numeric_limits<double>::epsilon();
 
 void validate(int balls, double K, double gap, const Eigen::Vector2d& load,
@@ -218,7 +218,7 @@ StaticLoadResult solve_static_load(int balls, double K, double gap, const Eigen:
   validate(balls, K, gap, load, options);
   const int Z = balls;
   const double n = options.exponent;
-  const double pitch = 2.0 * kPi / Z;
+  const double pitch = two_pi / Z;
 
   StaticLoadResult res;
   res.ball_angles.resize(Z);
@@ -243,11 +243,11 @@ StaticLoadResult solve_static_load(int balls, double K, double gap, const Eigen:
   // (j − jn)·2π/Z, exact up to one rounding, so small projections v·e_j are products, not
   // differences of large numbers.
   const double psi = std::atan2(load.y(), load.x());
-  const long nearest = std::lround(std::remainder(psi - options.phase, 2.0 * kPi) / pitch);
+  const long nearest = std::lround(std::remainder(psi - options.phase, two_pi) / pitch);
   const int jn = static_cast<int>(((nearest % Z) + Z) % Z);
   const double frame = res.ball_angles[jn];
-  const double delta = std::remainder(psi - frame, 2.0 * kPi);  // load angle in the frame
-  auto offset = [&](int j) {                                    // j − jn wrapped to (−Z/2, Z/2]
+  const double delta = std::remainder(psi - frame, two_pi);  // load angle in the frame
+  auto offset = [&](int j) {                                 // j − jn wrapped to (−Z/2, Z/2]
     int dj = ((j - jn) % Z + Z) % Z;
     return dj > Z / 2 ? dj - Z : dj;
   };
@@ -268,7 +268,7 @@ StaticLoadResult solve_static_load(int balls, double K, double gap, const Eigen:
   if (gap > 0) {
     const bool on_ball = std::abs(std::sin(delta)) <= 0.125 * options.tolerance;
     const int side = delta >= 0 ? 1 : -1;
-    const double half = kPi / Z;
+    const double half = pi / Z;
     const double ref_angle = on_ball ? 0.0 : side * half;
     const double ref_radius = on_ball ? gap : gap / std::cos(half);
     u_ref = ref_radius * Eigen::Vector2d(std::cos(ref_angle), std::sin(ref_angle));

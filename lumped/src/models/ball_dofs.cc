@@ -21,6 +21,7 @@
 #include <vector>
 
 #include "ball_set.h"
+#include "bearing/constants.h"
 #include "bearing/errors.h"
 #include "bearing/kinematics.h"
 #include "bearing/models/three_dof.h"
@@ -112,7 +113,7 @@ class BallDofs final : public BallDofModel {
     }
     const double g = D * std::cos(alpha) / dm;
     const double wc = set_.cage_speed();
-    ball_mass_ = in.ball_mass > 0 ? in.ball_mass : b.ball.density * M_PI * D * D * D / 6.0;
+    ball_mass_ = in.ball_mass > 0 ? in.ball_mass : b.ball.density * pi * D * D * D / 6.0;
     ball_inertia_ = in.ball_inertia > 0 ? in.ball_inertia : ball_mass_ * D * D / 10.0;
     ball_damping_ = in.ball_damping;
     lever_ = 0.5 * D * std::cos(alpha);

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "ball_set.h"
+#include "bearing/constants.h"
 #include "bearing/errors.h"
 #include "bearing/kinematics.h"
 #include "bearing/static_load.h"
@@ -249,14 +250,14 @@ class QuasiStatic final : public QuasiStaticModel {
 }  // namespace
 
 double quasi_static_minimum_load(const ModelInputs& in) {
-  const double cos_psi = std::cos(2.0 * M_PI / in.bearing.balls);
+  const double cos_psi = std::cos(two_pi / in.bearing.balls);
   if (cos_psi <= 1e-12) return 0.0;
   const double gap = in.bearing.ball_gap();
   return in.contact.K * std::pow(gap * (1.0 / cos_psi - 1.0), in.contact.exponent);
 }
 
 double quasi_static_smooth_load(const ModelInputs& in) {
-  const double cos_psi = std::cos(2.0 * M_PI / in.bearing.balls);
+  const double cos_psi = std::cos(two_pi / in.bearing.balls);
   if (cos_psi <= 1e-12) return std::numeric_limits<double>::infinity();
   const double waviness = sum_amplitudes(in.inner_waviness) + sum_amplitudes(in.outer_waviness);
   double smaller = 0, larger = 0;  // max ΔD_j, max (−ΔD_j), both ≥ 0
