@@ -52,7 +52,7 @@ class QuasiStatic final : public QuasiStaticModel {
       : set_(in, checked_cage_speed(in)),
         gap_(in.bearing.ball_gap()),
         inner_speed_(in.inner_speed),
-        load_(in.load.x(), in.load.y() - (in.gravity ? in.mass * detail::kGravity : 0.0)),
+        load_(in.load.x(), in.load.y() - (in.gravity ? in.mass * standard_gravity : 0.0)),
         unbalance_force_(in.unbalance * in.inner_speed * in.inner_speed),
         phase_(in.cage_phase),
         minimum_load_(quasi_static_minimum_load(in)),

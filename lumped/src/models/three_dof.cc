@@ -25,6 +25,7 @@
 #include <Eigen/Dense>
 
 #include "ball_set.h"
+#include "bearing/constants.h"
 #include "bearing/kinematics.h"
 #include "bearing/static_load.h"
 #include "groove_geometry.h"
@@ -125,7 +126,7 @@ class ThreeDofModel final : public BearingModel {
         damping_(in.damping),
         axial_damping_(in.axial_damping),
         load_x_(in.load.x()),
-        load_y_(in.load.y() - (in.gravity ? in.mass * detail::kGravity : 0.0)),
+        load_y_(in.load.y() - (in.gravity ? in.mass * standard_gravity : 0.0)),
         load_z_(in.axial_load),
         unbalance_force_(in.unbalance * in.inner_speed * in.inner_speed),
         phase_(in.cage_phase) {}
@@ -300,8 +301,8 @@ std::vector<double> ThreeDofModel::initial_displacement() const {
   // The ball set at t = 0 without excitation.
   detail::BallFrame fr;
   for (int j = 0; j < Z; ++j) {
-    fr.cos_theta[j] = std::cos(phase_ + detail::kTwoPi * j / Z);
-    fr.sin_theta[j] = std::sin(phase_ + detail::kTwoPi * j / Z);
+    fr.cos_theta[j] = std::cos(phase_ + two_pi * j / Z);
+    fr.sin_theta[j] = std::sin(phase_ + two_pi * j / Z);
     fr.excitation[j] = 0.0;
     fr.stiffness[j] = set_.K();
   }
