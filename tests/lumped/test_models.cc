@@ -814,6 +814,21 @@ TEST(ThreeDof, InputErrors) {
   EXPECT_NE(input_error(in, true).find("operation.axial_load"), std::string::npos);
 }
 
+// The axial root search doubles its bracket at most 201 times (numerics::grow_bracket), then
+// reports it as a solver error: a load 600 decades below the contact constant.
+TEST(ThreeDof, AxialLoadOutOfReachIsASolverError) {
+  ModelInputs in = inputs_6308();
+  in.contact.K = 1e300;
+  in.axial_load = 1e-300;
+  try {
+    solve_axial_preload(in);
+    ADD_FAILURE() << "no error";
+  } catch (const SolverError& e) {
+    EXPECT_NE(std::string(e.what()).find("could not bracket the ball approach"), std::string::npos)
+        << e.what();
+  }
+}
+
 }  // namespace
 }  // namespace bearing
 
