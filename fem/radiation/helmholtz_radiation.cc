@@ -83,11 +83,13 @@
 #include <fstream>
 #include <iomanip>
 #include <iostream>
+#include <limits>
 #include <sstream>
 #include <stdexcept>
 
 #include "bearing/constants.h"
 #include "bearing/errors.h"
+#include "bearing/numerics/roots.h"
 
 namespace bearing::fem {
 namespace {
@@ -149,13 +151,13 @@ class PerfectlyMatchedLayer {
   /// monotonically from 0).
   static double growth(double attenuation, double kr0) {
     const double target = attenuation / kr0;
-    double lo = 0, hi = 1;
-    while (std::expm1(hi) - hi < target) hi *= 2;
-    for (int it = 0; it < 200 && hi - lo > 1e-15 * hi; ++it) {
-      const double mid = 0.5 * (lo + hi);
-      (std::expm1(mid) - mid < target ? lo : hi) = mid;
-    }
-    return 0.5 * (lo + hi);
+    const auto below = [&](double g) { return std::expm1(g) - g < target; };
+    // Only hi grows: the bisection starts from [0, hi].
+    const double hi = numerics::grow_bracket(0, 1, below, std::numeric_limits<int>::max()).hi;
+    numerics::BisectionOptions o;
+    o.rel_width = 1e-15;
+    const numerics::Bracket b = numerics::bisect(0, hi, below, o);
+    return 0.5 * (b.lo + b.hi);
   }
 
   double gamma() const { return gamma_; }

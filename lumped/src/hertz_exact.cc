@@ -17,6 +17,7 @@
 #include "bearing/constants.h"
 #include "bearing/errors.h"
 #include "bearing/hertz.h"
+#include "bearing/numerics/roots.h"
 #include "hertz_internal.h"
 
 namespace bearing {
@@ -102,13 +103,11 @@ double solve_ellipticity(double f_rho) {
 
   // Bracket: φ(0) = −ln(1 − F) > 0; double u until φ < 0. For the largest F < 1 in double
   // precision κ ≈ 6e8 (u ≈ 20), so the cap of u = 64 is never reached for valid input.
-  double lo = 0.0;
-  double hi = 1.0;
-  while (root_function(hi, &data) >= 0.0) {
-    lo = hi;
-    hi *= 2.0;
-    if (hi > 64.0) throw SolverError("exact Hertz solution: could not bracket the ellipticity");
-  }
+  const numerics::Bracket b = numerics::grow_bracket(
+      0.0, 1.0, [&](double u) { return root_function(u, &data) >= 0.0; }, 6);
+  if (!b.found) throw SolverError("exact Hertz solution: could not bracket the ellipticity");
+  double lo = b.lo;
+  double hi = b.hi;
 
   std::unique_ptr<gsl_root_fsolver, decltype(&gsl_root_fsolver_free)> solver(
       gsl_root_fsolver_alloc(gsl_root_fsolver_brent), &gsl_root_fsolver_free);

@@ -25,6 +25,7 @@
 #include "bearing/errors.h"
 #include "bearing/kinematics.h"
 #include "bearing/models/three_dof.h"
+#include "bearing/numerics/roots.h"
 #include "bearing/static_load.h"
 #include "bearing/units.h"
 #include "groove_geometry.h"
@@ -428,11 +429,11 @@ class BallDofs final : public BallDofModel {
     const double qmax = at_lo.load_i + centrifugal_along_;
     double hi = lo + std::pow(qmax / fr.outer_stiffness[j], 1.0 / outer_exponent_) + 1e-12;
     if (excess(lo) >= 0) return lo;
-    for (int it = 0; it < 200 && hi - lo > 1e-16; ++it) {
-      const double mid = 0.5 * (lo + hi);
-      (excess(mid) < 0 ? lo : hi) = mid;
-    }
-    return 0.5 * (lo + hi);
+    numerics::BisectionOptions o;
+    o.abs_width = 1e-16;  // [m]
+    const auto below = [&](double s) { return excess(s) < 0; };
+    const numerics::Bracket b = numerics::bisect(lo, hi, below, o);
+    return 0.5 * (b.lo + b.hi);
   }
 
   detail::BallSet set_;
