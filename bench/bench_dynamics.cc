@@ -38,6 +38,7 @@
 #include <gsl/gsl_errno.h>
 
 #include "bearing/case_file.h"
+#include "bearing/constants.h"
 #include "bearing/models/bearing_model.h"
 #include "bearing/signal/spectrum.h"
 #include "bearing/signal/statistics.h"
@@ -50,6 +51,7 @@ using bearing::Case;
 using bearing::IntegrationStats;
 using bearing::IntegratorSettings;
 using bearing::Override;
+using bearing::two_pi;
 
 constexpr double kDuration = 1.0;      // simulated time of targets 1-4 [s]
 constexpr double kDt = 5e-6;           // RK4 step [s]
@@ -257,13 +259,12 @@ void BM_BareForceLoop(benchmark::State& state, bool replay) {
 // amplitude_spectrum for a smooth N (GSL mixed radix) and a prime N (Bluestein). The timed unit
 // test this replaces checked that a prime length is not O(N^2).
 void BM_AmplitudeSpectrum(benchmark::State& state) {
-  constexpr double kTwoPi = 6.283185307179586;
   const auto n = static_cast<std::size_t>(state.range(0));
   std::mt19937_64 rng(42);
   std::normal_distribution<double> noise;
   std::vector<double> x(n);
   for (std::size_t i = 0; i < n; ++i)
-    x[i] = std::sin(kTwoPi * 133.0 * static_cast<double>(i) / 20000.0) + 0.1 * noise(rng);
+    x[i] = std::sin(two_pi * 133.0 * static_cast<double>(i) / 20000.0) + 0.1 * noise(rng);
   for (auto _ : state) {
     bearing::Spectrum s = bearing::amplitude_spectrum(x, 20000.0, bearing::Window::hann);
     benchmark::DoNotOptimize(s.amplitude.data());

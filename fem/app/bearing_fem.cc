@@ -27,6 +27,7 @@
 
 #include "app/radiate.h"
 #include "bearing/case_file.h"
+#include "bearing/constants.h"
 #include "bearing/contact.h"
 #include "bearing/errors.h"
 #include "bearing/hertz.h"
@@ -118,7 +119,7 @@ nlohmann::json setup_raceway(const ContactOptions& o, const bearing::Case& c, be
     throw InputError(
         "--geometry groove models the radial contact at the groove bottom; "
         "bearing.contact_angle = " +
-        std::to_string(b.contact_angle * 180 / M_PI) +
+        std::to_string(b.contact_angle * 180 / pi) +
         " deg is not supported (use --geometry hertz)");
   const bool outer = race == Race::outer;
   const double D = b.ball_diameter;
@@ -136,8 +137,8 @@ nlohmann::json setup_raceway(const ContactOptions& o, const bearing::Case& c, be
   if (!(o.groove_depth > 0 && o.groove_depth < 0.5))
     throw InputError("--groove-depth = " + std::to_string(o.groove_depth) +
                      ": the land depth over D must lie in (0, 0.5)");
-  const double angle = o.segment_angle > 0 ? o.segment_angle * M_PI / 180 : M_PI / b.balls;
-  if (!(angle < M_PI / 2))
+  const double angle = o.segment_angle > 0 ? o.segment_angle * pi / 180 : pi / b.balls;
+  if (!(angle < pi / 2))
     throw InputError("--segment-angle = " + std::to_string(o.segment_angle) +
                      " deg: must lie in (0, 90)");
   r.paraboloid_gap = o.gap == "paraboloid";

@@ -26,6 +26,7 @@
 
 #include "bearing/acoustics/sources.h"
 #include "bearing/case_file.h"
+#include "bearing/constants.h"
 #include "bearing/errors.h"
 #include "radiation/helmholtz_radiation.h"
 
@@ -33,7 +34,7 @@ namespace bearing::fem {
 namespace {
 
 using cplx = std::complex<double>;
-constexpr double kDeg = M_PI / 180;
+constexpr double kDeg = pi / 180;
 
 // One-third-octave band centres from 100 Hz to 20 kHz (IEC 61260 nominal values).
 std::vector<double> third_octave_centres() {
@@ -176,7 +177,7 @@ int run_single(const RadiateOptions& o, MPI_Comm comm, bool root) {
     if (m.r <= o.radius)
       throw InputError("--microphone r = " + std::to_string(m.r) + " m: must exceed the radius " +
                        std::to_string(o.radius) + " m");
-    if (sphere && (m.angle < 0 || m.angle > M_PI))
+    if (sphere && (m.angle < 0 || m.angle > pi))
       throw InputError("--microphone angle = " + std::to_string(m.angle / kDeg) +
                        " deg: a sphere's angle from its axis of motion is 0 to 180");
     // Planar: the cylinder translates along +x. Axisymmetric: the sphere along the axis (FE y).
@@ -200,7 +201,7 @@ int run_single(const RadiateOptions& o, MPI_Comm comm, bool root) {
     for (std::size_t i = 0; i < mics.size(); ++i) {
       const cplx fe = r.pressure[f][0][i];
       const cplx ex =
-          exact->transfer(2 * M_PI * r.frequencies[f], mics[i].r, std::cos(mics[i].angle));
+          exact->transfer(two_pi * r.frequencies[f], mics[i].r, std::cos(mics[i].angle));
       write_row(out, r.frequencies[f], fe, ex, mics[i], name);
       const Comparison c = compare(fe, ex);
       if (!std::isfinite(c.diff_db) || !std::isfinite(c.diff_phase_deg))
@@ -260,9 +261,9 @@ int run_bearing(const RadiateOptions& o, MPI_Comm comm, bool root) {
   p.geometry = RadiationGeometry::planar;
   p.bodies.push_back({0, 0, ring_r, false, 0});
   p.motions.push_back({0, false, 0, "ring-x"});
-  p.motions.push_back({0, false, M_PI / 2, "ring-y"});
+  p.motions.push_back({0, false, pi / 2, "ring-y"});
   for (int j = 0; j < b.balls; ++j) {
-    const double t = o.ball_angle * kDeg + 2 * M_PI * j / b.balls;
+    const double t = o.ball_angle * kDeg + two_pi * j / b.balls;
     p.bodies.push_back({pitch * std::cos(t), pitch * std::sin(t), ball_r, breathing, t});
     p.motions.push_back(
         {static_cast<std::size_t>(j + 1), breathing, t, "ball" + std::to_string(j + 1)});
@@ -327,7 +328,7 @@ int run_bearing(const RadiateOptions& o, MPI_Comm comm, bool root) {
   std::ostringstream out;
   out << kCsvHeader << std::setprecision(12);
   for (std::size_t f = 0; f < r.frequencies.size(); ++f) {
-    const double omega = 2 * M_PI * r.frequencies[f];
+    const double omega = two_pi * r.frequencies[f];
     const std::size_t nm = p.motions.size();
     // fe[m][i], free[m][i]; motion nm is every body together (1 m/s each, in phase).
     std::vector<std::vector<cplx>> fe(nm + 1, std::vector<cplx>(mics.size())), free = fe;

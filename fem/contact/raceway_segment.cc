@@ -34,6 +34,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "bearing/constants.h"
 #include "contact_geometry.h"
 
 namespace bearing::fem {
@@ -199,7 +200,7 @@ class RacewaySegmentGeometry final : public ContactGeometry {
 
 void mesh_raceway_segment(RacewaySegment& r, double groove_depth, double segment_angle,
                           const std::string& msh, MPI_Comm comm) {
-  if (!(groove_depth > 0 && segment_angle > 0 && segment_angle < M_PI / 2))
+  if (!(groove_depth > 0 && segment_angle > 0 && segment_angle < pi / 2))
     throw std::invalid_argument(
         "mesh_raceway_segment: groove depth and segment angle out of range");
   // The land depth as raceway_segment.geo computes it (a groove wider than the ring ends at 95 %

@@ -83,10 +83,13 @@
 #include <fstream>
 #include <iomanip>
 #include <iostream>
+#include <limits>
 #include <sstream>
 #include <stdexcept>
 
+#include "bearing/constants.h"
 #include "bearing/errors.h"
+#include "bearing/numerics/roots.h"
 
 namespace bearing::fem {
 namespace {
@@ -148,13 +151,13 @@ class PerfectlyMatchedLayer {
   /// monotonically from 0).
   static double growth(double attenuation, double kr0) {
     const double target = attenuation / kr0;
-    double lo = 0, hi = 1;
-    while (std::expm1(hi) - hi < target) hi *= 2;
-    for (int it = 0; it < 200 && hi - lo > 1e-15 * hi; ++it) {
-      const double mid = 0.5 * (lo + hi);
-      (std::expm1(mid) - mid < target ? lo : hi) = mid;
-    }
-    return 0.5 * (lo + hi);
+    const auto below = [&](double g) { return std::expm1(g) - g < target; };
+    // Only hi grows: the bisection starts from [0, hi].
+    const double hi = numerics::grow_bracket(0, 1, below, std::numeric_limits<int>::max()).hi;
+    numerics::BisectionOptions o;
+    o.rel_width = 1e-15;
+    const numerics::Bracket b = numerics::bisect(0, hi, below, o);
+    return 0.5 * (b.lo + b.hi);
   }
 
   double gamma() const { return gamma_; }
@@ -274,8 +277,8 @@ HelmholtzRadiation::HelmholtzRadiation(const HelmholtzParameters& p)
   // size.
   thickness = prm.pml_thickness > 0 ? prm.pml_thickness : std::min(0.5 * lambda_min, 0.5 * r0);
   const double f_min = *std::min_element(prm.frequencies.begin(), prm.frequencies.end());
-  const double gamma_max = PerfectlyMatchedLayer::growth(
-      prm.pml_attenuation, 2 * M_PI * f_min / prm.air.sound_speed * r0);
+  const double gamma_max =
+      PerfectlyMatchedLayer::growth(prm.pml_attenuation, two_pi * f_min / prm.air.sound_speed * r0);
   const double order = prm.geometry == RadiationGeometry::planar ? 1 : 2;
   layers = prm.pml_layers > 0
                ? prm.pml_layers
@@ -321,14 +324,14 @@ void HelmholtzRadiation::check_parameters() const {
     const double first_angle = std::atan2(ball.y, ball.x);
     for (std::size_t j = 1; j < prm.bodies.size(); ++j) {
       const auto& b = prm.bodies[j];
-      const double expected = first_angle + 2 * M_PI * (j - 1) / (prm.bodies.size() - 1);
+      const double expected = first_angle + two_pi * (j - 1) / (prm.bodies.size() - 1);
       if (std::abs(b.radius - ball.radius) > 1e-12 * ball.radius ||
           std::hypot(b.x - pitch * std::cos(expected), b.y - pitch * std::sin(expected)) >
               1e-9 * pitch)
         throw InputError("section: the balls must be equal and equally spaced on one pitch circle");
     }
     const double z = static_cast<double>(prm.bodies.size() - 1);
-    if (!(ring.radius + ball.radius < pitch && ball.radius < pitch * std::sin(M_PI / z)))
+    if (!(ring.radius + ball.radius < pitch && ball.radius < pitch * std::sin(pi / z)))
       throw InputError("section: the ring and the balls must not touch (ring radius " +
                        std::to_string(ring.radius) + " m + ball radius " +
                        std::to_string(ball.radius) + " m must be below the pitch radius " +
@@ -367,12 +370,12 @@ void HelmholtzRadiation::make_polar_grid() {
   const double h_far = lambda_min / prm.cells_per_wavelength;
   const bool axisym = prm.geometry == RadiationGeometry::axisymmetric;
   unsigned int n = static_cast<unsigned int>(
-      std::ceil(std::max(2 * M_PI * prm.cells_per_radius, 2 * M_PI * r1 / h_far)));
+      std::ceil(std::max(two_pi * prm.cells_per_radius, two_pi * r1 / h_far)));
   n = 4 * ((n + 3) / 4);
 
   std::vector<double> radii{a};
   while (radii.back() < r0)
-    radii.push_back(radii.back() + std::min(radii.back() * 2 * M_PI / n, h_far));
+    radii.push_back(radii.back() + std::min(radii.back() * two_pi / n, h_far));
   if (radii.size() < 3) radii = {a, 0.5 * (a + r0), r0};  // at least two cells across
   const double stretch = (r0 - a) / (radii.back() - a);
   for (double& r : radii) r = a + (r - a) * stretch;
@@ -384,7 +387,7 @@ void HelmholtzRadiation::make_polar_grid() {
   std::vector<Point<dim>> vertices;
   for (double r : radii)
     for (unsigned int j = 0; j < n_angles; ++j) {
-      const double t = 2 * M_PI * j / n;
+      const double t = two_pi * j / n;
       vertices.push_back(axisym ? Point<dim>(r * std::sin(t), r * std::cos(t))
                                 : Point<dim>(r * std::cos(t), r * std::sin(t)));
     }
@@ -421,7 +424,7 @@ void HelmholtzRadiation::mesh_section() const {
       << " -setnumber balls " << prm.bodies.size() - 1 << " -setnumber physical_radius " << r0
       << " -setnumber outer_radius " << r0 + thickness << " -setnumber h_layer "
       << 2 * thickness / layers << " -setnumber h_far " << 2 * lambda_min / prm.cells_per_wavelength
-      << " -setnumber cells_per_turn " << std::ceil(M_PI * prm.cells_per_radius) << " \""
+      << " -setnumber cells_per_turn " << std::ceil(pi * prm.cells_per_radius) << " \""
       << BEARING_MESH_DIR << "/bearing_section.geo\" -o \"" << msh << "\" > \"" << msh
       << ".log\" 2>&1";
   if (std::system(cmd.str().c_str()) != 0)
@@ -533,13 +536,13 @@ void HelmholtzRadiation::setup_system() {
 void HelmholtzRadiation::setup_continuation() {
   circle_cells.clear(), circle_angle.clear(), circle_weight.clear();
   if (std::none_of(continued.begin(), continued.end(), [](bool c) { return c; })) return;
-  const double k_max = 2 * M_PI / lambda_min;
+  const double k_max = two_pi / lambda_min;
   n_modes = static_cast<unsigned int>(std::ceil(k_max * r_c)) + 40;
   std::vector<Point<dim>> points;
   if (prm.geometry == RadiationGeometry::planar) {
     const unsigned int m = 2 * n_modes + 16;
     for (unsigned int j = 0; j < m; ++j) {
-      const double t = 2 * M_PI * j / m;
+      const double t = two_pi * j / m;
       circle_angle.push_back(t);
       points.emplace_back(r_c * std::cos(t), r_c * std::sin(t));
     }
@@ -560,7 +563,7 @@ void HelmholtzRadiation::setup_continuation() {
 }
 
 void HelmholtzRadiation::assemble_system(double frequency) {
-  const double omega = 2 * M_PI * frequency, k = omega / prm.air.sound_speed;
+  const double omega = two_pi * frequency, k = omega / prm.air.sound_speed;
   const PerfectlyMatchedLayer layer(prm.geometry, r0, thickness, prm.pml_attenuation, k);
   system_matrix = 0;
   for (auto& b : system_rhs) b = 0;
@@ -772,7 +775,7 @@ HelmholtzResult HelmholtzRadiation::run(MPI_Comm comm) {
     const auto t1 = std::chrono::steady_clock::now();
     solve();
     const auto t2 = std::chrono::steady_clock::now();
-    const auto p = microphone_pressures(2 * M_PI * prm.frequencies[f] / prm.air.sound_speed);
+    const auto p = microphone_pressures(two_pi * prm.frequencies[f] / prm.air.sound_speed);
     for (std::size_t m = 0; m < nm; ++m)
       for (std::size_t i = 0; i < nx; ++i) {
         flat[2 * ((f * nm + m) * nx + i)] = p[m][i].real();

@@ -3,6 +3,7 @@
 #include <cmath>
 #include <string>
 
+#include "bearing/constants.h"
 #include "bearing/errors.h"
 #include "bearing/units.h"
 
@@ -35,7 +36,7 @@ void Bearing::validate() const {
                      format_quantity(ball_diameter, "mm", Dimension::length) + ")");
   // Balls must fit around the pitch circle: Z D < π d_m is necessary (adjacent balls not
   // overlapping needs d_m sin(π/Z) > D).
-  if (pitch_diameter * std::sin(M_PI / balls) <= ball_diameter)
+  if (pitch_diameter * std::sin(pi / balls) <= ball_diameter)
     throw InputError("bearing.balls = " + std::to_string(balls) + ": " + std::to_string(balls) +
                      " balls of " + format_quantity(ball_diameter, "mm", Dimension::length) +
                      " do not fit on a pitch circle of " +
@@ -60,7 +61,7 @@ void Bearing::validate() const {
                      ": more than 10 % of the ball diameter (" +
                      format_quantity(ball_diameter, "mm", Dimension::length) +
                      "); did you mean um rather than mm?");
-  if (!std::isfinite(contact_angle) || contact_angle < 0 || contact_angle >= M_PI / 2)
+  if (!std::isfinite(contact_angle) || contact_angle < 0 || contact_angle >= pi / 2)
     throw InputError(shown("contact_angle", contact_angle, "deg", Dimension::angle) +
                      ": must lie in [0 deg, 90 deg)");
   ball.validate("material.ball");

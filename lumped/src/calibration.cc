@@ -14,6 +14,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "bearing/constants.h"
 #include "bearing/errors.h"
 #include "bearing/hertz.h"
 #include "bearing/units.h"
@@ -144,7 +145,7 @@ Bearing read_bearing(const Reader& top) {
   b.inner_conformity = positive("inner_conformity", "");
   b.outer_conformity = positive("outer_conformity", "");
   b.contact_angle = r.number("contact_angle", "rad");
-  if (!(b.contact_angle >= 0 && b.contact_angle < M_PI_2))
+  if (!(b.contact_angle >= 0 && b.contact_angle < pi / 2))
     r.fail(r.name("contact_angle") + " = " + format_number(b.contact_angle) +
            " rad: must lie in [0, pi/2)");
   const Reader materials = r.object("material");

@@ -7,6 +7,7 @@
 #include <sstream>
 #include <string>
 
+#include "bearing/constants.h"
 #include "bearing/errors.h"
 #include "bearing/material.h"
 #include "bearing/units.h"
@@ -25,7 +26,7 @@ void require_contact_geometry(const Bearing& b) {
     throw InputError("bearing.pitch_diameter = " + format_number(b.pitch_diameter) +
                      " m: the contact needs a pitch diameter larger than the ball diameter (" +
                      format_number(b.ball_diameter) + " m)");
-  if (!(std::isfinite(b.contact_angle) && b.contact_angle >= 0 && b.contact_angle < M_PI_2))
+  if (!(std::isfinite(b.contact_angle) && b.contact_angle >= 0 && b.contact_angle < pi / 2))
     throw InputError("bearing.contact_angle = " + format_number(b.contact_angle) +
                      " rad: must lie in [0, pi/2)");
 }
@@ -117,7 +118,7 @@ double RaceContact::semi_minor(double load) const {
 double RaceContact::peak_pressure(double load) const {
   require_load(load, "RaceContact::peak_pressure");
   if (load == 0) return 0.0;  // no contact ellipse; avoid 0/0
-  return 3.0 * load / (2.0 * M_PI * semi_major(load) * semi_minor(load));
+  return 3.0 * load / (two_pi * semi_major(load) * semi_minor(load));
 }
 
 double series_stiffness(double k_inner, double k_outer) {

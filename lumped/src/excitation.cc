@@ -15,6 +15,7 @@
 #include <string>
 #include <vector>
 
+#include "bearing/constants.h"
 #include "bearing/errors.h"
 #include "bearing/units.h"
 
@@ -114,7 +115,7 @@ struct Layout {
   int phase = -1;  // -1: no phase column (phases 0)
   std::size_t fields = 2;
   double amplitude_factor = 1e-6;            // µm unless the header says otherwise
-  double phase_factor = M_PI / 180.0;        // degrees unless the header says otherwise
+  double phase_factor = pi / 180.0;          // degrees unless the header says otherwise
   std::string columns = "order, amplitude";  // for messages
 };
 

@@ -14,8 +14,10 @@
 #include <gsl/gsl_roots.h>
 #include <gsl/gsl_sf_ellint.h>
 
+#include "bearing/constants.h"
 #include "bearing/errors.h"
 #include "bearing/hertz.h"
+#include "bearing/numerics/roots.h"
 #include "hertz_internal.h"
 
 namespace bearing {
@@ -47,9 +49,9 @@ HertzShape hertz_shape_from(double ellipticity, double elliptic_K, double ellipt
   h.elliptic_K = elliptic_K;
   h.elliptic_E = elliptic_E;
   const double k2E = ellipticity * ellipticity * elliptic_E;
-  h.delta_star = (2.0 * elliptic_K / M_PI) * std::cbrt(M_PI / (2.0 * k2E));
-  h.a_star = std::cbrt(2.0 * k2E / M_PI);
-  h.b_star = std::cbrt(2.0 * elliptic_E / (M_PI * ellipticity));
+  h.delta_star = (2.0 * elliptic_K / pi) * std::cbrt(pi / (2.0 * k2E));
+  h.a_star = std::cbrt(2.0 * k2E / pi);
+  h.b_star = std::cbrt(2.0 * elliptic_E / (pi * ellipticity));
   return h;
 }
 
@@ -101,13 +103,11 @@ double solve_ellipticity(double f_rho) {
 
   // Bracket: φ(0) = −ln(1 − F) > 0; double u until φ < 0. For the largest F < 1 in double
   // precision κ ≈ 6e8 (u ≈ 20), so the cap of u = 64 is never reached for valid input.
-  double lo = 0.0;
-  double hi = 1.0;
-  while (root_function(hi, &data) >= 0.0) {
-    lo = hi;
-    hi *= 2.0;
-    if (hi > 64.0) throw SolverError("exact Hertz solution: could not bracket the ellipticity");
-  }
+  const numerics::Bracket b = numerics::grow_bracket(
+      0.0, 1.0, [&](double u) { return root_function(u, &data) >= 0.0; }, 6);
+  if (!b.found) throw SolverError("exact Hertz solution: could not bracket the ellipticity");
+  double lo = b.lo;
+  double hi = b.hi;
 
   std::unique_ptr<gsl_root_fsolver, decltype(&gsl_root_fsolver_free)> solver(
       gsl_root_fsolver_alloc(gsl_root_fsolver_brent), &gsl_root_fsolver_free);
@@ -133,7 +133,7 @@ class ExactHertz final : public HertzSolution {
   HertzShape shape(double f_rho) const override {
     detail::require_curvature_difference(f_rho, name());
     // Sphere on sphere/plane: the F equation is 0/0 at κ = 1; its limit is F = 0.
-    if (f_rho == 0.0) return hertz_shape_from(1.0, M_PI_2, M_PI_2);
+    if (f_rho == 0.0) return hertz_shape_from(1.0, pi / 2, pi / 2);
     const double kappa = solve_ellipticity(f_rho);
     const EllipticPair p = elliptic_integrals(kappa);
     return hertz_shape_from(kappa, p.K, p.E);

@@ -6,14 +6,13 @@
 #include <sstream>
 #include <string>
 
+#include "bearing/constants.h"
 #include "bearing/errors.h"
 #include "bearing/units.h"
 
 namespace bearing {
 
 namespace {
-
-constexpr double kTwoPi = 6.283185307179586476925286766559;
 
 // g = D cos α / d_m, checked enough that the formulas cannot produce NaN.
 double geometry_ratio(const Bearing& b) {
@@ -54,9 +53,9 @@ BearingFrequencies bearing_frequencies(const Bearing& b, double inner_speed, dou
     throw InputError("bearing.balls = " + std::to_string(b.balls) + ": must be at least 1");
   const double g = geometry_ratio(b);
   const double cage = (1.0 - cage_slip) * cage_speed(b, inner_speed, outer_speed);  // ω_ca
-  const double f_i = inner_speed / kTwoPi;
-  const double f_o = outer_speed / kTwoPi;
-  const double f_c = cage / kTwoPi;
+  const double f_i = inner_speed / two_pi;
+  const double f_o = outer_speed / two_pi;
+  const double f_c = cage / two_pi;
   const double Z = b.balls;
 
   BearingFrequencies f;

@@ -32,14 +32,16 @@
 #include <utility>
 #include <vector>
 
+#include "bearing/constants.h"
 #include "bearing/errors.h"
+#include "bearing/numerics/newton.h"
+#include "bearing/numerics/roots.h"
 #include "bearing/units.h"
 
 namespace bearing {
 
 namespace {
 
-constexpr double kPi = 3.14159265358979323846264338327950288;
 constexpr double kEps = std::numeric_limits<double>::epsilon();
 
 void validate(int balls, double K, double gap, const Eigen::Vector2d& load,
@@ -74,17 +76,14 @@ class Problem {
           Eigen::Vector2d w)
       : c_(std::move(c)), s_(std::move(s)), beta_(std::move(beta)), n_(n), w_(w) {}
 
-  struct Eval {
-    double phi = 0;       // Φ̃(v)
-    Eigen::Vector2d g;    // ∇Φ̃ = Σ p^n e − w
-    Eigen::Matrix2d H;    // Σ n p^{n−1} e eᵀ
-    double load_sum = 0;  // Σ p^n, the scale of the rounding in g
+  // Φ̃(v), ∇Φ̃ = Σ p^n e − w, ∇²Φ̃ = Σ n p^{n−1} e eᵀ, and Σ p^n (the scale of the rounding in g).
+  struct Eval : numerics::PotentialPoint<2> {
+    double load_sum = 0;
   };
 
   Eval eval(const Eigen::Vector2d& v) const {
     Eval r;
-    r.g = -w_;
-    r.H.setZero();
+    r.gradient = -w_;
     double energy = 0;
     for (std::size_t j = 0; j < c_.size(); ++j) {
       const double p = beta_[j] + v.x() * c_[j] + v.y() * s_[j];
@@ -93,15 +92,15 @@ class Problem {
       const double pn = pn1 * p;
       energy += pn * p;
       r.load_sum += pn;
-      r.g.x() += pn * c_[j];
-      r.g.y() += pn * s_[j];
+      r.gradient.x() += pn * c_[j];
+      r.gradient.y() += pn * s_[j];
       const double h = n_ * pn1;
-      r.H(0, 0) += h * c_[j] * c_[j];
-      r.H(0, 1) += h * c_[j] * s_[j];
-      r.H(1, 1) += h * s_[j] * s_[j];
+      r.hessian(0, 0) += h * c_[j] * c_[j];
+      r.hessian(0, 1) += h * c_[j] * s_[j];
+      r.hessian(1, 1) += h * s_[j] * s_[j];
     }
-    r.H(1, 0) = r.H(0, 1);
-    r.phi = energy / (n_ + 1.0) - w_.dot(v);
+    r.hessian(1, 0) = r.hessian(0, 1);
+    r.value = energy / (n_ + 1.0) - w_.dot(v);
     return r;
   }
 
@@ -119,8 +118,6 @@ class Problem {
     }
   }
 
-  const Eigen::Vector2d& direction() const { return w_; }
-
  private:
   std::vector<double> c_, s_, beta_;
   double n_;
@@ -130,85 +127,35 @@ class Problem {
 // Step 1: t > 0 with h(t) = 0. h(0) = −1 (all β̃ ≤ 0) and h is nondecreasing and unbounded, so a
 // bracket exists; Newton steps are taken when they stay inside it, bisection otherwise.
 double solve_along_load(const Problem& prob) {
-  double lo = 0.0, hi = 1.0, h = 0, dh = 0;
-  prob.along(hi, h, dh);
-  for (int k = 0; h < 0 && k < 2100; ++k) {
-    lo = hi;
-    hi *= 2.0;
-    prob.along(hi, h, dh);
-  }
-  if (!(h >= 0)) return lo;  // cannot happen for Z ≥ 3; the 2-D iteration still converges
-  double t = 0.5 * (lo + hi);
-  for (int k = 0; k < 200; ++k) {
+  double h = 0, dh = 0;
+  const auto beyond = [&](double t) {
     prob.along(t, h, dh);
-    if (h == 0) return t;
-    (h < 0 ? lo : hi) = t;
-    double next = dh > 0 ? t - h / dh : 0.5 * (lo + hi);
-    if (!(next > lo && next < hi)) next = 0.5 * (lo + hi);
-    if (hi - lo <= 4 * kEps * hi || std::abs(next - t) <= 4 * kEps * t) return next;
-    t = next;
-  }
-  return t;
+    return h < 0;
+  };
+  const numerics::Bracket b = numerics::grow_bracket(0.0, 1.0, beyond, 2100);
+  if (!(h >= 0)) return b.lo;  // cannot happen for Z ≥ 3; the 2-D iteration still converges
+  return numerics::newton_bisection([&](double t, double& f, double& df) { prob.along(t, f, df); },
+                                    b.lo, b.hi, 200);
 }
 
-// Line search along the descent direction p from v, where φ(α) = Φ̃(v + αp) is convex and
-// φ'(α) = g(v + αp)·p is nondecreasing. Looks for α with |φ'(α)| ≤ 0.1 |φ'(0)| (the strong Wolfe
-// curvature condition; the minimum on the ray lies there) and Φ̃ not increased: α = 1 first
-// (the Newton step, accepted near the solution), then doubling while φ' < 0 or regula falsi /
-// bisection on φ' inside the bracket. Derivatives rather than values of Φ̃ decide, so the search
-// still works where changes of Φ̃ are below its rounding. Updates v and cur; false if no progress.
-bool line_search(const Problem& prob, Eigen::Vector2d& v, const Eigen::Vector2d& p,
-                 Problem::Eval& cur) {
-  const double slope = cur.g.dot(p);
-  if (!(p.allFinite() && slope < 0)) return false;
-  const double target = 0.1 * std::abs(slope);
-  const double phi_noise = 64 * kEps * (std::abs(cur.phi) + std::abs(prob.direction().dot(v)));
-  auto accept = [&](const Problem::Eval& e, double alpha) {
-    if (!(e.phi <= cur.phi + phi_noise)) return false;
-    v += alpha * p;
-    cur = e;
-    return true;
-  };
-
-  double lo = 0.0, d_lo = slope;  // φ'(lo) < 0
-  double hi = 1.0;
-  Problem::Eval e = prob.eval(v + hi * p);
-  double d_hi = e.g.dot(p);
-  if (std::abs(d_hi) <= target && accept(e, hi)) return true;
-  // Expand until φ' ≥ 0: φ̃ is coercive, so this ends (2^1100 overflows first only for
-  // nonsense input, and then the search reports failure).
-  for (int k = 0; d_hi < 0 && k < 1100; ++k) {
-    lo = hi, d_lo = d_hi;
-    hi *= 2.0;
-    e = prob.eval(v + hi * p);
-    d_hi = e.g.dot(p);
-    if (std::abs(d_hi) <= target && accept(e, hi)) return true;
-  }
-  if (!(d_hi >= 0)) return false;
-  // Zoom: root of φ' in (lo, hi) by regula falsi with the Illinois modification, falling back
-  // to bisection when the secant point crowds an end.
-  int side = 0;
-  for (int k = 0; k < 200; ++k) {
-    double alpha = lo - d_lo * (hi - lo) / (d_hi - d_lo);
-    const double width = hi - lo;
-    if (!(alpha > lo + 0.01 * width && alpha < hi - 0.01 * width)) alpha = 0.5 * (lo + hi);
-    e = prob.eval(v + alpha * p);
-    const double d = e.g.dot(p);
-    if (std::abs(d) <= target && accept(e, alpha)) return true;
-    if (d < 0) {
-      lo = alpha, d_lo = d;
-      if (side == -1) d_hi *= 0.5;
-      side = -1;
-    } else {
-      hi = alpha, d_hi = d;
-      if (side == 1) d_lo *= 0.5;
-      side = 1;
-    }
-    if (hi - lo <= 4 * kEps * hi) break;
-  }
-  // The bracket has collapsed onto the minimum on the ray to within rounding: take it if it
-  // does not raise Φ̃.
-  return lo > 0 && accept(prob.eval(v + lo * p), lo);
+// Step 2 by numerics::newton_minimize. Its line search minimises Φ̃ along the step, convex on
+// the ray, to |φ'(α)| ≤ 0.1 |φ'(0)|: α = 1 first (the Newton step, accepted near the solution),
+// then doubling while φ' < 0 or Illinois regula falsi on φ' inside the bracket (kept 1 % of it
+// from either end), and the bracket's lower end if it collapses to rounding; Φ̃ must not rise
+// above its rounding. The Levenberg term μ = |g|² + 1e-12 tr H keeps a nearly singular H (nearly
+// parallel balls for large Z) invertible and vanishes like |g|², so the local rate stays
+// quadratic; a singular H (one ball loaded, or none) is stepped one eigen-direction at a time.
+numerics::NewtonOptions newton_options(const StaticLoadOptions& o) {
+  numerics::NewtonOptions n;
+  n.tolerance = o.tolerance;
+  n.max_iterations = o.max_iterations;
+  n.gradient_damping = 1;
+  n.split_singular = true;
+  n.line_search.max_expansions = 1100;
+  n.line_search.zoom.max_iterations = 200;
+  n.line_search.zoom.margin = 0.01;
+  n.line_search.fallback_to_lower_end = true;
+  return n;
 }
 
 }  // namespace
@@ -218,7 +165,7 @@ StaticLoadResult solve_static_load(int balls, double K, double gap, const Eigen:
   validate(balls, K, gap, load, options);
   const int Z = balls;
   const double n = options.exponent;
-  const double pitch = 2.0 * kPi / Z;
+  const double pitch = two_pi / Z;
 
   StaticLoadResult res;
   res.ball_angles.resize(Z);
@@ -243,11 +190,11 @@ StaticLoadResult solve_static_load(int balls, double K, double gap, const Eigen:
   // (j − jn)·2π/Z, exact up to one rounding, so small projections v·e_j are products, not
   // differences of large numbers.
   const double psi = std::atan2(load.y(), load.x());
-  const long nearest = std::lround(std::remainder(psi - options.phase, 2.0 * kPi) / pitch);
+  const long nearest = std::lround(std::remainder(psi - options.phase, two_pi) / pitch);
   const int jn = static_cast<int>(((nearest % Z) + Z) % Z);
   const double frame = res.ball_angles[jn];
-  const double delta = std::remainder(psi - frame, 2.0 * kPi);  // load angle in the frame
-  auto offset = [&](int j) {                                    // j − jn wrapped to (−Z/2, Z/2]
+  const double delta = std::remainder(psi - frame, two_pi);  // load angle in the frame
+  auto offset = [&](int j) {                                 // j − jn wrapped to (−Z/2, Z/2]
     int dj = ((j - jn) % Z + Z) % Z;
     return dj > Z / 2 ? dj - Z : dj;
   };
@@ -268,7 +215,7 @@ StaticLoadResult solve_static_load(int balls, double K, double gap, const Eigen:
   if (gap > 0) {
     const bool on_ball = std::abs(std::sin(delta)) <= 0.125 * options.tolerance;
     const int side = delta >= 0 ? 1 : -1;
-    const double half = kPi / Z;
+    const double half = pi / Z;
     const double ref_angle = on_ball ? 0.0 : side * half;
     const double ref_radius = on_ball ? gap : gap / std::cos(half);
     u_ref = ref_radius * Eigen::Vector2d(std::cos(ref_angle), std::sin(ref_angle));
@@ -287,44 +234,16 @@ StaticLoadResult solve_static_load(int balls, double K, double gap, const Eigen:
   // Step 1: along the load.
   Eigen::Vector2d v = solve_along_load(prob) * w;
 
-  // Step 2: regularised Newton with a line search on Φ̃.
+  // Step 2: regularised Newton with a line search on Φ̃ (newton_options).
   Problem::Eval cur = prob.eval(v);
   const double tol = options.tolerance;
-  int it = 0;
-  bool stalled = false;
-  while (cur.g.norm() > tol && it < options.max_iterations) {
-    ++it;
-    const double gnorm = cur.g.norm();
-    // Newton step with a Levenberg term that keeps it finite when H is nearly singular (nearly
-    // parallel balls for large Z) and vanishes like |g|², so the local rate stays quadratic.
-    // When H is singular to rounding (one ball loaded, or none) its null direction is flat: Φ̃
-    // falls linearly along it until another ball closes, possibly far away. A step mixing that
-    // direction with a stiff one makes the line search trade one against the other, so the
-    // two are taken one after the other: Newton along the stiff eigenvector, then an exact
-    // minimisation along the flat one. A component of g already below the tolerance is left
-    // alone, so a rounding-level force does not send the ring sliding along the flat direction.
-    const double mu = gnorm * gnorm + 1e-12 * cur.H.trace() + 1e-300;
-    Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d> eig;
-    eig.computeDirect(cur.H);
-    const Eigen::Vector2d lambda = eig.eigenvalues().cwiseMax(0.0);  // ascending
-    const Eigen::Matrix2d U = eig.eigenvectors();
-    bool moved = false;
-    if (lambda(0) > 1e-12 * lambda(1)) {
-      const Eigen::Vector2d p = -(cur.H + mu * Eigen::Matrix2d::Identity()).ldlt().solve(cur.g);
-      moved = line_search(prob, v, p, cur);
-    } else {
-      for (int i = 1; i >= 0; --i) {  // stiff first, then flat
-        const Eigen::Vector2d u = U.col(i);
-        const double gi = cur.g.dot(u);
-        if (std::abs(gi) <= 0.25 * tol) continue;
-        moved = line_search(prob, v, -gi / (lambda(i) + mu) * u, cur) || moved;
-      }
-    }
-    if (!moved) {
-      stalled = true;
-      break;
-    }
-  }
+  const auto not_higher = [&](const Problem::Eval& e, const Problem::Eval& at,
+                              const Eigen::Vector2d& x) {
+    return e.value <= at.value + 64 * kEps * (std::abs(at.value) + std::abs(w.dot(x)));
+  };
+  const numerics::NewtonResult newton = numerics::newton_minimize(
+      v, cur, [&](const Eigen::Vector2d& x) { return prob.eval(x); }, not_higher,
+      newton_options(options));
 
   // Physical results: δ_j = β_j + L v·e_j and Q_j = F p_j^n (= K δ_j^n, since K L^n = F); the
   // deflection rotated back to the fixed frame.
@@ -343,16 +262,16 @@ StaticLoadResult solve_static_load(int balls, double K, double gap, const Eigen:
     res.q_max = std::max(res.q_max, res.ball_loads[j]);
   }
   res.residual = (sum - load).norm() / F;
-  res.iterations = it;
+  res.iterations = newton.iterations;
 
   // Converged, or stopped at the rounding floor of the force sum: each p_j carries an error of
   // a few ε|v|, which reaches g through H, and the sum itself rounds at ε Σ p^n.
-  const double gnorm = cur.g.norm();
-  const double floor = 16 * kEps * (1.0 + cur.load_sum + v.norm() * cur.H.trace());
+  const double gnorm = cur.gradient.norm();
+  const double floor = 16 * kEps * (1.0 + cur.load_sum + v.norm() * cur.hessian.trace());
   if (gnorm <= tol || gnorm <= floor) return res;
   std::ostringstream msg;
-  msg << "solve_static_load: no equilibrium after " << it << " Newton iterations"
-      << (stalled ? " (the line search could not reduce the potential any further)" : "")
+  msg << "solve_static_load: no equilibrium after " << newton.iterations << " Newton iterations"
+      << (newton.stalled ? " (the line search could not reduce the potential any further)" : "")
       << ": relative force residual " << format_number(gnorm) << " > tolerance "
       << format_number(tol) << " (Z = " << Z << ", K = " << format_number(K)
       << " N/m^n, gap = " << format_number(gap) << " m, load = (" << format_number(load.x()) << ", "

@@ -8,13 +8,12 @@
 #include <sstream>
 #include <utility>
 
+#include "bearing/constants.h"
 #include "bearing/errors.h"
 
 namespace bearing {
 
 namespace {
-
-constexpr double kPi = 3.14159265358979323846;
 
 struct UnitEntry {
   const char* name;  // normalised spelling (see normalise())
@@ -26,14 +25,13 @@ const std::vector<UnitEntry>& table(Dimension dim) {
   static const std::vector<UnitEntry> length{{"m", 1.0},   {"cm", 1e-2}, {"mm", 1e-3},
                                              {"um", 1e-6}, {"nm", 1e-9}, {"in", 0.0254}};
   static const std::vector<UnitEntry> angle{{"rad", 1.0},
-                                            {"deg", kPi / 180.0},
-                                            {"degree", kPi / 180.0},
-                                            {"degrees", kPi / 180.0},
-                                            {"°", kPi / 180.0}};
-  static const std::vector<UnitEntry> speed{
-      {"rpm", 2.0 * kPi / 60.0},     {"r/min", 2.0 * kPi / 60.0},
-      {"rev/min", 2.0 * kPi / 60.0}, {"rad/s", 1.0},
-      {"rev/s", 2.0 * kPi},          {"Hz", 2.0 * kPi}};
+                                            {"deg", pi / 180.0},
+                                            {"degree", pi / 180.0},
+                                            {"degrees", pi / 180.0},
+                                            {"°", pi / 180.0}};
+  static const std::vector<UnitEntry> speed{{"rpm", two_pi / 60.0},     {"r/min", two_pi / 60.0},
+                                            {"rev/min", two_pi / 60.0}, {"rad/s", 1.0},
+                                            {"rev/s", two_pi},          {"Hz", two_pi}};
   static const std::vector<UnitEntry> force{
       {"N", 1.0}, {"kN", 1e3}, {"mN", 1e-3}, {"lbf", 4.4482216152605}};
   static const std::vector<UnitEntry> pressure{{"Pa", 1.0},

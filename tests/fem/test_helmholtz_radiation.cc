@@ -12,6 +12,7 @@
 #include <string>
 
 #include "bearing/acoustics/sources.h"
+#include "bearing/constants.h"
 #include "bearing/errors.h"
 #include "radiation/helmholtz_radiation.h"
 
@@ -20,6 +21,8 @@ namespace {
 using bearing::Air;
 using bearing::InputError;
 using bearing::make_source;
+using bearing::pi;
+using bearing::two_pi;
 using namespace bearing::fem;
 using cplx = std::complex<double>;
 
@@ -62,16 +65,16 @@ class SingleSourceAccuracy : public ::testing::TestWithParam<SingleSource> {};
 TEST_P(SingleSourceAccuracy, MatchesTheExactFieldWithinATenthOfADecibelAndOneDegree) {
   const SingleSource s = GetParam();
   const std::vector<double> rs{10e-3, 1.0};
-  const double angle = 30 * M_PI / 180;
+  const double angle = 30 * pi / 180;
   const HelmholtzResult fe = solve_helmholtz(single(s, rs, angle), MPI_COMM_WORLD);
   const auto exact = make_source(s.name, s.radius, Air{});
   for (std::size_t f = 0; f < kFrequencies.size(); ++f)
     for (std::size_t i = 0; i < rs.size(); ++i) {
-      const cplx ex = exact->transfer(2 * M_PI * kFrequencies[f], rs[i], std::cos(angle));
+      const cplx ex = exact->transfer(two_pi * kFrequencies[f], rs[i], std::cos(angle));
       const cplx ratio = fe.pressure[f][0][i] / ex;
       EXPECT_LT(std::abs(20 * std::log10(std::abs(ratio))), 0.1)
           << s.name << " " << kFrequencies[f] << " Hz, r = " << rs[i];
-      EXPECT_LT(std::abs(std::arg(ratio)) * 180 / M_PI, 1.0)
+      EXPECT_LT(std::abs(std::arg(ratio)) * 180 / pi, 1.0)
           << s.name << " " << kFrequencies[f] << " Hz, r = " << rs[i];
     }
 }
@@ -103,7 +106,7 @@ TEST(HelmholtzRadiation, ErrorFallsUnderRefinementAtLeastAtTheElementsOrder) {
     p.degree = 2;
     p.refinements = level;
     const HelmholtzResult fe = solve_helmholtz(p, MPI_COMM_WORLD);
-    const cplx ex = exact->transfer(2 * M_PI * 100, r, 1.0);
+    const cplx ex = exact->transfer(two_pi * 100, r, 1.0);
     error[level] = std::abs(fe.pressure[0][0][0] / ex - 1.0);
   }
   EXPECT_GT(error[0], 1e-4);  // measurable
@@ -139,7 +142,7 @@ TEST(HelmholtzRadiation, ScatteringBySmallNeighboursFallsAsTheirRadiusSquared) {
   const double ring = 3e-3, pitch = 7.5e-3, f = 500;
   const std::array<double, 2> mic{10e-3, 0};
   const auto exact = make_source("cylinder-dipole", ring, Air{});
-  const cplx free = exact->transfer(2 * M_PI * f, 10e-3, 1.0);
+  const cplx free = exact->transfer(two_pi * f, 10e-3, 1.0);
   const std::string dir = std::filesystem::temp_directory_path() / "bearing_fem_radiation_test";
   std::filesystem::create_directories(dir);
   double difference[2];
@@ -148,7 +151,7 @@ TEST(HelmholtzRadiation, ScatteringBySmallNeighboursFallsAsTheirRadiusSquared) {
     HelmholtzParameters p;
     p.bodies.push_back({0, 0, ring, false, 0});
     for (int j = 0; j < 7; ++j) {
-      const double t = -M_PI / 2 + 2 * M_PI * j / 7;
+      const double t = -pi / 2 + two_pi * j / 7;
       p.bodies.push_back({pitch * std::cos(t), pitch * std::sin(t), radii[i], false, t});
     }
     p.motions = {SurfaceMotion{0, false, 0, "ring-x"}};
@@ -169,11 +172,11 @@ TEST(HelmholtzRadiation, ContinuedAndMeshedMicrophonesAgreeAroundABearingSection
   HelmholtzParameters p;
   p.bodies.push_back({0, 0, 5.5e-3, false, 0});
   for (int j = 0; j < 7; ++j) {
-    const double t = -M_PI / 2 + 2 * M_PI * j / 7;
+    const double t = -pi / 2 + two_pi * j / 7;
     p.bodies.push_back({7.775e-3 * std::cos(t), 7.775e-3 * std::sin(t), 1.98e-3, false, t});
   }
-  p.motions = {SurfaceMotion{0, false, M_PI / 2, "ring-y"},
-               SurfaceMotion{1, false, -M_PI / 2, "ball1"}};
+  p.motions = {SurfaceMotion{0, false, pi / 2, "ring-y"},
+               SurfaceMotion{1, false, -pi / 2, "ball1"}};
   p.microphones = {{40e-3 * std::cos(0.3), 40e-3 * std::sin(0.3)}};
   p.frequencies = {2000, 8000};
   p.work_dir = std::filesystem::temp_directory_path() / "bearing_fem_radiation_test";

@@ -16,6 +16,7 @@
 #include <iostream>
 #include <string>
 
+#include "bearing/constants.h"
 #include "bearing/contact.h"
 #include "bearing/hertz.h"
 #include "bearing/presets.h"
@@ -145,7 +146,7 @@ GrooveRun solve_groove(double q, bool paraboloid, const std::string& name) {
   r.half_width = 11.5e-3;
   r.paraboloid_gap = paraboloid;
   fem::mesh_raceway_segment(
-      r, 0.2 * b.ball_diameter, M_PI / b.balls,
+      r, 0.2 * b.ball_diameter, pi / b.balls,
       (std::filesystem::temp_directory_path() / ("bearing_fem_test_" + name + ".msh")).string(),
       MPI_COMM_WORLD);
   g.r = fem::solve_hertz_contact(p, MPI_COMM_WORLD);

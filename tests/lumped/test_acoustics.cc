@@ -14,6 +14,7 @@
 #include "bearing/acoustics/microphones.h"
 #include "bearing/acoustics/pressure.h"
 #include "bearing/acoustics/sources.h"
+#include "bearing/constants.h"
 #include "bearing/errors.h"
 #include "bearing/signal/fft.h"
 
@@ -21,7 +22,6 @@ namespace bearing {
 namespace {
 
 using cd = std::complex<double>;
-constexpr double kPi = 3.14159265358979323846;
 constexpr cd kI{0, 1};
 const Air kAir{};  // 1.204 kg/m^3, 343.2 m/s
 
@@ -37,7 +37,7 @@ std::vector<cd> direct_dft(const std::vector<double>& x) {
   std::vector<cd> X(n / 2 + 1);
   for (std::size_t k = 0; k < X.size(); ++k)
     for (std::size_t j = 0; j < n; ++j)
-      X[k] += x[j] * std::polar(1.0, -2 * kPi * static_cast<double>(k * j % n) / n);
+      X[k] += x[j] * std::polar(1.0, -two_pi * static_cast<double>(k * j % n) / n);
   return X;
 }
 
@@ -66,7 +66,7 @@ TEST(RealFft, InverseOfOneBinIsACosine) {
   X[37] = std::polar(n / 2.0, 0.4);
   const auto x = fft.inverse(X);
   for (std::size_t j = 0; j < n; j += 997)
-    EXPECT_NEAR(x[j], std::cos(2 * kPi * 37.0 * j / n + 0.4), 1e-12);
+    EXPECT_NEAR(x[j], std::cos(two_pi * 37.0 * j / n + 0.4), 1e-12);
 }
 
 // --- transfer functions ------------------------------------------------------------------------
@@ -128,7 +128,7 @@ TEST(Sources, CylinderDipoleApproachesItsLowKaLimit) {
       const double k = ka / a, r = kr / k;
       if (r < a) continue;
       const cd h1(std::cyl_bessel_j(1.0, kr), -std::cyl_neumann(1.0, kr));  // libstdc++, not GSL
-      const cd limit = 0.5 * kPi * kAir.impedance() * ka * ka * 0.5 * h1;
+      const cd limit = 0.5 * pi * kAir.impedance() * ka * ka * 0.5 * h1;
       const double err = relative(s->transfer(k * kAir.sound_speed, r, 0.5), limit);
       EXPECT_LT(err, 2 * ka * ka * std::fabs(std::log(ka))) << "kr " << kr << " ka " << ka;
       if (previous < 1) EXPECT_LT(err, 0.05 * previous);
@@ -145,7 +145,7 @@ TEST(Sources, FieldsAreOutgoing) {
     const double a = 3e-3;
     const auto s = make_source(name, a, kAir);
     for (double f : {100.0, 2000.0, 20000.0}) {
-      const double w = 2 * kPi * f, k = w / kAir.sound_speed;
+      const double w = two_pi * f, k = w / kAir.sound_speed;
       for (double r = a; r < 200 / k; r *= 1.3) {
         const double dr = 1e-4 * r;
         const double slope = std::arg(s->transfer(w, r + dr, 1) / s->transfer(w, r, 1)) / dr;
@@ -164,9 +164,8 @@ TEST(Sources, SurfacePowerLeavesThroughTheFarField) {
     double pattern_integral_surface;  // ∫ Θ² dS / a^d on the body (d = 1 cylinder, 2 sphere)
   };
   // Cylinder per unit length: ∫ dφ = 2π, ∫ cos² = π. Sphere: ∫ dΩ = 4π, ∫ cos² dΩ = 4π/3.
-  for (const Body& b :
-       {Body{"cylinder-monopole", 2 * kPi}, Body{"cylinder-dipole", kPi},
-        Body{"pulsating-sphere", 4 * kPi}, Body{"oscillating-sphere", 4 * kPi / 3}}) {
+  for (const Body& b : {Body{"cylinder-monopole", two_pi}, Body{"cylinder-dipole", pi},
+                        Body{"pulsating-sphere", 4 * pi}, Body{"oscillating-sphere", 4 * pi / 3}}) {
     const double a = 4e-3;
     const auto s = make_source(b.name, a, kAir);
     const int d = s->cylindrical() ? 1 : 2;
@@ -192,12 +191,12 @@ TEST(Sources, SeedZeroRingFormCarriesEquation19sTermsAndItsSmallArgumentLimit) {
   const auto paper = make_source("cylinder-dipole-paper", a, kAir);
   const auto exact = make_source("cylinder-dipole", a, kAir);
   for (double f : {50.0, 500.0, 5000.0}) {
-    const double w = 2 * kPi * f, k = w / kAir.sound_speed, r = 10e-3;
-    const double denominator = 0.25 + std::pow(2 / (kPi * k * k * a * a), 2);
+    const double w = two_pi * f, k = w / kAir.sound_speed, r = 10e-3;
+    const double denominator = 0.25 + std::pow(2 / (pi * k * k * a * a), 2);
     const cd bracket = paper->transfer(w, r, 0.7) * denominator / (-kI * kAir.impedance() * 0.7);
-    const double first = k * r / 4 - 4 / (kPi * kPi * k * k * k * a * a * r);
+    const double first = k * r / 4 - 4 / (pi * pi * k * k * k * a * a * r);
     EXPECT_NEAR(bracket.real(), first, 1e-12 * std::fabs(first)) << f;
-    const double second = r / (kPi * k * a * a) + 1 / (kPi * k * r);
+    const double second = r / (pi * k * a * a) + 1 / (pi * k * r);
     EXPECT_NEAR(bracket.imag(), second, 1e-12 * second) << f;
   }
   // Both ka and kr small: it approaches the exact dipole; at kr ~ 1 it is off by tens of percent.
@@ -222,7 +221,7 @@ TEST(Sources, SeedZeroBallFormIsEquation23) {
   const auto exact = make_source("pulsating-sphere", a, kAir);
   for (double f : {30.0, 1000.0, 20000.0})
     for (double r : {a, 10e-3, 1.0}) {
-      const double w = 2 * kPi * f, k = w / kAir.sound_speed;
+      const double w = two_pi * f, k = w / kAir.sound_speed;
       const cd eq23 = kAir.impedance() * k * a * a / (std::sqrt(1 + k * a * k * a) * r) *
                       std::polar(1.0, std::atan(1 / (k * a)));
       EXPECT_LT(relative(paper->transfer(w, r, 0), eq23), 1e-12);
@@ -271,13 +270,13 @@ TEST(Sources, BadArgumentsAreNamed) {
 // N + 1 samples of U cos(ωt + φ) at `rate` (the record and the sample after it).
 std::vector<double> tone(std::size_t n, double rate, double f, double U, double phase) {
   std::vector<double> u(n + 1);
-  for (std::size_t i = 0; i <= n; ++i) u[i] = U * std::cos(2 * kPi * f * i / rate + phase);
+  for (std::size_t i = 0; i <= n; ++i) u[i] = U * std::cos(two_pi * f * i / rate + phase);
   return u;
 }
 
 // The steady pressure of that tone through H: Re(H U e^{i(ωt + φ)}).
 double tone_pressure(cd H, double t, double f, double U, double phase) {
-  return (H * U * std::polar(1.0, 2 * kPi * f * t + phase)).real();
+  return (H * U * std::polar(1.0, two_pi * f * t + phase)).real();
 }
 
 TEST(Pressure, FixedSourceTurnsAToneIntoItsTransferFunction) {
@@ -288,7 +287,7 @@ TEST(Pressure, FixedSourceTurnsAToneIntoItsTransferFunction) {
     const auto s = make_source(name, 5e-3, kAir);
     const double f = 35 * rate / n;  // on a bin: the record is whole periods
     const auto p = radiate_fixed(*s, tone(n, rate, f, 1e-3, 0.3), rate, 0.012, 0.9, fft);
-    const cd H = s->transfer(2 * kPi * f, 0.012, 0.9);
+    const cd H = s->transfer(two_pi * f, 0.012, 0.9);
     for (std::size_t i = 0; i < n; i += 37)
       EXPECT_NEAR(p[i], tone_pressure(H, i / rate, f, 1e-3, 0.3), 1e-12 * std::abs(H)) << name;
   }
@@ -304,7 +303,7 @@ TEST(Pressure, RecordThatIsNotWholePeriodsHasNoSpikeAtItsEnds) {
   RealFft fft(n);
   const auto s = make_source("cylinder-dipole", 5.79e-3, kAir);
   const auto p = radiate_fixed(*s, tone(n, rate, f, U, 1.1), rate, 0.01, 1, fft);
-  const cd H = s->transfer(2 * kPi * f, 0.01, 1);
+  const cd H = s->transfer(two_pi * f, 0.01, 1);
   const double amplitude = std::abs(H) * U;
   double err2 = 0, ref2 = 0, got2 = 0, worst = 0, worst_inside = 0;
   for (std::size_t i = 0; i < n; ++i) {
@@ -318,8 +317,8 @@ TEST(Pressure, RecordThatIsNotWholePeriodsHasNoSpikeAtItsEnds) {
   // carries an energy of order J² (Σ 2/(πn)² = J²/3 for the sinc tails, plus the half-jump at the
   // two samples beside it), whatever N: measured 1.26 J² here.
   const double jump = tone_pressure(H, n / rate, f, U, 1.1) - tone_pressure(H, 0, f, U, 1.1);
-  EXPECT_LT(worst, 1.5 * amplitude);                        // no spike
-  EXPECT_LT(worst_inside, std::fabs(jump) / (kPi * 1000));  // the tail: J/(πn)
+  EXPECT_LT(worst, 1.5 * amplitude);                       // no spike
+  EXPECT_LT(worst_inside, std::fabs(jump) / (pi * 1000));  // the tail: J/(πn)
   EXPECT_LT(err2, 2 * jump * jump);
   EXPECT_NEAR(10 * std::log10(got2 / ref2), 0.0, 0.01);  // the level within 0.01 dB
 }
@@ -330,9 +329,9 @@ TEST(PeriodicInterpolator, IsExactOnSamplesAndBandLimitedBetween) {
   for (double fraction : {0.1, 0.25, 0.4}) {  // of the sample rate (Nyquist = 0.5)
     const double cycles = std::round(fraction * n);
     std::vector<double> x(n);
-    for (std::size_t i = 0; i < n; ++i) x[i] = std::sin(2 * kPi * cycles * i / n + 0.2);
+    for (std::size_t i = 0; i < n; ++i) x[i] = std::sin(two_pi * cycles * i / n + 0.2);
     for (double s : {3.0, 17.37, -4.81, 999.5, 1500.25}) {
-      const double expected = std::sin(2 * kPi * cycles * s / n + 0.2);
+      const double expected = std::sin(two_pi * cycles * s / n + 0.2);
       // pressure.h's figures: ≤ 3e-5 up to 0.4 Nyquist, ≤ 2e-4 up to 0.84 Nyquist.
       EXPECT_NEAR(at(x, s), expected, fraction <= 0.2 ? 3e-5 : 2e-4) << fraction << " " << s;
     }
@@ -348,8 +347,8 @@ TEST(Pressure, MovingSourceOnAFixedPathEqualsTheFixedSource) {
     const auto s = make_series_source(name, 2e-3, kAir);
     std::vector<double> u(n + 1);
     for (std::size_t i = 0; i <= n; ++i)
-      u[i] = 1e-4 *
-             (std::sin(2 * kPi * 40.5 * i / rate) + 0.3 * std::cos(2 * kPi * 3210.0 * i / rate));
+      u[i] =
+          1e-4 * (std::sin(two_pi * 40.5 * i / rate) + 0.3 * std::cos(two_pi * 3210.0 * i / rate));
     SourcePath path{std::vector<double>(n, 0.0137), std::vector<double>(n, -0.6)};
     const auto moving = radiate_moving(*s, u, rate, path, fft);
     const auto fixed = radiate_fixed(*s, u, rate, 0.0137, -0.6, fft);
@@ -377,20 +376,20 @@ TEST(Pressure, MovingSourceFollowsItsInstantGeometry) {
   const auto s = make_series_source("oscillating-sphere", a, kAir);
   SourcePath path;
   for (std::size_t i = 0; i < n; ++i) {
-    const double phase = 2 * kPi * i / n;
+    const double phase = two_pi * i / n;
     path.distance.push_back(a * (21 - 19 * std::cos(phase)));
     path.cos_angle.push_back(std::cos(0.5 * phase));
   }
   const auto p = radiate_moving(*s, tone(n, rate, f, 1e-3, 0), rate, path, fft);
   for (std::size_t i = 0; i < n; i += 13) {
-    const cd H = s->transfer(2 * kPi * f, path.distance[i], path.cos_angle[i]);
+    const cd H = s->transfer(two_pi * f, path.distance[i], path.cos_angle[i]);
     EXPECT_NEAR(p[i], tone_pressure(H, i / rate, f, 1e-3, 0), 1e-4 * std::abs(H) * 1e-3) << i;
   }
 }
 
 TEST(Pressure, CoherentAndEnergeticSums) {
   std::vector<double> p1(1000), p2(1000);
-  for (std::size_t i = 0; i < p1.size(); ++i) p1[i] = p2[i] = std::sin(2 * kPi * 7 * i / 1000.0);
+  for (std::size_t i = 0; i < p1.size(); ++i) p1[i] = p2[i] = std::sin(two_pi * 7 * i / 1000.0);
   const double one = root_mean_square(p1);
   EXPECT_NEAR(root_mean_square(p1), std::sqrt(0.5), 1e-12);
   // Two equal sources in phase: +6.02 dB coherent, +3.01 dB energetic.
@@ -417,7 +416,7 @@ TEST(Microphones, BallPathDistancesAndAngles) {
   EXPECT_NEAR(beyond.distance[0], 0.03 - 1e-6, 1e-15);
   EXPECT_NEAR(beyond.cos_angle[0], 1.0, 1e-15);
   // A quarter cage turn later the ball is on +y.
-  const auto later = ball_path({0.0, 0.08}, 0.05, 0.0, 10.0, {kPi / 20}, {0.0});
+  const auto later = ball_path({0.0, 0.08}, 0.05, 0.0, 10.0, {pi / 20}, {0.0});
   EXPECT_NEAR(later.distance[0], 0.03, 1e-12);
 }
 

@@ -11,6 +11,7 @@
 #include <gtest/gtest.h>
 
 #include "bearing/case_file.h"
+#include "bearing/constants.h"
 #include "bearing/errors.h"
 #include "bearing/models/ball_dofs.h"
 #include "bearing/output.h"
@@ -332,11 +333,11 @@ TEST(BallDynamics, WritesPerBallChannelsAndTheCageUsed) {
   const RunSummary s = summarize(c, r);
   const auto j = summary_json(c, r, s);
   EXPECT_EQ(j["cage"]["slip"].get<double>(), 0.03);
-  EXPECT_NEAR(j["cage"]["speed"].get<double>(), 2 * 3.14159265358979 * r.frequencies.ftf, 1e-12);
+  EXPECT_NEAR(j["cage"]["speed"].get<double>(), two_pi * r.frequencies.ftf, 1e-12);
   // The spin channel: seed 004's kinematic spin, 2π BSF relative to the cage (α = 0), slowed by
   // the slip to where the traction balances.
   const auto& wb = r.response.channel("wb1");
-  EXPECT_GT(wb.back(), 0.9 * 2 * 3.14159265358979 * r.frequencies.bsf);
+  EXPECT_GT(wb.back(), 0.9 * 2 * pi * r.frequencies.bsf);
 }
 
 TEST(BallDynamics, CaseErrorsNameTheKey) {

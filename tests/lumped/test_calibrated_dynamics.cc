@@ -9,6 +9,7 @@
 #include <gtest/gtest.h>
 
 #include "bearing/case_file.h"
+#include "bearing/constants.h"
 #include "bearing/errors.h"
 #include "bearing/models/three_dof.h"
 #include "bearing/simulation.h"
@@ -17,8 +18,6 @@
 
 namespace bearing {
 namespace {
-
-constexpr double kPi = 3.14159265358979323846;
 
 Case case_with(std::vector<std::string> sets) {
   std::vector<Override> o;
@@ -94,7 +93,7 @@ TEST(CalibratedDynamics, GeneralExponentMatchesTheStaticSolution) {
   double static_y = 0;
   for (int k = 0; k < m; ++k) {
     StaticLoadOptions o;
-    o.phase = 2 * kPi / Z * k / m;
+    o.phase = two_pi / Z * k / m;
     o.exponent = n;
     static_y += solve_static_load(Z, cc.K, gap, c.operation.load, o).deflection.y() / m;
   }
@@ -106,7 +105,7 @@ TEST(CalibratedDynamics, GeneralExponentMatchesTheStaticSolution) {
   const StaticLoadResult s = solve_static_load(Z, cc.K, gap, c.operation.load, o);
   double fx = 0, fy = 0;
   for (int j = 0; j < Z; ++j) {
-    const double th = 2 * kPi * j / Z;
+    const double th = two_pi * j / Z;
     const double d = s.deflection.x() * std::cos(th) + s.deflection.y() * std::sin(th) - gap;
     if (d <= 0) continue;
     fx += cc.K * std::pow(d, n) * std::cos(th);

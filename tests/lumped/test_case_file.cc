@@ -7,13 +7,13 @@
 #include <gtest/gtest.h>
 
 #include "bearing/case_file.h"
+#include "bearing/constants.h"
 #include "bearing/errors.h"
 #include "bearing/presets.h"
 
 using namespace bearing;
 
 namespace {
-constexpr double kPi = 3.14159265358979323846;
 constexpr const char* kFull = R"(
 [bearing]
 ball_diameter = "15.081 mm"
@@ -54,7 +54,7 @@ TEST(CaseFile, ReadsEveryKeyInSI) {
   EXPECT_DOUBLE_EQ(c.bearing.ball.poisson, 0.26);
   EXPECT_DOUBLE_EQ(c.bearing.ball.density, 7850.0);  // from [material], not overridden
   EXPECT_DOUBLE_EQ(c.bearing.rings.young, 208e9);
-  EXPECT_DOUBLE_EQ(c.operation.speed, 2000 * 2 * kPi / 60);
+  EXPECT_DOUBLE_EQ(c.operation.speed, 2000 * two_pi / 60);
   EXPECT_DOUBLE_EQ(c.operation.load.y(), -500.0);
   EXPECT_EQ(c.model.contact, ContactLaw::hamrock_brewe);
 }
@@ -85,7 +85,7 @@ TEST(CaseFile, CommandLineOverridesWinOverTheFile) {
       parse_override("material.rings.young=200 GPa"), parse_override("operation.load=[0, -1000]"),
       parse_override("model.contact=harris-table")};
   const Case c = parse_case(kFull, "full.toml", sets);
-  EXPECT_DOUBLE_EQ(c.operation.speed, 3000 * 2 * kPi / 60);
+  EXPECT_DOUBLE_EQ(c.operation.speed, 3000 * two_pi / 60);
   EXPECT_EQ(c.bearing.balls, 10);
   EXPECT_DOUBLE_EQ(c.bearing.rings.young, 200e9);
   EXPECT_DOUBLE_EQ(c.bearing.ball.young, 315e9);
@@ -103,11 +103,11 @@ TEST(CaseFile, OverrideCanChooseAPresetByNumber) {
 TEST(CaseFile, DefaultCaseIsThe6308At2000Rpm) {
   const Case c = bearing::default_case();
   EXPECT_EQ(c.preset, "6308");
-  EXPECT_DOUBLE_EQ(c.operation.speed, 2000 * 2 * kPi / 60);
+  EXPECT_DOUBLE_EQ(c.operation.speed, 2000 * two_pi / 60);
   EXPECT_LT(c.operation.load.y(), 0.0);
   EXPECT_EQ(c.source, "built-in default case");
   const Case faster = bearing::default_case({parse_override("operation.speed=1000rpm")});
-  EXPECT_DOUBLE_EQ(faster.operation.speed, 1000 * 2 * kPi / 60);
+  EXPECT_DOUBLE_EQ(faster.operation.speed, 1000 * two_pi / 60);
 }
 
 TEST(CaseFile, ExamplesAllLoad) {
@@ -188,7 +188,7 @@ TEST(CaseFile, ReadsTheDynamicsTables) {
   ASSERT_EQ(c.excitation.inner_waviness.size(), 1u);
   EXPECT_EQ(c.excitation.inner_waviness[0].order, 8);
   EXPECT_DOUBLE_EQ(c.excitation.inner_waviness[0].amplitude, 0.5e-6);
-  EXPECT_DOUBLE_EQ(c.excitation.inner_waviness[0].phase, kPi / 6);
+  EXPECT_DOUBLE_EQ(c.excitation.inner_waviness[0].phase, pi / 6);
   EXPECT_DOUBLE_EQ(c.excitation.outer_waviness[0].phase, 0.0);
   // values are D_j − D; the model wants ΔD_j = D − D_j (a larger ball adds approach).
   ASSERT_EQ(c.excitation.ball_size_errors.size(), 8u);
@@ -228,7 +228,7 @@ TEST(CaseFile, WavinessTableIsReadRelativeToTheCaseFile) {
   ASSERT_EQ(c.excitation.inner_waviness.size(), 3u);
   EXPECT_EQ(c.excitation.inner_waviness[1].order, 5);
   EXPECT_DOUBLE_EQ(c.excitation.inner_waviness[1].amplitude, 0.2e-6);
-  EXPECT_DOUBLE_EQ(c.excitation.inner_waviness[1].phase, kPi / 2);
+  EXPECT_DOUBLE_EQ(c.excitation.inner_waviness[1].phase, pi / 2);
   EXPECT_EQ(c.excitation.inner_waviness[2].order, 8);
 }
 
@@ -266,7 +266,7 @@ TEST(CaseFile, BallModelTablesRoundTripExactly) {
       "slide_speed = \"0.05 m/s\"\n[ball]\ncentrifugal = false\n[output]\nball_dynamics = true\n",
       "balls.toml");
   const double D = a.bearing.ball_diameter;
-  EXPECT_NEAR(a.ball.mass, 7850 * 3.14159265358979 * D * D * D / 6, 1e-12);
+  EXPECT_NEAR(a.ball.mass, 7850 * pi * D * D * D / 6, 1e-12);
   EXPECT_NEAR(a.ball.inertia, a.ball.mass * D * D / 10, 1e-18);
   EXPECT_EQ(a.ball.damping, a.rotor.damping);
   EXPECT_EQ(a.cage.friction, 0.01);
@@ -331,7 +331,7 @@ TEST(CaseFile, ReadsTheAcousticsTable) {
   EXPECT_TRUE(ac.enabled);
   ASSERT_EQ(ac.microphones.size(), 2u);
   EXPECT_DOUBLE_EQ(ac.microphones[0].radius, 0.010);
-  EXPECT_DOUBLE_EQ(ac.microphones[0].angle, -kPi / 2);
+  EXPECT_DOUBLE_EQ(ac.microphones[0].angle, -pi / 2);
   EXPECT_DOUBLE_EQ(ac.microphones[1].radius, 0.5);
   EXPECT_DOUBLE_EQ(ac.microphones[1].angle, 0.25);
   EXPECT_EQ(ac.summation, Summation::energetic);

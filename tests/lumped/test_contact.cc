@@ -12,6 +12,7 @@
 #include <gsl/gsl_sf_ellint.h>
 
 #include "bearing/bearing.h"
+#include "bearing/constants.h"
 #include "bearing/contact.h"
 #include "bearing/errors.h"
 #include "bearing/hertz.h"
@@ -41,8 +42,8 @@ TEST(HertzExact, SphereLimitIsExact) {
   const HertzShape s = exact->shape(0.0);
   EXPECT_EQ(s.ellipticity, 1.0);
   EXPECT_EQ(s.delta_star, 1.0);
-  EXPECT_DOUBLE_EQ(s.elliptic_K, M_PI_2);
-  EXPECT_DOUBLE_EQ(s.elliptic_E, M_PI_2);
+  EXPECT_DOUBLE_EQ(s.elliptic_K, pi / 2);
+  EXPECT_DOUBLE_EQ(s.elliptic_E, pi / 2);
   EXPECT_DOUBLE_EQ(s.a_star, 1.0);
   EXPECT_DOUBLE_EQ(s.b_star, 1.0);
   EXPECT_EQ(exact->name(), "exact");
@@ -144,7 +145,7 @@ TEST(HertzExact, SphereInSphericalSeatMatchesJohnsonClosedForm) {
     EXPECT_NEAR(rc.approach(P) / delta, 1.0, 1e-12) << P;
     EXPECT_NEAR(rc.semi_major(P) / a, 1.0, 1e-12) << P;
     EXPECT_NEAR(rc.semi_minor(P) / a, 1.0, 1e-12) << P;
-    EXPECT_NEAR(rc.peak_pressure(P) / (3 * P / (2 * M_PI * a * a)), 1.0, 1e-12) << P;
+    EXPECT_NEAR(rc.peak_pressure(P) / (3 * P / (two_pi * a * a)), 1.0, 1e-12) << P;
   }
   // Johnson: P = (4/3) E* R^{1/2} δ^{3/2}.
   EXPECT_NEAR(rc.K / (4.0 / 3.0 * Estar * std::sqrt(R)), 1.0, 1e-12);
@@ -161,7 +162,7 @@ TEST(HertzExact, SphereOnRigidFlatPublishedExercise) {
   rc.f_rho = 0.0;
   rc.compliance = (1 - 0.3 * 0.3) / 1000e6;  // rigid flat adds nothing
   rc.shape = make_exact_hertz()->shape(0.0);
-  EXPECT_NEAR(rc.semi_major(30 * 2 * M_PI) * 1e3, 1.010, 0.0005);  // to the printed digits
+  EXPECT_NEAR(rc.semi_major(30 * two_pi) * 1e3, 1.010, 0.0005);  // to the printed digits
 }
 
 TEST(HertzExact, RejectsInvalidCurvatureDifference) {
@@ -361,7 +362,7 @@ TEST(ContactCurvatures, ZeroContactAngleReducesToRacewayDiameters) {
 
 TEST(ContactCurvatures, ContactAngleEntersThroughCosine) {
   Bearing b = bearing_6308();
-  b.contact_angle = M_PI / 6;
+  b.contact_angle = pi / 6;
   const double d = b.pitch_diameter / std::cos(b.contact_angle);  // same g as α = 0 with d_m = d
   Bearing b0 = bearing_6308();
   b0.pitch_diameter = d;

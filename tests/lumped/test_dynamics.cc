@@ -11,6 +11,7 @@
 #include <gtest/gtest.h>
 
 #include "bearing/case_file.h"
+#include "bearing/constants.h"
 #include "bearing/kinematics.h"
 #include "bearing/models/three_dof.h"
 #include "bearing/simulation.h"
@@ -19,8 +20,6 @@
 
 namespace bearing {
 namespace {
-
-constexpr double kPi = 3.14159265358979323846;
 
 // The default case (6308, 2000 rpm, 20 N down) with overrides.
 Case case_with(std::vector<std::string> sets) {
@@ -73,14 +72,14 @@ TEST(Dynamics, AccelerationPeaksAtTheContactResonance) {
   const double wc = cage_speed(c.bearing, c.operation.speed);
   double f_min = 1e300, f_max = 0;
   for (int k = 0; k < 50; ++k) {
-    const double t = (2 * kPi / Z / wc) * k / 50.0;  // one ball-pass period
+    const double t = (two_pi / Z / wc) * k / 50.0;  // one ball-pass period
     StaticLoadOptions o;
     o.phase = wc * t;
     const auto st = solve_static_load(Z, r.contact.K, c.bearing.ball_gap(), c.operation.load, o);
     const std::vector<double> q = {st.deflection.x(), st.deflection.y()}, v = {0, 0};
     std::vector<double> dfdq(4), dfdv(4);
     model->force_jacobian(t, q.data(), v.data(), dfdq.data(), dfdv.data());
-    const double f = std::sqrt(-dfdq[3] / c.rotor.mass) / (2 * kPi);
+    const double f = std::sqrt(-dfdq[3] / c.rotor.mass) / two_pi;
     f_min = std::min(f_min, f);
     f_max = std::max(f_max, f);
   }
@@ -105,7 +104,7 @@ TEST(Dynamics, MeanDeflectionIsTheAveragedStaticSolution) {
   double static_y = 0;
   for (int k = 0; k < n; ++k) {
     StaticLoadOptions o;
-    o.phase = 2 * kPi / Z * k / n;
+    o.phase = two_pi / Z * k / n;
     static_y += solve_static_load(Z, r.contact.K, c.bearing.ball_gap(), c.operation.load, o)
                     .deflection.y() /
                 n;
@@ -121,7 +120,7 @@ TEST(Dynamics, BallPassFrequencyScalesWithNumberOfBalls) {
     const Case c = case_with({"bearing.balls=" + std::to_string(Z), "solver.duration=0.7"});
     const SimulationResult r = simulate(c);
     const RunSummary s = summarize(c, r);
-    const double expected = Z * cage_speed(c.bearing, c.operation.speed) / (2 * kPi);
+    const double expected = Z * cage_speed(c.bearing, c.operation.speed) / two_pi;
     EXPECT_NEAR(r.frequencies.bpfo, expected, 1e-9);
     const Peak& px = largest_peak(s, "x");
     const Peak& py = largest_peak(s, "y");
@@ -346,7 +345,7 @@ TEST(Dynamics, PreloadRaisesTheRadialNaturalFrequency) {
     const std::vector<double> q = model->initial_displacement(), v(3, 0.0);
     std::vector<double> dfdq(9), dfdv(9);
     model->force_jacobian(0.0, q.data(), v.data(), dfdq.data(), dfdv.data());
-    const double fn = std::sqrt(-dfdq[4] / c.rotor.mass) / (2 * kPi);
+    const double fn = std::sqrt(-dfdq[4] / c.rotor.mass) / two_pi;
     EXPECT_GT(fn, previous) << "preload " << preload << " N";
     previous = fn;
     if (preload == 100.0) {

@@ -10,13 +10,12 @@
 #include <string>
 #include <vector>
 
+#include "bearing/constants.h"
 #include "bearing/errors.h"
 #include "bearing/excitation.h"
 
 namespace bearing {
 namespace {
-
-constexpr double kPi = 3.14159265358979323846;
 
 Waviness sample_waviness() {
   Waviness w;
@@ -51,9 +50,9 @@ TEST(ExcitationWaviness, DerivativesMatchFiniteDifferences) {
 // A single harmonic with phase ψ = π/2 is A cos(Nφ): its extremes sit where expected.
 TEST(ExcitationWaviness, PhaseShiftsTheProfile) {
   Waviness w;
-  w.harmonics = {{5, 2e-6, kPi / 2}};
+  w.harmonics = {{5, 2e-6, pi / 2}};
   EXPECT_NEAR(w.profile(0.0), 2e-6, 1e-20);
-  EXPECT_NEAR(w.profile(kPi / 5), -2e-6, 1e-20);
+  EXPECT_NEAR(w.profile(pi / 5), -2e-6, 1e-20);
   EXPECT_NEAR(w.second_derivative(0.0), -25 * 2e-6, 1e-18);
 }
 
@@ -93,10 +92,10 @@ TEST(ExcitationTable, DefaultUnitsAreMicrometresAndDegrees) {
   ASSERT_EQ(h.size(), 2u);
   EXPECT_EQ(h[0].order, 4);
   EXPECT_DOUBLE_EQ(h[0].amplitude, 0.5e-6);
-  EXPECT_DOUBLE_EQ(h[0].phase, kPi / 2);
+  EXPECT_DOUBLE_EQ(h[0].phase, pi / 2);
   EXPECT_EQ(h[1].order, 5);
   EXPECT_DOUBLE_EQ(h[1].amplitude, 0.25e-6);
-  EXPECT_DOUBLE_EQ(h[1].phase, -kPi);
+  EXPECT_DOUBLE_EQ(h[1].phase, -pi);
 }
 
 TEST(ExcitationTable, TwoColumnsMeanZeroPhase) {
@@ -120,7 +119,7 @@ TEST(ExcitationTable, HeaderUnits) {
     const TempFile f("order,amplitude_um,phase_deg\n3,2,30\n");
     const auto h = read_waviness_table(f.path(), "k");
     EXPECT_DOUBLE_EQ(h[0].amplitude, 2e-6);
-    EXPECT_DOUBLE_EQ(h[0].phase, kPi / 6);
+    EXPECT_DOUBLE_EQ(h[0].phase, pi / 6);
   }
   {  // columns in any order, plain names in the default units, other length units
     const TempFile f("Phase, Amplitude_nm, Order\r\n45, 300, 11\r\n");
@@ -128,7 +127,7 @@ TEST(ExcitationTable, HeaderUnits) {
     ASSERT_EQ(h.size(), 1u);
     EXPECT_EQ(h[0].order, 11);
     EXPECT_DOUBLE_EQ(h[0].amplitude, 300e-9);
-    EXPECT_DOUBLE_EQ(h[0].phase, kPi / 4);
+    EXPECT_DOUBLE_EQ(h[0].phase, pi / 4);
   }
   {
     const TempFile f("order,amplitude\n9,0.1\n");

@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "bearing/constants.h"
 #include "bearing/errors.h"
 #include "bearing/solvers/integrator.h"
 #include "bearing/solvers/mechanical_system.h"
@@ -82,9 +83,8 @@ class HertzOscillator : public MechanicalSystem {
 /// damper c2 between them: natural frequencies ~10 Hz and ~10 kHz.
 class StiffPair : public MechanicalSystem {
  public:
-  static constexpr double kTwoPi = 6.283185307179586;
-  double M = 1.0, k1 = M * (kTwoPi * 10) * (kTwoPi * 10);
-  double m = 1e-6, k2 = m * (kTwoPi * 1e4) * (kTwoPi * 1e4), c2 = 2.0 * std::sqrt(k2 * m);
+  double M = 1.0, k1 = M * (two_pi * 10) * (two_pi * 10);
+  double m = 1e-6, k2 = m * (two_pi * 1e4) * (two_pi * 1e4), c2 = 2.0 * std::sqrt(k2 * m);
   int dofs() const override { return 2; }
   void mass(double* mm) const override {
     mm[0] = M;
@@ -119,7 +119,7 @@ class PoisonedOscillator : public LinearOscillator {
 /// so φ passes 1 mm-as-a-number after ~0.1 ms and reaches ~490 rad at 0.5 s.
 class OscillatorAndFlywheel : public MechanicalSystem {
  public:
-  static constexpr double kOmegaN = 6.283185307179586 * 50;          // [rad/s]
+  static constexpr double kOmegaN = two_pi * 50;                     // [rad/s]
   static constexpr double kStiffness = kOmegaN * kOmegaN;            // [N/m] on 1 kg
   LinearOscillator oscillator{1.0, kStiffness, 2 * 0.01 * kOmegaN};  // ζ = 0.01
   double J = 2e-4, b = 2e-2, T = 20.0, d = 0.0;  // [kg m², N m s, N m, N m s²]: τ = 10 ms

@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "bearing/bearing.h"
+#include "bearing/constants.h"
 #include "bearing/errors.h"
 #include "bearing/kinematics.h"
 #include "bearing/presets.h"
@@ -12,10 +13,8 @@
 namespace bearing {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
-
 double rpm(double n) {
-  return 2 * kPi * n / 60;
+  return two_pi * n / 60;
 }
 
 // The 6308 of seed 003 Table 1 (conformity 0.52 and steel assumed; see presets.cc).
@@ -40,7 +39,7 @@ TEST(Kinematics, Seed003Table2For6308At2000Rpm) {
 
 TEST(Kinematics, CageSpeedFormula) {
   Bearing b = bearing_6308();
-  b.contact_angle = 15 * kPi / 180;
+  b.contact_angle = 15 * pi / 180;
   const double g = b.ball_diameter * std::cos(b.contact_angle) / b.pitch_diameter;
   EXPECT_NEAR(cage_speed(b, 100.0), 50.0 * (1 - g), 1e-12);
   EXPECT_NEAR(cage_speed(b, 100.0, 40.0), 50.0 * (1 - g) + 20.0 * (1 + g), 1e-12);

@@ -12,6 +12,7 @@
 #include <thread>
 #include <vector>
 
+#include "bearing/constants.h"
 #include "bearing/contact.h"
 #include "bearing/errors.h"
 #include "bearing/excitation.h"
@@ -27,16 +28,13 @@
 namespace bearing {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
-constexpr double kG = 9.80665;
-
 // The 6308 of seeds 002/003 at 2000 rpm under 20 N down, m = 0.6 kg, c = 200 N s/m.
 ModelInputs inputs_6308() {
   ModelInputs in;
   in.bearing = preset("6308");
   in.contact = contact_constants(in.bearing, *make_exact_hertz());
   in.hertz_method = HertzMethod::exact;
-  in.inner_speed = 2000 * 2 * kPi / 60;
+  in.inner_speed = 2000 * two_pi / 60;
   in.load = Eigen::Vector2d(0, -20);
   in.mass = 0.6;
   in.damping = 200;
@@ -58,7 +56,7 @@ Waviness random_waviness(int max_order, double amplitude, unsigned seed) {
     return (s >> 8) / double(1 << 24);
   };
   for (int n = 1; n <= max_order; ++n)
-    if (next() < 0.5) w.harmonics.push_back({n, amplitude * next(), 2 * kPi * next()});
+    if (next() < 0.5) w.harmonics.push_back({n, amplitude * next(), two_pi * next()});
   return w;
 }
 
@@ -228,8 +226,7 @@ ModelInputs oversize_balls(ModelInputs in) {
 }
 
 double theta(const ModelInputs& in, int j, double t) {
-  return in.cage_phase + 2 * kPi * j / in.bearing.balls +
-         cage_speed(in.bearing, in.inner_speed) * t;
+  return in.cage_phase + two_pi * j / in.bearing.balls + cage_speed(in.bearing, in.inner_speed) * t;
 }
 
 TEST(TwoDof, WavinessIncreasesApproachAndLoad) {
@@ -241,7 +238,7 @@ TEST(TwoDof, WavinessIncreasesApproachAndLoad) {
     w.harmonics = {{6, 1e-6, 0.0}};
     // Phase so that ball 0 sits on a crest: N φ_0 + ψ = π/2.
     const double phi0 = theta(in, 0, t) - (inner ? in.inner_speed * t : 0.0);
-    w.harmonics[0].phase = kPi / 2 - 6 * phi0;
+    w.harmonics[0].phase = pi / 2 - 6 * phi0;
     (inner ? in.inner_waviness : in.outer_waviness) = w;
     const auto plain = make_two_dof_model(oversize_balls(inputs_6308()));
     ModelInputs ref = oversize_balls(inputs_6308());
@@ -267,7 +264,7 @@ TEST(TwoDof, InnerWavinessIsSeenInTheRotatingFrame) {
     (inner ? in.inner_waviness : in.outer_waviness) = w;
     const auto m = make_two_dof_model(in);
     const double wc = cage_speed(in.bearing, in.inner_speed);
-    const double fi = in.inner_speed / (2 * kPi), fc = wc / (2 * kPi);
+    const double fi = in.inner_speed / two_pi, fc = wc / two_pi;
     const double f_expected = inner ? N * (fi - fc) : N * fc;
     for (double t : {0.0, 0.00123, 0.0271, 0.5}) {
       const auto l = loads_of(*m, t, {0, 0});
@@ -293,7 +290,7 @@ TEST(TwoDof, InnerWavinessIsSeenInTheRotatingFrame) {
 // the direct sum Waviness::profile for every ball, including the full seed 003 table.
 TEST(TwoDof, FoldedWavinessMatchesDirectSum) {
   for (int Z : {3, 8, 13}) {
-    for (double phase : {-0.4, 0.0, kPi / 4, kPi / 2}) {
+    for (double phase : {-0.4, 0.0, pi / 4, pi / 2}) {
       ModelInputs in = inputs_6308();
       in.bearing.balls = Z;
       in = oversize_balls(in);
@@ -355,10 +352,11 @@ TEST(TwoDof, DampingAndGravity) {
   const auto m = make_two_dof_model(in);
   const auto f = eval_force(*m, 0.0, {0, 0}, {0.01, -0.02});
   EXPECT_NEAR(f[0], -200 * 0.01, 1e-12);
-  EXPECT_NEAR(f[1], -20 - 0.6 * kG + 200 * 0.02, 1e-12);
+  EXPECT_NEAR(f[1], -20 - 0.6 * standard_gravity + 200 * 0.02, 1e-12);
   // The static state carries the weight too.
   const auto q0 = m->initial_displacement();
-  const auto s = solve_static_load(8, in.contact.K, 7e-6, Eigen::Vector2d(0, -20 - 0.6 * kG));
+  const auto s =
+      solve_static_load(8, in.contact.K, 7e-6, Eigen::Vector2d(0, -20 - 0.6 * standard_gravity));
   EXPECT_NEAR(q0[1], s.deflection.y(), 1e-15);
   EXPECT_LT(norm(eval_force(*make_two_dof_model(at_rest(in)), 0, q0, {0, 0})), 1e-9 * 26);
 }
@@ -368,7 +366,7 @@ TEST(TwoDof, BallsAdvanceAtTheCageSpeed) {
   ModelInputs in = inputs_6308();
   in.load = Eigen::Vector2d(0, -500);
   const auto m = make_two_dof_model(in);
-  const double pitch_time = 2 * kPi / (8 * cage_speed(in.bearing, in.inner_speed));
+  const double pitch_time = two_pi / (8 * cage_speed(in.bearing, in.inner_speed));
   const std::vector<double> q = m->initial_displacement();
   const auto a = loads_of(*m, 0.002, q), b = loads_of(*m, 0.002 + pitch_time, q);
   for (int j = 0; j < 8; ++j) EXPECT_NEAR(b[j], a[(j + 1) % 8], 1e-9 * 500);
@@ -771,11 +769,11 @@ TEST(ThreeDof, AxialPreloadChangesTheCageSpeed) {
   in.load = Eigen::Vector2d(0, -500);
   const auto m = make_three_dof_model(in);
   const auto q0 = m->initial_displacement();
-  const double pitch_time = 2 * kPi / (8 * three_dof_cage_speed(in));
+  const double pitch_time = two_pi / (8 * three_dof_cage_speed(in));
   const auto a = loads_of(*m, 0.003, q0), b = loads_of(*m, 0.003 + pitch_time, q0);
   for (int j = 0; j < 8; ++j) EXPECT_NEAR(b[j], a[(j + 1) % 8], 1e-9 * a[(j + 1) % 8]);
   // ... and not at the 2-DOF cage speed.
-  const auto c = loads_of(*m, 0.003 + 2 * kPi / (8 * w2), q0);
+  const auto c = loads_of(*m, 0.003 + two_pi / (8 * w2), q0);
   double diff = 0;
   for (int j = 0; j < 8; ++j) diff = std::max(diff, std::abs(c[j] - a[(j + 1) % 8]));
   EXPECT_GT(diff, 1e-6);
@@ -816,6 +814,21 @@ TEST(ThreeDof, InputErrors) {
   EXPECT_NE(input_error(in, true).find("operation.axial_load"), std::string::npos);
 }
 
+// The axial root search doubles its bracket at most 201 times (numerics::grow_bracket), then
+// reports it as a solver error: a load 600 decades below the contact constant.
+TEST(ThreeDof, AxialLoadOutOfReachIsASolverError) {
+  ModelInputs in = inputs_6308();
+  in.contact.K = 1e300;
+  in.axial_load = 1e-300;
+  try {
+    solve_axial_preload(in);
+    ADD_FAILURE() << "no error";
+  } catch (const SolverError& e) {
+    EXPECT_NE(std::string(e.what()).find("could not bracket the ball approach"), std::string::npos)
+        << e.what();
+  }
+}
+
 }  // namespace
 }  // namespace bearing
 
@@ -830,7 +843,7 @@ TEST(TwoDofPhasor, MatchesLibmToAFewUlp) {
     worst = std::max({worst, std::fabs(p.c - std::cos(theta)), std::fabs(p.s - std::sin(theta))});
   }
   EXPECT_LT(worst, 4e-16);
-  for (double theta : {0.0, 1e-300, -1e-12, 3.14159265358979, 1e5, -7.5e5}) {
+  for (double theta : {0.0, 1e-300, -1e-12, bearing::pi, 1e5, -7.5e5}) {
     const auto p = bearing::detail::phasor(theta);
     EXPECT_NEAR(p.c, std::cos(theta), 2e-15 + 1e-16 * std::fabs(theta)) << theta;
     EXPECT_NEAR(p.s, std::sin(theta), 2e-15 + 1e-16 * std::fabs(theta)) << theta;
@@ -851,7 +864,7 @@ ModelInputs inputs_6304(double slip = 0.0, double friction = 0.05) {
   in.bearing = preset("6304");
   in.bearing.clearance = 30e-6;
   in.contact = contact_constants(in.bearing, *make_exact_hertz());
-  in.inner_speed = 2000 * 2 * kPi / 60;
+  in.inner_speed = 2000 * two_pi / 60;
   in.load = Eigen::Vector2d(2000, 0);
   in.mass = 0.4;
   in.damping = 350;
@@ -887,13 +900,13 @@ TEST(BallDofs, InterfaceAndMassesFromTheDensity) {
   EXPECT_EQ(m->dof_names(), (std::vector<std::string>{"x", "y"}));
   std::vector<double> mass(m->dofs());
   m->mass(mass.data());
-  const double D = 9.525e-3, mb = 7850 * kPi * D * D * D / 6;
+  const double D = 9.525e-3, mb = 7850 * pi * D * D * D / 6;
   EXPECT_EQ(mass[0], 0.4);
   EXPECT_NEAR(mass[2], mb, 1e-15);
   EXPECT_NEAR(mass[2 + Z], mb * D * D / 10, 1e-20);  // solid sphere, 2/5 m (D/2)²
   for (int i = 0; i < m->dofs(); ++i) EXPECT_EQ(m->cyclic(i), i >= 2 + Z) << i;
   // Centrifugal load m_b ω_ca² d_m/2 at the pure-rolling cage speed.
-  const double wc = cage_speed(preset("6304"), 2000 * 2 * kPi / 60);
+  const double wc = cage_speed(preset("6304"), 2000 * two_pi / 60);
   EXPECT_NEAR(m->centrifugal_force(), mb * wc * wc * 0.018, 1e-12);
   EXPECT_NEAR(m->cage_speed(), wc, 1e-12);
   EXPECT_NEAR(make_ball_dof_model(inputs_6304(0.05))->cage_speed(), 0.95 * wc, 1e-12);
@@ -980,7 +993,7 @@ TEST(BallDofs, FrictionPowersAddUpToTheDissipation) {
   m->ball_dynamics(t, q.data(), v_rest.data(), spin.data(), qo.data(), fi.data(), fo.data());
   double expected = 0;
   for (int j = 0; j < Z; ++j) {
-    const SlidingSpeeds s = sliding_speeds(b, 2000 * 2 * kPi / 60, m->cage_speed(), spin[j]);
+    const SlidingSpeeds s = sliding_speeds(b, 2000 * two_pi / 60, m->cage_speed(), spin[j]);
     const ContactTraction tr = contact_traction(curve, s, qi[j], qo[j]);
     expected += tr.power;
     EXPECT_NEAR(fi[j], tr.on_ball_inner, 1e-12 * 2000);
@@ -993,7 +1006,7 @@ TEST(BallDofs, FrictionPowersAddUpToTheDissipation) {
 // spin when the cage does not slip.
 TEST(BallDofs, InitialSpinIsKinematic) {
   const Bearing b = preset("6304");
-  const double wi = 2000 * 2 * kPi / 60;
+  const double wi = 2000 * two_pi / 60;
   const auto m0 = make_ball_dof_model(inputs_6304(0.0));
   EXPECT_NEAR(m0->initial_velocity()[2 + 7], rolling_ball_spin(b, wi), 1e-9 * wi);
   const auto m = make_ball_dof_model(inputs_6304(0.05));

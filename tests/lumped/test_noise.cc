@@ -11,14 +11,13 @@
 
 #include "bearing/acoustics/pressure.h"
 #include "bearing/case_file.h"
+#include "bearing/constants.h"
 #include "bearing/errors.h"
 #include "bearing/signal/spectrum.h"
 #include "bearing/simulation.h"
 
 namespace bearing {
 namespace {
-
-constexpr double kPi = 3.14159265358979323846;
 
 std::vector<Override> sets(const std::vector<std::string>& s) {
   std::vector<Override> o;
@@ -197,15 +196,15 @@ TEST(Noise, BallAnglesAreTheModelsAngles) {
             "tolerance = 1e-9\n[output]\nball_loads = true\n",
         "angles.toml");
     const SimulationResult r = simulate(c);
-    const double wc = 2 * kPi * r.frequencies.ftf;
+    const double wc = two_pi * r.frequencies.ftf;
     const int Z = c.bearing.balls;
     for (int j = 0; j < Z; j += 3) {
       const auto& Q = r.response.channel("Q" + std::to_string(j + 1));
       int peaks = 0;
       for (std::size_t k = 1; k + 1 < Q.size(); ++k) {
         if (!(Q[k] > Q[k - 1] && Q[k] >= Q[k + 1] && Q[k] > 0.5 * 50)) continue;
-        const double theta = 2 * kPi * j / Z + wc * r.response.time[k];
-        const double off = std::remainder(theta + kPi / 2, 2 * kPi);
+        const double theta = two_pi * j / Z + wc * r.response.time[k];
+        const double off = std::remainder(theta + pi / 2, two_pi);
         // One output interval turns the cage by ω_c/20 kHz = 1.4e-3 rad.
         EXPECT_LT(std::fabs(off), 2e-3) << kind << " ball " << j + 1 << " t " << r.response.time[k];
         ++peaks;

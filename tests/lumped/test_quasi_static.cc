@@ -11,6 +11,7 @@
 #include <gtest/gtest.h>
 
 #include "bearing/case_file.h"
+#include "bearing/constants.h"
 #include "bearing/errors.h"
 #include "bearing/kinematics.h"
 #include "bearing/models/quasi_static.h"
@@ -20,8 +21,6 @@
 
 namespace bearing {
 namespace {
-
-constexpr double kPi = 3.14159265358979323846;
 
 // The seed 000 608 at 720 rpm, 50 N down, quasistatic, with overrides.
 Case case_608(std::vector<std::string> sets = {}) {
@@ -49,7 +48,7 @@ double relative_residual(const Case& c, const QuasiStaticModel& m, const QuasiSt
   const double wc = cage_speed(c.bearing, c.operation.speed);
   Eigen::Vector2d g = -c.operation.load;
   for (int j = 0; j < Z; ++j) {
-    const double th = 2 * kPi * j / Z + wc * p.t;
+    const double th = two_pi * j / Z + wc * p.t;
     g += Q[j] * Eigen::Vector2d(std::cos(th), std::sin(th));
   }
   return g.norm() / c.operation.load.norm();
@@ -218,7 +217,7 @@ TEST(BallMotion, UnloadedBallFollowsTheOuterRaceWaviness) {
       const auto& vr = r.response.channel("vr" + std::to_string(j + 1));
       for (std::size_t k = 0; k < Q.size(); k += 37) {
         if (Q[k] > 0) continue;
-        const double th = 2 * kPi * j / c.bearing.balls + wc * r.response.time[k];
+        const double th = two_pi * j / c.bearing.balls + wc * r.response.time[k];
         EXPECT_NEAR(rr[k], -outer.profile(th) + 0.5 * c.excitation.ball_size_errors[j], 1e-15)
             << kind;
         EXPECT_NEAR(vr[k], -outer.slope(th) * wc, 1e-12) << kind;

@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "bearing/constants.h"
 #include "bearing/errors.h"
 #include "bearing/signal/peaks.h"
 #include "bearing/signal/spectrum.h"
@@ -18,7 +19,6 @@
 namespace bearing {
 namespace {
 
-constexpr double kPi = 3.141592653589793238462643383279;
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 constexpr double kInf = std::numeric_limits<double>::infinity();
 
@@ -36,7 +36,7 @@ class SplitMix64 {
   // Box–Muller; the second variate is dropped to keep it short.
   double normal() {
     const double u1 = uniform(), u2 = uniform();
-    return std::sqrt(-2.0 * std::log(u1)) * std::cos(2.0 * kPi * u2);
+    return std::sqrt(-2.0 * std::log(u1)) * std::cos(two_pi * u2);
   }
 
  private:
@@ -53,7 +53,7 @@ std::vector<double> sine(std::size_t n, double cycles, double amplitude, double 
   for (std::size_t j = 0; j < n; ++j) {
     const double turns = static_cast<double>((k * j) % n) / static_cast<double>(n) +
                          part * static_cast<double>(j) / static_cast<double>(n);
-    x[j] = offset + amplitude * std::sin(2.0 * kPi * turns + phase);
+    x[j] = offset + amplitude * std::sin(two_pi * turns + phase);
   }
   return x;
 }
@@ -75,7 +75,7 @@ TEST(SignalStatistics, SampledSineMatchesClosedForms) {
   const double A = 3.0, offset = 5.0;
   const std::size_t n = 24000;
   const ChannelStatistics s = channel_statistics(sine(n, 50, A, 0.3, offset));
-  const double sampling = 1.0 - std::cos(kPi / 480);
+  const double sampling = 1.0 - std::cos(pi / 480);
   EXPECT_NEAR(s.mean, offset, 1e-12 * offset);
   EXPECT_NEAR(s.rms, A / std::sqrt(2.0), 1e-12 * A);
   EXPECT_NEAR(s.kurtosis, 1.5, 1e-11);
@@ -226,9 +226,9 @@ TEST(SignalSpectrum, HannAndRectangularScallopAsTheirTransformsPredict) {
   const std::vector<double> x = sine(n, 6000.5, A);
   const Spectrum hann = amplitude_spectrum(x, 1.0, Window::hann);
   const Spectrum rect = amplitude_spectrum(x, 1.0, Window::rectangular);
-  EXPECT_NEAR(hann.amplitude[6000] / A, (2 / kPi) / 0.75, 1e-4);
+  EXPECT_NEAR(hann.amplitude[6000] / A, (2 / pi) / 0.75, 1e-4);
   EXPECT_NEAR(hann.amplitude[6001], hann.amplitude[6000], 1e-9);
-  EXPECT_NEAR(rect.amplitude[6000] / A, 1.0 / (n * std::sin(kPi / (2.0 * n))), 1e-4);
+  EXPECT_NEAR(rect.amplitude[6000] / A, 1.0 / (n * std::sin(pi / (2.0 * n))), 1e-4);
 }
 
 TEST(SignalSpectrum, SeparatesTwoTones) {
@@ -310,14 +310,14 @@ TEST(SignalSpectrum, MatchesTheDirectDft) {
     mean /= n;
     std::vector<long double> wx(n);
     for (std::size_t j = 0; j < n; ++j) {
-      const long double w = 0.5L - 0.5L * std::cos(2 * static_cast<long double>(kPi) * j / n);
+      const long double w = 0.5L - 0.5L * std::cos(2 * static_cast<long double>(pi) * j / n);
       wx[j] = w * (x[j] - mean);
       wsum += w;
     }
     for (std::size_t k = 0; k <= n / 2; ++k) {
       std::complex<long double> X = 0;
       for (std::size_t j = 0; j < n; ++j)
-        X += wx[j] * std::polar(1.0L, -2 * static_cast<long double>(kPi) * ((j * k) % n) / n);
+        X += wx[j] * std::polar(1.0L, -2 * static_cast<long double>(pi) * ((j * k) % n) / n);
       const long double expected = (k == 0 || 2 * k == n ? 1 : 2) * std::abs(X) / wsum;
       ASSERT_NEAR(s.amplitude[k], static_cast<double>(expected), 1e-13)
           << "N = " << n << " k " << k;
@@ -583,7 +583,7 @@ TEST(SignalPeaks, LabelsInnerRaceShaftSidebands) {
   const auto label_of = [&](double f) {
     const double rate = 8192.0, n = 8192.0 * 4;  // 0.25 Hz bins
     std::vector<double> x(static_cast<std::size_t>(n));
-    for (std::size_t j = 0; j < x.size(); ++j) x[j] = std::sin(2 * M_PI * f * j / rate);
+    for (std::size_t j = 0; j < x.size(); ++j) x[j] = std::sin(bearing::two_pi * f * j / rate);
     const auto s = bearing::amplitude_spectrum(x, rate, bearing::Window::hann);
     return bearing::find_peaks(s, names, 1).at(0).label;
   };

@@ -11,13 +11,13 @@
 #include <gsl/gsl_integration.h>
 #include <gsl/gsl_sf_gamma.h>
 
+#include "bearing/constants.h"
 #include "bearing/errors.h"
 #include "bearing/static_load.h"
 
 namespace bearing {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 constexpr double K6308 = 1.28e10;  // series constant of the 6308 [N/m^1.5] (test_contact.cc)
 
 Eigen::Vector2d polar(double r, double angle) {
@@ -57,7 +57,7 @@ TEST(StaticLoad, ZeroLoadGivesZero) {
   for (int j = 0; j < 8; ++j) {
     EXPECT_EQ(r.ball_loads[j], 0.0);
     EXPECT_EQ(r.ball_approach[j], -5e-6);
-    EXPECT_NEAR(r.ball_angles[j], 2 * kPi * j / 8, 1e-15);
+    EXPECT_NEAR(r.ball_angles[j], two_pi * j / 8, 1e-15);
   }
 }
 
@@ -65,7 +65,7 @@ TEST(StaticLoad, BallAnglesStartAtPhase) {
   StaticLoadOptions o;
   o.phase = 0.3;
   const StaticLoadResult r = solve_static_load(9, K6308, 0, Eigen::Vector2d(0, -500), o);
-  for (int j = 0; j < 9; ++j) EXPECT_NEAR(r.ball_angles[j], 0.3 + 2 * kPi * j / 9, 1e-15);
+  for (int j = 0; j < 9; ++j) EXPECT_NEAR(r.ball_angles[j], 0.3 + two_pi * j / 9, 1e-15);
 }
 
 // Independent check of a symmetric case: with ball 0 on the load line the ring moves along it,
@@ -75,12 +75,12 @@ TEST(StaticLoad, SymmetricCaseMatchesScalarEquation) {
     for (double F : {1.0, 300.0, 5000.0, 1e5}) {
       const int Z = 9;
       StaticLoadOptions o;
-      o.phase = -kPi / 2;  // ball 0 at the bottom
+      o.phase = -pi / 2;  // ball 0 at the bottom
       const StaticLoadResult r = solve_static_load(Z, K6308, gap, Eigen::Vector2d(0, -F), o);
       auto force = [&](double x) {
         double s = 0;
         for (int j = 0; j < Z; ++j) {
-          const double c = std::cos(2 * kPi * j / Z);
+          const double c = std::cos(two_pi * j / Z);
           if (x * c > gap) s += K6308 * std::pow(x * c - gap, 1.5) * c;
         }
         return s;
@@ -106,17 +106,17 @@ TEST(StaticLoad, StribeckLimitForManyBalls) {
   fn.function = [](double th, void*) { return std::pow(std::cos(th), 2.5); };
   fn.params = nullptr;
   double integral = 0, err = 0;
-  gsl_integration_qags(&fn, -kPi / 2, kPi / 2, 0, 1e-13, 200, ws, &integral, &err);
+  gsl_integration_qags(&fn, -pi / 2, pi / 2, 0, 1e-13, 200, ws, &integral, &err);
   gsl_integration_workspace_free(ws);
   // Cross-check the quadrature with the Beta-function closed form √π Γ(7/4)/Γ(9/4).
-  EXPECT_NEAR(integral, std::sqrt(kPi) * gsl_sf_gamma(1.75) / gsl_sf_gamma(2.25), 1e-12);
-  const double limit = 2 * kPi / integral;
+  EXPECT_NEAR(integral, std::sqrt(pi) * gsl_sf_gamma(1.75) / gsl_sf_gamma(2.25), 1e-12);
+  const double limit = two_pi / integral;
   EXPECT_NEAR(1.0 / limit, 0.2288, 5e-5);  // the tabulated J_r(0.5), to its printed digits
   EXPECT_NEAR(limit, 4.37010, 5e-6);
 
   double previous_error = 1.0;
   for (int Z : {25, 200, 1000}) {
-    const double angle = -kPi / 2;
+    const double angle = -pi / 2;
     StaticLoadOptions o;
     o.phase = angle;
     const Eigen::Vector2d F = polar(2000.0, angle);
@@ -143,10 +143,10 @@ TEST(StaticLoad, ForceBalanceForManyLoadsAndClearances) {
       const double Fm = std::pow(10.0, -6 + 11 * U(rng));  // 1 µN … 100 kN
       // A quarter of the loads point exactly at a ball or exactly between two.
       StaticLoadOptions o;
-      o.phase = 2 * kPi * U(rng);
-      const double angle = trial % 4 == 0   ? o.phase + 2 * kPi * (trial % Z) / Z
-                           : trial % 4 == 1 ? o.phase + kPi * (2 * (trial % Z) + 1) / Z
-                                            : 2 * kPi * U(rng);
+      o.phase = two_pi * U(rng);
+      const double angle = trial % 4 == 0   ? o.phase + two_pi * (trial % Z) / Z
+                           : trial % 4 == 1 ? o.phase + pi * (2 * (trial % Z) + 1) / Z
+                                            : two_pi * U(rng);
       const Eigen::Vector2d F = polar(Fm, angle);
       const StaticLoadResult r = solve_static_load(Z, K, gap, F, o);
       expect_consistent(r, Z, K, gap, F, 1.5, 1e-9,
@@ -173,7 +173,7 @@ TEST(StaticLoad, OtherExponentsConverge) {
 
 // Without clearance the problem is homogeneous: δ ∝ F^{1/n}, so 8F moves the ring 4 times as far.
 TEST(StaticLoad, ZeroClearanceDeflectionScalesAsTwoThirdsPower) {
-  for (double angle : {-kPi / 2, 0.1234, 2.5}) {
+  for (double angle : {-pi / 2, 0.1234, 2.5}) {
     const Eigen::Vector2d F = polar(700.0, angle);
     const StaticLoadResult r1 = solve_static_load(8, K6308, 0.0, F);
     const StaticLoadResult r8 = solve_static_load(8, K6308, 0.0, 8.0 * F);
@@ -189,7 +189,7 @@ TEST(StaticLoad, ZeroClearanceDeflectionScalesAsTwoThirdsPower) {
 TEST(StaticLoad, TinyLoadWithClearanceConverges) {
   const double gap = 10e-6;
   for (double Fm : {1e-9, 1e-6, 1e-3}) {
-    for (double angle : {-kPi / 2, -kPi / 2 + kPi / 8, 0.3, 1.0}) {
+    for (double angle : {-pi / 2, -pi / 2 + pi / 8, 0.3, 1.0}) {
       const Eigen::Vector2d F = polar(Fm, angle);
       const StaticLoadResult r = solve_static_load(8, K6308, gap, F);
       expect_consistent(r, 8, K6308, gap, F, 1.5, 1e-9, "tiny load");
@@ -198,7 +198,7 @@ TEST(StaticLoad, TinyLoadWithClearanceConverges) {
       EXPECT_GE(loaded, 1);
       EXPECT_LE(loaded, 2);
       EXPECT_GE(r.deflection.norm(), gap);
-      EXPECT_LE(r.deflection.norm(), gap / std::cos(kPi / 8) * (1 + 1e-3));
+      EXPECT_LE(r.deflection.norm(), gap / std::cos(pi / 8) * (1 + 1e-3));
       EXPECT_LT(*std::max_element(r.ball_approach.begin(), r.ball_approach.end()), 1e-3 * gap);
     }
   }

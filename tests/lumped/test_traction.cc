@@ -6,6 +6,7 @@
 
 #include <cmath>
 
+#include "bearing/constants.h"
 #include "bearing/errors.h"
 #include "bearing/kinematics.h"
 #include "bearing/presets.h"
@@ -14,8 +15,6 @@
 namespace {
 
 using namespace bearing;
-
-constexpr double kTwoPi = 6.283185307179586;
 
 Bearing bearing_with_angle(const char* name, double alpha) {
   Bearing b = preset(name);
@@ -29,7 +28,7 @@ TEST(Traction, NothingSlidesAtPureRolling) {
   for (const char* name : {"6304", "608", "6308"})
     for (double alpha : {0.0, 0.3}) {
       const Bearing b = bearing_with_angle(name, alpha);
-      const double w = 2000 * kTwoPi / 60;
+      const double w = 2000 * two_pi / 60;
       const double spin = rolling_ball_spin(b, w);
       const SlidingSpeeds s = sliding_speeds(b, w, cage_speed(b, w), spin);
       const double scale = 0.5 * w * b.pitch_diameter;  // the inner race's surface speed, about
@@ -37,7 +36,7 @@ TEST(Traction, NothingSlidesAtPureRolling) {
       EXPECT_NEAR(s.outer / scale, 0.0, 1e-14) << name << " " << alpha;
       // kinematics.h's BSF spins about an axis normal to the contact line (lever arm D/2),
       // seed 004 about one parallel to the bearing axis (lever arm (D/2) cos α).
-      EXPECT_NEAR(spin * std::cos(alpha), kTwoPi * bearing_frequencies(b, w).bsf, 1e-12 * spin)
+      EXPECT_NEAR(spin * std::cos(alpha), two_pi * bearing_frequencies(b, w).bsf, 1e-12 * spin)
           << name;
     }
 }
@@ -46,7 +45,7 @@ TEST(Traction, NothingSlidesAtPureRolling) {
 // d_m (1 + g) — the inner race drives, the outer holds back.
 TEST(Traction, SlipMakesTheInnerRaceDriveAndTheOuterRaceBrake) {
   const Bearing b = preset("6304");
-  const double w = 2000 * kTwoPi / 60, wc = cage_speed(b, w);
+  const double w = 2000 * two_pi / 60, wc = cage_speed(b, w);
   const double g = b.ball_diameter * std::cos(b.contact_angle) / b.pitch_diameter;
   for (double slip : {0.0, 0.02, 0.05}) {
     const SlidingSpeeds s = sliding_speeds(b, w, (1 - slip) * wc, rolling_ball_spin(b, w));
@@ -74,7 +73,7 @@ TEST(Traction, CurveIsOddLinearThenSaturated) {
 // traction.h are those of friction (it never feeds energy in).
 TEST(Traction, ForcesDissipateExactlyTheReportedPower) {
   const Bearing b = preset("6304");
-  const double w = 2000 * kTwoPi / 60, wc = cage_speed(b, w);
+  const double w = 2000 * two_pi / 60, wc = cage_speed(b, w);
   const double g = b.ball_diameter * std::cos(b.contact_angle) / b.pitch_diameter;
   const double half_d = 0.5 * b.ball_diameter * std::cos(b.contact_angle);
   const TractionCurve curve = make_traction_curve(0.01, 0.05);

@@ -3,6 +3,7 @@
 
 #include <gtest/gtest.h>
 
+#include "bearing/constants.h"
 #include "bearing/errors.h"
 #include "bearing/units.h"
 
@@ -10,18 +11,18 @@ using bearing::Dimension;
 using bearing::format_quantity;
 using bearing::InputError;
 using bearing::parse_quantity;
+using bearing::pi;
+using bearing::two_pi;
 
-namespace {
-constexpr double kPi = 3.14159265358979323846;
-}
+namespace {}
 
 TEST(Units, ParsesTheDesignExamples) {
   EXPECT_DOUBLE_EQ(parse_quantity("15.081 mm", Dimension::length, "k"), 15.081e-3);
   EXPECT_DOUBLE_EQ(parse_quantity("2 um", Dimension::length, "k"), 2e-6);
-  EXPECT_DOUBLE_EQ(parse_quantity("2000 rpm", Dimension::angular_speed, "k"), 2000 * 2 * kPi / 60);
+  EXPECT_DOUBLE_EQ(parse_quantity("2000 rpm", Dimension::angular_speed, "k"), 2000 * two_pi / 60);
   EXPECT_DOUBLE_EQ(parse_quantity("0.05 kN", Dimension::force, "k"), 50.0);
   EXPECT_DOUBLE_EQ(parse_quantity("208 GPa", Dimension::pressure, "k"), 2.08e11);
-  EXPECT_DOUBLE_EQ(parse_quantity("30 deg", Dimension::angle, "k"), kPi / 6);
+  EXPECT_DOUBLE_EQ(parse_quantity("30 deg", Dimension::angle, "k"), pi / 6);
   EXPECT_DOUBLE_EQ(parse_quantity("5 us", Dimension::time, "k"), 5e-6);
 }
 
@@ -30,14 +31,14 @@ TEST(Units, AcceptsSpellingsOfTheSameUnit) {
   EXPECT_DOUBLE_EQ(parse_quantity("2um", Dimension::length, "k"), two_um);
   EXPECT_DOUBLE_EQ(parse_quantity("2 \xC2\xB5m", Dimension::length, "k"), two_um);  // micro sign
   EXPECT_DOUBLE_EQ(parse_quantity("2 \xCE\xBCm", Dimension::length, "k"), two_um);  // Greek mu
-  EXPECT_DOUBLE_EQ(parse_quantity("30\xC2\xB0", Dimension::angle, "k"), kPi / 6);   // degree sign
+  EXPECT_DOUBLE_EQ(parse_quantity("30\xC2\xB0", Dimension::angle, "k"), pi / 6);    // degree sign
   EXPECT_DOUBLE_EQ(parse_quantity("200 N s/m", Dimension::damping, "k"), 200.0);
   EXPECT_DOUBLE_EQ(parse_quantity("200 N*s/m", Dimension::damping, "k"), 200.0);
   EXPECT_DOUBLE_EQ(parse_quantity("7.85 g/cm^3", Dimension::density, "k"), 7850.0);
   EXPECT_DOUBLE_EQ(parse_quantity("1 in", Dimension::length, "k"), 0.0254);
   EXPECT_DOUBLE_EQ(parse_quantity("-20 N", Dimension::force, "k"), -20.0);
   EXPECT_DOUBLE_EQ(parse_quantity("1e3 N", Dimension::force, "k"), 1000.0);
-  EXPECT_DOUBLE_EQ(parse_quantity("33.3 Hz", Dimension::angular_speed, "k"), 33.3 * 2 * kPi);
+  EXPECT_DOUBLE_EQ(parse_quantity("33.3 Hz", Dimension::angular_speed, "k"), 33.3 * two_pi);
   EXPECT_DOUBLE_EQ(parse_quantity("0.52", Dimension::dimensionless, "k"), 0.52);
 }
 
@@ -66,7 +67,7 @@ TEST(Units, RoundTripsThroughText) {
     EXPECT_DOUBLE_EQ(back, c.si) << text;
   }
   EXPECT_EQ(format_quantity(0.015081, "mm", Dimension::length), "15.081 mm");
-  EXPECT_EQ(format_quantity(2000 * 2 * kPi / 60, "rpm", Dimension::angular_speed), "2000 rpm");
+  EXPECT_EQ(format_quantity(2000 * two_pi / 60, "rpm", Dimension::angular_speed), "2000 rpm");
 }
 
 TEST(Units, RejectsWhatIsNotAQuantity) {

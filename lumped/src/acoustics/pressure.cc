@@ -10,14 +10,13 @@
 #include <cstdlib>
 #include <string>
 
+#include "bearing/constants.h"
 #include "bearing/errors.h"
 #include "bearing/units.h"
 
 namespace bearing {
 
 namespace {
-
-constexpr double kPi = 3.14159265358979323846;
 
 // Windowed-sinc interpolation: 2·kHalfWidth taps, Kaiser β for an 80 dB stopband (Kaiser's
 // formula β = 0.1102 (A − 8.7)); the kernel is tabulated at kPhases fractional positions per
@@ -30,7 +29,7 @@ constexpr double kKaiserBeta = 0.1102 * (80.0 - 8.7);
 double kernel(double u, double norm) {
   const double t = u / kHalfWidth;
   if (std::fabs(t) >= 1) return 0.0;
-  const double sinc = u == 0 ? 1.0 : std::sin(kPi * u) / (kPi * u);
+  const double sinc = u == 0 ? 1.0 : std::sin(pi * u) / (pi * u);
   return sinc * gsl_sf_bessel_I0(kKaiserBeta * std::sqrt(1 - t * t)) * norm;
 }
 
@@ -67,7 +66,7 @@ Detrended detrend(const std::vector<double>& velocity, double rate, RealFft& fft
 }
 
 double angular_frequency(std::size_t k, double rate, std::size_t n) {
-  return 2 * kPi * static_cast<double>(k) * rate / static_cast<double>(n);
+  return two_pi * static_cast<double>(k) * rate / static_cast<double>(n);
 }
 
 // The spectrum of the record times `gain(ω_k)` within the band, back in time. DC is zero (no body

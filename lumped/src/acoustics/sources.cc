@@ -8,6 +8,7 @@
 #include <string>
 
 #include "../edit_distance.h"
+#include "bearing/constants.h"
 #include "bearing/errors.h"
 #include "bearing/units.h"
 
@@ -17,8 +18,6 @@ namespace {
 
 using cd = std::complex<double>;
 constexpr cd kI{0.0, 1.0};
-constexpr double kPi = 3.14159265358979323846;
-
 // Outgoing Hankel functions of the second kind, H_n = J_n − i Y_n, h_n = j_n − i y_n.
 cd hankel0(double x) {
   return {gsl_sf_bessel_J0(x), -gsl_sf_bessel_Y0(x)};
@@ -81,8 +80,8 @@ struct ExactHankel {
   static cd derivative(double x) { return hankel0(x) - hankel1(x) / x; }
 };
 struct SmallArgumentHankel {
-  static cd value(double x) { return x / 2 + kI * 2.0 / (kPi * x); }
-  static cd derivative(double x) { return 0.5 - kI * 2.0 / (kPi * x * x); }
+  static cd value(double x) { return x / 2 + kI * 2.0 / (pi * x); }
+  static cd derivative(double x) { return 0.5 - kI * 2.0 / (pi * x * x); }
 };
 
 // Infinite cylinder translating transversely: p = −iρc u cos ψ H₁(kr)/H₁'(ka).

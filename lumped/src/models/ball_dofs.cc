@@ -21,9 +21,11 @@
 #include <vector>
 
 #include "ball_set.h"
+#include "bearing/constants.h"
 #include "bearing/errors.h"
 #include "bearing/kinematics.h"
 #include "bearing/models/three_dof.h"
+#include "bearing/numerics/roots.h"
 #include "bearing/static_load.h"
 #include "bearing/units.h"
 #include "groove_geometry.h"
@@ -83,7 +85,7 @@ class BallDofs final : public BallDofModel {
         axial_damping_(in.axial_damping),
         gap_(in.bearing.ball_gap()),
         load_x_(in.load.x()),
-        load_y_(in.load.y() - (in.gravity ? in.mass * detail::kGravity : 0.0)),
+        load_y_(in.load.y() - (in.gravity ? in.mass * standard_gravity : 0.0)),
         load_z_(in.axial_load),
         unbalance_force_(in.unbalance * in.inner_speed * in.inner_speed),
         phase_(in.cage_phase),
@@ -112,7 +114,7 @@ class BallDofs final : public BallDofModel {
     }
     const double g = D * std::cos(alpha) / dm;
     const double wc = set_.cage_speed();
-    ball_mass_ = in.ball_mass > 0 ? in.ball_mass : b.ball.density * M_PI * D * D * D / 6.0;
+    ball_mass_ = in.ball_mass > 0 ? in.ball_mass : b.ball.density * pi * D * D * D / 6.0;
     ball_inertia_ = in.ball_inertia > 0 ? in.ball_inertia : ball_mass_ * D * D / 10.0;
     ball_damping_ = in.ball_damping;
     lever_ = 0.5 * D * std::cos(alpha);
@@ -427,11 +429,11 @@ class BallDofs final : public BallDofModel {
     const double qmax = at_lo.load_i + centrifugal_along_;
     double hi = lo + std::pow(qmax / fr.outer_stiffness[j], 1.0 / outer_exponent_) + 1e-12;
     if (excess(lo) >= 0) return lo;
-    for (int it = 0; it < 200 && hi - lo > 1e-16; ++it) {
-      const double mid = 0.5 * (lo + hi);
-      (excess(mid) < 0 ? lo : hi) = mid;
-    }
-    return 0.5 * (lo + hi);
+    numerics::BisectionOptions o;
+    o.abs_width = 1e-16;  // [m]
+    const auto below = [&](double s) { return excess(s) < 0; };
+    const numerics::Bracket b = numerics::bisect(lo, hi, below, o);
+    return 0.5 * (b.lo + b.hi);
   }
 
   detail::BallSet set_;

@@ -54,6 +54,7 @@
 #include <cstdint>
 
 #include "bearing/bearing.h"
+#include "bearing/constants.h"
 #include "bearing/contact.h"
 #include "bearing/errors.h"
 #include "bearing/excitation.h"
@@ -65,8 +66,6 @@ namespace bearing::detail {
 
 /// Largest ball count the lumped models accept (per-instant scratch lives on the stack).
 constexpr int kMaxBalls = 256;
-constexpr double kTwoPi = 6.283185307179586476925286766559;
-constexpr double kGravity = 9.80665;  ///< standard gravity g [m/s²]
 
 /// The ball set at one instant (filled by BallSet::evaluate; lives on the caller's stack).
 struct BallFrame {
@@ -433,8 +432,8 @@ class BallSet {
     base_cos_.resize(Z);
     base_sin_.resize(Z);
     for (int j = 0; j < Z; ++j) {
-      base_cos_[j] = std::cos(in.cage_phase + kTwoPi * j / Z);
-      base_sin_[j] = std::sin(in.cage_phase + kTwoPi * j / Z);
+      base_cos_[j] = std::cos(in.cage_phase + two_pi * j / Z);
+      base_sin_[j] = std::sin(in.cage_phase + two_pi * j / Z);
     }
     size_error_.assign(Z, 0.0);
     if (!in.ball_size_errors.empty()) size_error_ = in.ball_size_errors;
@@ -448,8 +447,8 @@ class BallSet {
       for (int j = 0; j < Z; ++j)
         for (int k = 0; k < Z; ++k) {
           const int m = (k * j) % Z;  // 2πkj/Z reduced exactly
-          table_cos_[j * Z + k] = std::cos(kTwoPi * m / Z);
-          table_sin_[j * Z + k] = std::sin(kTwoPi * m / Z);
+          table_cos_[j * Z + k] = std::cos(two_pi * m / Z);
+          table_sin_[j * Z + k] = std::sin(two_pi * m / Z);
         }
     }
     if (tvds && (!inner_.empty() || !outer_.empty())) setup_tvds(in);
@@ -472,7 +471,7 @@ class BallSet {
   void rates(double t, BallRates& br) const {
     const double wo = cage_speed_, wi = cage_speed_ - inner_speed_;
     for (int j = 0; j < balls_; ++j) {
-      const double theta = cage_phase_ + kTwoPi * j / balls_ + cage_speed_ * t;
+      const double theta = cage_phase_ + two_pi * j / balls_ + cage_speed_ * t;
       const ProfileDerivatives o = profile_derivatives(outer_waviness_, theta);
       const ProfileDerivatives i = profile_derivatives(inner_waviness_, theta - inner_speed_ * t);
       br.excitation_rate[j] = i.slope * wi + o.slope * wo;

@@ -12,6 +12,8 @@
 #include <array>
 #include <cmath>
 
+#include "bearing/constants.h"
+
 namespace bearing::detail {
 
 struct Phasor {
@@ -21,9 +23,8 @@ struct Phasor {
 
 inline Phasor phasor(double theta) {
   constexpr int kN = 1024;
-  constexpr double kTwoPi = 6.283185307179586476925286766559;
   // Δ = 2π/N split as hi + lo: hi has 33 significant bits so k·hi is exact for |k| < 2^20.
-  constexpr double kStep = kTwoPi / kN;
+  constexpr double kStep = two_pi / kN;
   static const double kStepHi = [] {
     const double scale = std::ldexp(1.0, 33 - std::ilogb(kStep));
     return std::nearbyint(kStep * scale) / scale;
@@ -31,13 +32,13 @@ inline Phasor phasor(double theta) {
   static const double kStepLo = [] {
     const double scale = std::ldexp(1.0, 33 - std::ilogb(kStep));
     // 2π/N − hi to double precision, from the long-double value of 2π.
-    const long double exact = 6.283185307179586476925286766559005768L / kN;
+    const long double exact = 2 * pi_long / kN;
     return static_cast<double>(exact - std::nearbyint(kStep * scale) / scale);
   }();
   static const std::array<Phasor, kN> kTable = [] {
     std::array<Phasor, kN> t{};
     for (int i = 0; i < kN; ++i) {
-      const long double a = 6.283185307179586476925286766559005768L * i / kN;
+      const long double a = 2 * pi_long * i / kN;
       t[static_cast<std::size_t>(i)] = {static_cast<double>(std::cos(a)),
                                         static_cast<double>(std::sin(a))};
     }

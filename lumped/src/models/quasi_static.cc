@@ -11,8 +11,10 @@
 #include <vector>
 
 #include "ball_set.h"
+#include "bearing/constants.h"
 #include "bearing/errors.h"
 #include "bearing/kinematics.h"
+#include "bearing/numerics/newton.h"
 #include "bearing/static_load.h"
 #include "bearing/units.h"
 
@@ -23,7 +25,6 @@ namespace {
 constexpr double kTarget = 1e-12;   // |g|/|F| aimed at (rounding level)
 constexpr double kRequired = 1e-9;  // |g|/|F| above which the solve fails
 constexpr int kNewtonIterations = 30;
-constexpr int kDampedIterations = 2000;
 
 double sum_amplitudes(const Waviness& w) {
   double s = 0;
@@ -31,11 +32,8 @@ double sum_amplitudes(const Waviness& w) {
   return s;
 }
 
-// The balance at one point: g, J and V (quasi_static.h).
-struct Balance {
-  Eigen::Vector2d g = Eigen::Vector2d::Zero();
-  Eigen::Matrix2d J = Eigen::Matrix2d::Zero();
-  double V = 0;
+// The balance at one point: V, g = ∇V and J = ∇²V (quasi_static.h), and the loaded balls.
+struct Balance : numerics::PotentialPoint<2> {
   int loaded = 0;
 };
 
@@ -51,7 +49,7 @@ class QuasiStatic final : public QuasiStaticModel {
       : set_(in, checked_cage_speed(in)),
         gap_(in.bearing.ball_gap()),
         inner_speed_(in.inner_speed),
-        load_(in.load.x(), in.load.y() - (in.gravity ? in.mass * detail::kGravity : 0.0)),
+        load_(in.load.x(), in.load.y() - (in.gravity ? in.mass * standard_gravity : 0.0)),
         unbalance_force_(in.unbalance * in.inner_speed * in.inner_speed),
         phase_(in.cage_phase),
         minimum_load_(quasi_static_minimum_load(in)),
@@ -100,38 +98,31 @@ class QuasiStatic final : public QuasiStaticModel {
     pt.t = t;
     Eigen::Vector2d p = guess;
     Balance b = balance(fr, F, p);
-    // Newton, full steps while |g| falls.
-    bool ok = false;
-    for (int it = 0; it < kNewtonIterations; ++it) {
-      if (b.g.norm() <= kTarget * scale) {
-        ok = true;
-        break;
-      }
-      const double det = b.J.determinant();
-      if (!(det > 1e-12 * b.J.trace() * b.J.trace())) break;  // < 2 non-collinear loaded balls
-      const Eigen::Vector2d q = p - b.J.inverse() * b.g;
-      const Balance bq = balance(fr, F, q);
-      ++pt.iterations;
-      if (!(bq.g.norm() < b.g.norm())) {
-        // At rounding level the step no longer helps: done if the balance is good enough.
-        ok = b.g.norm() <= kRequired * scale * 1e-2;
-        break;
-      }
-      p = q;
-      b = bq;
-    }
-    if (!ok) {
+    const auto evaluate = [&](const Eigen::Vector2d& q) { return balance(fr, F, q); };
+    // Newton, full steps while |g| falls; singular with < 2 non-collinear loaded balls.
+    numerics::FullStepOptions newton;
+    newton.tolerance = kTarget * scale;
+    newton.good_enough = kRequired * scale * 1e-2;
+    newton.max_iterations = kNewtonIterations;
+    const numerics::FullStepResult fast = numerics::newton_full_steps(p, b, evaluate, newton);
+    pt.iterations += fast.iterations;
+    if (!fast.converged) {
+      // Levenberg-damped Newton with an Armijo line search on V, then Newton polishing: V is
+      // convex and coercive, so each damped step with a small enough length decreases it.
       pt.fallback = true;
-      damped_newton(fr, F, p, b, pt.iterations);
+      numerics::LevenbergOptions damped;
+      damped.tolerance = kTarget * scale;
+      damped.stiffness = stiffness_scale_;
+      pt.iterations += numerics::levenberg_minimize(p, b, evaluate, damped);
     }
     pt.position = p;
-    pt.residual = b.g.norm() / scale;
+    pt.residual = b.gradient.norm() / scale;
     pt.loaded_balls = b.loaded;
     if (!(pt.residual <= kRequired))
       throw SolverError("quasi-static balance at t = " + format_number(t) +
                         " s: residual |g|/|F| = " + format_number(pt.residual) +
                         " after damped Newton (needs <= 1e-9)");
-    pt.velocity = velocity(t, fr, p, b.J);
+    pt.velocity = velocity(t, fr, p, b.hessian);
     return pt;
   }
 
@@ -174,43 +165,10 @@ class QuasiStatic final : public QuasiStaticModel {
       energy += Q * delta / (n + 1.0);
       ++b.loaded;
     }
-    b.g = Eigen::Vector2d(gx, gy) - F;
-    b.J << kxx, kxy, kxy, kyy;
-    b.V = energy - F.dot(p);
+    b.gradient = Eigen::Vector2d(gx, gy) - F;
+    b.hessian << kxx, kxy, kxy, kyy;
+    b.value = energy - F.dot(p);
     return b;
-  }
-
-  // Levenberg-damped Newton with an Armijo line search on V, then Newton polishing: V is convex
-  // and coercive, so each damped step with a small enough length decreases it.
-  void damped_newton(const detail::BallFrame& fr, const Eigen::Vector2d& F, Eigen::Vector2d& p,
-                     Balance& b, int& iterations) const {
-    const double scale = F.norm();
-    double mu = stiffness_scale_;
-    for (int it = 0; it < kDampedIterations && b.g.norm() > kTarget * scale; ++it) {
-      ++iterations;
-      const Eigen::Matrix2d A = b.J + mu * Eigen::Matrix2d::Identity();
-      const Eigen::Vector2d d = -A.inverse() * b.g;
-      const double slope = b.g.dot(d);  // < 0: A is positive definite
-      double a = 1.0;
-      bool moved = false;
-      for (int ls = 0; ls < 40; ++ls, a *= 0.5) {
-        const Eigen::Vector2d q = p + a * d;
-        const Balance bq = balance(fr, F, q);
-        // Armijo on V, or (where V's differences drown in rounding) a smaller residual.
-        if (bq.V <= b.V + 1e-4 * a * slope || bq.g.norm() < 0.5 * b.g.norm()) {
-          p = q;
-          b = bq;
-          moved = true;
-          break;
-        }
-      }
-      if (!moved) {
-        if (mu > 1e12 * stiffness_scale_) break;  // no descent at all: rounding level
-        mu *= 10.0;
-        continue;
-      }
-      mu = std::max(mu * 0.25, 1e-12 * stiffness_scale_);
-    }
   }
 
   // dp/dt = −J⁻¹ ∂g/∂t (quasi_static.h).
@@ -250,14 +208,14 @@ class QuasiStatic final : public QuasiStaticModel {
 }  // namespace
 
 double quasi_static_minimum_load(const ModelInputs& in) {
-  const double cos_psi = std::cos(2.0 * M_PI / in.bearing.balls);
+  const double cos_psi = std::cos(two_pi / in.bearing.balls);
   if (cos_psi <= 1e-12) return 0.0;
   const double gap = in.bearing.ball_gap();
   return in.contact.K * std::pow(gap * (1.0 / cos_psi - 1.0), in.contact.exponent);
 }
 
 double quasi_static_smooth_load(const ModelInputs& in) {
-  const double cos_psi = std::cos(2.0 * M_PI / in.bearing.balls);
+  const double cos_psi = std::cos(two_pi / in.bearing.balls);
   if (cos_psi <= 1e-12) return std::numeric_limits<double>::infinity();
   const double waviness = sum_amplitudes(in.inner_waviness) + sum_amplitudes(in.outer_waviness);
   double smaller = 0, larger = 0;  // max ΔD_j, max (−ΔD_j), both ≥ 0

@@ -16,7 +16,6 @@
 #include "bearing/models/three_dof.h"
 
 #include <cmath>
-#include <limits>
 #include <memory>
 #include <sstream>
 #include <string>
@@ -25,7 +24,10 @@
 #include <Eigen/Dense>
 
 #include "ball_set.h"
+#include "bearing/constants.h"
 #include "bearing/kinematics.h"
+#include "bearing/numerics/newton.h"
+#include "bearing/numerics/roots.h"
 #include "bearing/static_load.h"
 #include "groove_geometry.h"
 
@@ -64,37 +66,23 @@ AxialPreload axial_state(const GrooveGeometry& g, int Z, double K, double n, dou
     const double L = g.A0 + d;
     return std::sqrt((half + d) * (g.A0 + g.u0 + d)) / L;
   };
-  auto h = [&](double d) { return Z * K * std::pow(d, n) * sin_alpha(d) - load; };
-  // Bracket: h(0) = −|F| < 0; grow from the estimate with sin α = 1.
-  double lo = 0.0, hi = std::pow(load / (Z * K), 1.0 / n);
-  for (int k = 0; h(hi) < 0; ++k) {
-    lo = hi;
-    hi *= 2.0;
-    if (k > 200 || !std::isfinite(hi))
-      throw SolverError("solve_axial_preload: could not bracket the ball approach for F_z = " +
-                        format_number(F) + " N");
-  }
+  const auto h = [&](double d) { return Z * K * std::pow(d, n) * sin_alpha(d) - load; };
+  // Bracket: h(0) = −|F| < 0; grow from the estimate with sin α = 1 (at most 201 doublings, and
+  // none past the largest double; an estimate that is infinite already fails the residual test).
+  const double start = std::pow(load / (Z * K), 1.0 / n);
+  const numerics::Bracket b = numerics::grow_bracket(
+      0.0, start, [&](double d) { return h(d) < 0; }, 201);
+  if (!b.found || (b.hi != start && !std::isfinite(b.hi)))
+    throw SolverError("solve_axial_preload: could not bracket the ball approach for F_z = " +
+                      format_number(F) + " N");
   // Regula falsi with the Illinois rule (bisection when the secant point leaves the bracket):
-  // superlinear, and it cannot leave the bracket.
-  double h_lo = h(lo), h_hi = h(hi);
-  int side = 0;
-  double d = hi;
-  for (int it = 0; it < 300; ++it) {
-    d = lo - h_lo * (hi - lo) / (h_hi - h_lo);
-    if (!(d > lo && d < hi)) d = 0.5 * (lo + hi);
-    const double hd = h(d);
-    if (hd == 0) break;
-    if (hd < 0) {
-      lo = d, h_lo = hd;
-      if (side == -1) h_hi *= 0.5;
-      side = -1;
-    } else {
-      hi = d, h_hi = hd;
-      if (side == 1) h_lo *= 0.5;
-      side = 1;
-    }
-    if (hi - lo <= 4 * std::numeric_limits<double>::epsilon() * hi) break;
-  }
+  // superlinear, and it cannot leave the bracket. Stops at an exact zero or a collapsed bracket.
+  numerics::RegulaFalsiOptions rf;
+  rf.max_iterations = 300;
+  const double d =
+      numerics::regula_falsi(
+          h, b.lo, h(b.lo), b.hi, h(b.hi), [](double, double hd) { return hd == 0; }, rf)
+          .x;
   const double s = sin_alpha(d);
   const double w = (g.A0 + d) * s;  // w₀ + z for F > 0
   p.z = F > 0 ? w - g.w0 : -w - g.w0;
@@ -125,7 +113,7 @@ class ThreeDofModel final : public BearingModel {
         damping_(in.damping),
         axial_damping_(in.axial_damping),
         load_x_(in.load.x()),
-        load_y_(in.load.y() - (in.gravity ? in.mass * detail::kGravity : 0.0)),
+        load_y_(in.load.y() - (in.gravity ? in.mass * standard_gravity : 0.0)),
         load_z_(in.axial_load),
         unbalance_force_(in.unbalance * in.inner_speed * in.inner_speed),
         phase_(in.cage_phase) {}
@@ -283,8 +271,10 @@ class ThreeDofModel final : public BearingModel {
 // Static state under the constant loads, without waviness and size errors (three_dof.h).
 // For F_z ≠ 0: minimise the convex potential Φ(q) = Σ_j K/(n+1) [δ_j]_+^{n+1} − F·q (each δ_j is
 // a norm minus a constant, hence convex in q; [·]_+^{n+1} is convex and nondecreasing) by Newton
-// steps with an exact line search on the nondecreasing directional derivative. The start, the
-// axial state, has every ball loaded, so the Hessian is positive definite there.
+// steps (numerics::newton_minimize, μ = 1e-12 tr H) with an exact line search on the
+// nondecreasing directional derivative: α = 1 unless it passes the minimum, else plain regula
+// falsi on φ' in (0, 1) to |φ'| ≤ 0.1 |φ'(0)|. The start, the axial state, has every ball
+// loaded, so the Hessian is positive definite there.
 std::vector<double> ThreeDofModel::initial_displacement() const {
   const int Z = set_.balls();
   const Eigen::Vector3d F(load_x_, load_y_, load_z_);
@@ -301,14 +291,18 @@ std::vector<double> ThreeDofModel::initial_displacement() const {
   // The ball set at t = 0 without excitation.
   detail::BallFrame fr;
   for (int j = 0; j < Z; ++j) {
-    fr.cos_theta[j] = std::cos(phase_ + detail::kTwoPi * j / Z);
-    fr.sin_theta[j] = std::sin(phase_ + detail::kTwoPi * j / Z);
+    fr.cos_theta[j] = std::cos(phase_ + two_pi * j / Z);
+    fr.sin_theta[j] = std::sin(phase_ + two_pi * j / Z);
     fr.excitation[j] = 0.0;
     fr.stiffness[j] = set_.K();
   }
   const double n = set_.exponent();
-  auto gradient = [&](const Eigen::Vector3d& q) {  // ∇Φ = −(F − Σ Q_j n_j)
-    Eigen::Vector3d g = -F;
+  // ∇Φ = −(F − Σ Q_j n_j) and ∇²Φ = the contact stiffness; Φ itself is not needed.
+  using State = numerics::PotentialPoint<3>;
+  const auto evaluate = [&](const Eigen::Vector3d& q) {
+    State st;
+    Eigen::Vector3d& g = st.gradient;
+    g = -F;
     const double w = geometry_.w0 + q.z();
     for (int j = 0; j < Z; ++j) {
       const double c = fr.cos_theta[j], s = fr.sin_theta[j];
@@ -319,40 +313,26 @@ std::vector<double> ThreeDofModel::initial_displacement() const {
       const double QL = detail::contact_load(set_.K(), n, delta) / L;
       g += QL * Eigen::Vector3d((geometry_.u0 + r) * c, (geometry_.u0 + r) * s, w);
     }
-    return g;
+    contact_stiffness(fr, q.data(), st.hessian.data());  // symmetric: storage order irrelevant
+    return st;
   };
 
   Eigen::Vector3d q(0.0, 0.0, preload_.z);
-  Eigen::Vector3d g = gradient(q);
+  State at_q = evaluate(q);
   const double scale = F.norm();
-  const double tol = 1e-13 * scale;
-  int it = 0;
-  for (; it < 100 && g.norm() > tol; ++it) {
-    Eigen::Matrix3d H;
-    contact_stiffness(fr, q.data(), H.data());  // symmetric: row/column order irrelevant
-    const double mu = 1e-12 * H.trace() + 1e-300;
-    const Eigen::Vector3d p = -(H + mu * Eigen::Matrix3d::Identity()).ldlt().solve(g);
-    const double slope0 = g.dot(p);
-    if (!(p.allFinite() && slope0 < 0)) break;
-    // φ(α) = Φ(q + αp) is convex: take α = 1 unless φ'(1) > 0, then find φ' = 0 in (0, 1).
-    Eigen::Vector3d g1 = gradient(q + p);
-    double alpha = 1.0;
-    if (g1.dot(p) > 0) {
-      double lo = 0, hi = 1, d_lo = slope0, d_hi = g1.dot(p);
-      for (int k = 0; k < 100; ++k) {
-        alpha = lo - d_lo * (hi - lo) / (d_hi - d_lo);
-        if (!(alpha > lo + 0.01 * (hi - lo) && alpha < hi - 0.01 * (hi - lo)))
-          alpha = 0.5 * (lo + hi);
-        g1 = gradient(q + alpha * p);
-        const double d = g1.dot(p);
-        if (std::abs(d) <= 0.1 * std::abs(slope0)) break;
-        (d < 0 ? lo : hi) = alpha;
-        (d < 0 ? d_lo : d_hi) = d;
-      }
-    }
-    q += alpha * p;
-    g = g1;
-  }
+  numerics::NewtonOptions o;
+  o.tolerance = 1e-13 * scale;
+  o.max_iterations = 100;
+  o.line_search.unit_step = numerics::UnitStep::short_of_minimum;
+  o.line_search.zoom.max_iterations = 100;
+  o.line_search.zoom.margin = 0.01;
+  o.line_search.zoom.illinois = false;
+  o.line_search.zoom.stop_on_collapse = false;
+  const numerics::NewtonResult r = numerics::newton_minimize(
+      q, at_q, evaluate, [](const State&, const State&, const Eigen::Vector3d&) { return true; },
+      o);
+  const int it = r.iterations - (r.stalled ? 1 : 0);  // the one that could not move not counted
+  const Eigen::Vector3d& g = at_q.gradient;
   if (!(g.norm() <= 1e-9 * scale)) {
     std::ostringstream msg;
     msg << "3-DOF model: no static equilibrium under the loads (" << format_number(F.x()) << ", "

@@ -11,13 +11,12 @@
 #include <cstdint>
 #include <string>
 
+#include "bearing/constants.h"
 #include "bearing/errors.h"
 
 namespace bearing {
 
 namespace {
-
-constexpr double kTwoPi = 6.283185307179586476925286766559;
 
 // Above this largest prime factor of N, GSL's mixed-radix FFT falls back on an O(N·p) generic
 // pass (O(N²) for prime N: 0.55 s at N = 24001), so Bluestein's algorithm is used instead.
@@ -85,7 +84,7 @@ class RealFft::Tables {
     const std::uint64_t period = 2 * static_cast<std::uint64_t>(n);
     for (std::size_t j = 0; j < n; ++j) {
       const std::uint64_t r = (static_cast<std::uint64_t>(j) * j) % period;
-      chirp_[j] = std::polar(1.0, kTwoPi * 0.5 * static_cast<double>(r) / static_cast<double>(n));
+      chirp_[j] = std::polar(1.0, two_pi * 0.5 * static_cast<double>(r) / static_cast<double>(n));
     }
     complex_table_.reset(gsl_fft_complex_wavetable_alloc(m_));
     complex_work_.reset(gsl_fft_complex_workspace_alloc(m_));

@@ -12,6 +12,7 @@
 #include <string>
 #include <utility>
 
+#include "bearing/constants.h"
 #include "bearing/errors.h"
 #include "bearing/signal/fft.h"
 #include "bearing/units.h"
@@ -19,8 +20,6 @@
 namespace bearing {
 
 namespace {
-
-constexpr double kTwoPi = 6.283185307179586476925286766559;
 
 // Periodic cosine-sum windows w_j = Σ_m c_m cos(m·2πj/N); signs folded into c_m.
 constexpr std::array<double, 2> kHann{0.5, -0.5};
@@ -34,7 +33,7 @@ template <std::size_t M>
 std::vector<double> cosine_sum(std::size_t n, const std::array<double, M>& c) {
   std::vector<double> table(n);
   for (std::size_t i = 0; i < n; ++i)
-    table[i] = std::cos(kTwoPi * static_cast<double>(i) / static_cast<double>(n));
+    table[i] = std::cos(two_pi * static_cast<double>(i) / static_cast<double>(n));
   std::vector<double> w(n);
   for (std::size_t j = 0; j < n; ++j) {
     double s = c[0];

@@ -27,6 +27,7 @@
 #include <Eigen/Dense>
 
 #include "bearing/errors.h"
+#include "bearing/numerics/roots.h"
 #include "bearing/units.h"
 #include "integrator_detail.h"
 
@@ -89,10 +90,10 @@ StepLimit rk4_step_limit(const MechanicalSystem& system, double t, const double*
       lo = s;
     }
     if (hi == 0.0) continue;
-    for (int it = 0; it < 60; ++it) {
-      const double mid = 0.5 * (lo + hi);
-      (stable(mid * dir) ? lo : hi) = mid;
-    }
+    numerics::BisectionOptions o;
+    o.max_iterations = 60;
+    const auto stable_at = [&](double s) { return stable(s * dir); };
+    lo = numerics::bisect(lo, hi, stable_at, o).lo;
     const double h = lo / size;
     if (h < limit.step) limit = {h, lambda.real(), std::abs(lambda.imag())};
   }

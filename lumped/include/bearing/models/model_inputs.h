@@ -24,7 +24,7 @@ struct ModelInputs {
   Eigen::Vector2d load = Eigen::Vector2d::Zero();  ///< constant radial load (F_x, F_y) [N]
   double axial_load = 0.0;                         ///< F_z on the inner ring [N] (3-DOF)
   double unbalance = 0.0;  ///< m_u e [kg m]; F_u = m_u e ω_i², rotating with the shaft
-  bool gravity = false;    ///< add −m g to F_y (g = 9.80665 m/s²)
+  bool gravity = false;    ///< add −m g to F_y (g = standard_gravity = 9.80665 m/s²)
 
   double mass = 0.0;           ///< inner ring + shaft mass m [kg]
   double damping = 0.0;        ///< radial viscous damping c [N s/m]
