@@ -4,6 +4,7 @@
 #include <cstdio>
 #include <sstream>
 
+#include "bearing/constants.h"
 #include "bearing/errors.h"
 #include "bearing/presets.h"
 #include "bearing/units.h"
@@ -161,7 +162,7 @@ std::string info_text(const InfoReport& r) {
   const Case& c = r.input;
   const Bearing& b = c.bearing;
   std::ostringstream o;
-  const double rpm = c.operation.speed * 60.0 / (2.0 * M_PI);
+  const double rpm = c.operation.speed * 60.0 / (2.0 * pi);
   o << "Case: " << c.source << "\n";
   o << "Bearing " << b.designation;
   if (!c.preset.empty()) o << " (preset: " << preset_source(c.preset) << ")";
@@ -169,7 +170,7 @@ std::string info_text(const InfoReport& r) {
     << " mm, Z = " << b.balls << ", f_i = " << num(b.inner_conformity, 4)
     << ", f_o = " << num(b.outer_conformity, 4) << ", P_d = " << num(b.clearance * 1e6)
     << " um (gap per ball " << num(b.ball_gap() * 1e6)
-    << " um), alpha = " << num(b.contact_angle * 180.0 / M_PI) << " deg\n";
+    << " um), alpha = " << num(b.contact_angle * 180.0 / pi) << " deg\n";
   o << "  balls: E = " << num(b.ball.young / 1e9) << " GPa, nu = " << num(b.ball.poisson)
     << "; rings: E = " << num(b.rings.young / 1e9) << " GPa, nu = " << num(b.rings.poisson) << "\n";
   o << "Operation: inner ring " << num(rpm)
@@ -224,7 +225,7 @@ std::string info_text(const InfoReport& r) {
       << rpad("load [N]", 14) << "\n";
     for (std::size_t j = 0; j < s.ball_loads.size(); ++j)
       o << "  " << rpad(std::to_string(j + 1), 6)
-        << rpad(fixed(s.ball_angles[j] * 180.0 / M_PI, 1), 14)
+        << rpad(fixed(s.ball_angles[j] * 180.0 / pi, 1), 14)
         << rpad(fixed(s.ball_approach[j] * 1e6, 4), 16) << rpad(num(s.ball_loads[j]), 14) << "\n";
   }
   return o.str();

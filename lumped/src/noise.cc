@@ -11,6 +11,7 @@
 #include "bearing/acoustics/microphones.h"
 #include "bearing/acoustics/pressure.h"
 #include "bearing/acoustics/sources.h"
+#include "bearing/constants.h"
 #include "bearing/errors.h"
 #include "bearing/units.h"
 
@@ -18,7 +19,6 @@ namespace bearing {
 
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 
 std::string microphone_key(std::size_t i) {
   return "acoustics.microphones[" + std::to_string(i) + "]";
@@ -33,7 +33,7 @@ std::string mm(double metres) {
 
 std::string shown(const Microphone& m) {
   char buf[32];
-  std::snprintf(buf, sizeof buf, "%.4g deg", m.angle * 180 / kPi);
+  std::snprintf(buf, sizeof buf, "%.4g deg", m.angle * 180 / pi);
   return "[" + mm(m.radius) + ", " + buf + "]";
 }
 
@@ -127,7 +127,7 @@ BearingNoise radiate(const Response& response, const AcousticsOptions& ac, const
       const double a = ball->radius();
       for (int j = 0; j < Z; ++j) {
         const SourcePath path = ball_path(lv.position, 0.5 * bearing.pitch_diameter,
-                                          2 * kPi * j / Z, cage_speed, out.time, radial[j]);
+                                          2 * pi * j / Z, cage_speed, out.time, radial[j]);
         const auto closest = std::min_element(path.distance.begin(), path.distance.end());
         if (*closest <= a) {
           const auto k = static_cast<std::size_t>(closest - path.distance.begin());
