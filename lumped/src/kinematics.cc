@@ -8,6 +8,7 @@
 
 #include "bearing/constants.h"
 #include "bearing/errors.h"
+#include "bearing/limits.h"
 #include "bearing/units.h"
 
 namespace bearing {
@@ -46,9 +47,7 @@ double cage_speed(const Bearing& b, double inner_speed, double outer_speed) {
 
 BearingFrequencies bearing_frequencies(const Bearing& b, double inner_speed, double outer_speed,
                                        double cage_slip) {
-  if (!(std::isfinite(cage_slip) && cage_slip >= 0.0 && cage_slip < 1.0))
-    throw InputError("cage.slip = " + format_number(cage_slip) +
-                     ": the cage slip ratio must lie in [0, 1)");
+  limits::cage_slip.check(cage_slip);
   if (b.balls < 1)
     throw InputError("bearing.balls = " + std::to_string(b.balls) + ": must be at least 1");
   const double g = geometry_ratio(b);

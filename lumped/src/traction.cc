@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "bearing/errors.h"
+#include "bearing/limits.h"
 #include "bearing/units.h"
 
 namespace bearing {
@@ -29,15 +30,9 @@ void require_finite(double w, const char* what) {
 
 }  // namespace
 
-TractionCurve make_traction_curve(double max_coefficient, double slide_speed,
-                                  const std::string& friction_key,
-                                  const std::string& slide_speed_key) {
-  if (!(std::isfinite(max_coefficient) && max_coefficient >= 0))
-    throw InputError(friction_key + " = " + format_number(max_coefficient) +
-                     ": the largest traction coefficient must be 0 or more");
-  if (!(std::isfinite(slide_speed) && slide_speed > 0))
-    throw InputError(slide_speed_key + " = " + format_number(slide_speed) +
-                     " m/s: the sliding speed where traction saturates must be positive");
+TractionCurve make_traction_curve(double max_coefficient, double slide_speed) {
+  limits::cage_friction.check(max_coefficient);
+  limits::cage_slide_speed.check(slide_speed);
   return {max_coefficient, slide_speed};
 }
 

@@ -51,11 +51,9 @@ struct TractionCurve {
   }
 };
 
-/// A checked TractionCurve: InputError naming `friction_key` unless 0 ≤ μ_m < ∞, or
-/// `slide_speed_key` unless 0 < Δv_m < ∞.
-TractionCurve make_traction_curve(double max_coefficient, double slide_speed,
-                                  const std::string& friction_key = "cage.friction",
-                                  const std::string& slide_speed_key = "cage.slide_speed");
+/// A checked TractionCurve: InputError naming cage.friction or cage.slide_speed outside their
+/// limits (limits.h).
+TractionCurve make_traction_curve(double max_coefficient, double slide_speed);
 
 /// Sliding speeds at the two contacts of a ball [m/s].
 struct SlidingSpeeds {

@@ -5,6 +5,7 @@
 // case_rules.cc.
 
 #include "bearing/constants.h"
+#include "bearing/models/ball_dofs.h"
 #include "bearing/models/model_registry.h"
 #include "case_rules.h"
 #include "key_builders.h"
@@ -115,25 +116,22 @@ std::vector<Key> rotor_keys() {
       table("rotor", "inner ring and shaft"),
       quantity(
           "rotor.mass", D::mass, "inner ring + shaft mass (default 0.6 kg)",
-          [](auto& c) -> auto& { return c.rotor.mass; }, positive("must be positive (> 0 kg)")),
+          [](auto& c) -> auto& { return c.rotor.mass; }, limits::rotor_mass),
       quantity(
           "rotor.damping", D::damping, "radial damping (default 200 N s/m)",
-          [](auto& c) -> auto& { return c.rotor.damping; }, non_negative()),
+          [](auto& c) -> auto& { return c.rotor.damping; }, limits::rotor_damping),
       quantity(
           "rotor.axial_mass", D::mass, "axial mass, 3dof (default: rotor.mass)",
-          [](auto& c) -> auto& { return c.rotor.axial_mass; },
-          positive("must be positive (> 0 kg)"), [](const Case& c) { return c.rotor.mass; }),
+          [](auto& c) -> auto& { return c.rotor.axial_mass; }, limits::rotor_axial_mass,
+          [](const Case& c) { return c.rotor.mass; }),
       quantity(
           "rotor.axial_damping", D::damping, "axial damping, 3dof (default: rotor.damping)",
-          [](auto& c) -> auto& { return c.rotor.axial_damping; }, non_negative(),
+          [](auto& c) -> auto& { return c.rotor.axial_damping; }, limits::rotor_axial_damping,
           [](const Case& c) { return c.rotor.damping; }),
   };
 }
 
 std::vector<Key> operation_keys() {
-  Limit speed =
-      non_negative("must be >= 0 rpm (the inner ring turns counter-clockwise seen from +z)");
-  speed.unit = "rpm";
   Key load = described("operation.load", Kind::vector2, D::force,
                        "radial load [Fx, Fy] on the inner ring (y up: Fy < 0 pushes down)");
   load.read = [](TableReader& r, Case& c, const ReadContext&) {
@@ -146,7 +144,7 @@ std::vector<Key> operation_keys() {
       table("operation", "operating conditions"),
       quantity(
           "operation.speed", D::angular_speed, "inner-ring speed",
-          [](auto& c) -> auto& { return c.operation.speed; }, speed),
+          [](auto& c) -> auto& { return c.operation.speed; }, limits::operation_speed),
       load,
       quantity(
           "operation.axial_load", D::force, "axial load / preload Fz, 3dof",
@@ -154,7 +152,7 @@ std::vector<Key> operation_keys() {
       quantity(
           "operation.unbalance", D::mass_length,
           "unbalance m_u e; force m_u e w^2 rotating with the shaft",
-          [](auto& c) -> auto& { return c.operation.unbalance; }, non_negative()),
+          [](auto& c) -> auto& { return c.operation.unbalance; }, limits::operation_unbalance),
       boolean(
           "operation.gravity", "add the rotor weight -m g to Fy",
           [](auto& c) -> auto& { return c.operation.gravity; }),
@@ -251,18 +249,15 @@ std::vector<Key> cage_keys() {
           "cage.slip", D::dimensionless,
           "balls: cage slip s_c in [0, 1), cage at (1 - s_c) x its pure-rolling speed "
           "(default 0)",
-          [](auto& c) -> auto& { return c.cage.slip; },
-          within(0, 1, false, true, "must lie in [0, 1) (0: pure rolling; 0.02: 2 %)")),
+          [](auto& c) -> auto& { return c.cage.slip; }, limits::cage_slip),
       quantity(
           "cage.friction", D::dimensionless,
           "balls: traction coefficient mu_m reached at cage.slide_speed (default 0.01)",
-          [](auto& c) -> auto& { return c.cage.friction; },
-          within(0, 1, false, false, "must lie in [0, 1] (0: no friction)")),
+          [](auto& c) -> auto& { return c.cage.friction; }, limits::cage_friction),
       quantity(
           "cage.slide_speed", D::velocity,
           "balls: sliding speed where traction saturates (default 0.1 m/s)",
-          [](auto& c) -> auto& { return c.cage.slide_speed; },
-          within(0, 100, true, false, "must lie in (0, 100 m/s]")),
+          [](auto& c) -> auto& { return c.cage.slide_speed; }, limits::cage_slide_speed),
   };
 }
 
@@ -271,22 +266,16 @@ std::vector<Key> ball_keys() {
       owned_table("ball", "each ball's dynamics (balls)"),
       quantity(
           "ball.mass", D::mass, "balls: ball mass (default: density x pi D^3/6)",
-          [](auto& c) -> auto& { return c.ball.mass; }, positive("must be positive"),
-          [](const Case& c) {
-            const double D = c.bearing.ball_diameter;
-            return c.bearing.ball.density * pi * D * D * D / 6.0;
-          }),
+          [](auto& c) -> auto& { return c.ball.mass; }, limits::ball_mass,
+          [](const Case& c) { return default_ball_mass(c.bearing); }),
       quantity(
           "ball.inertia", D::inertia, "balls: ball moment of inertia (default: mass x D^2/10)",
-          [](auto& c) -> auto& { return c.ball.inertia; }, positive("must be positive"),
-          [](const Case& c) {
-            const double D = c.bearing.ball_diameter;
-            return c.ball.mass * D * D / 10.0;
-          }),
+          [](auto& c) -> auto& { return c.ball.inertia; }, limits::ball_inertia,
+          [](const Case& c) { return default_ball_inertia(c.ball.mass, c.bearing.ball_diameter); }),
       quantity(
           "ball.damping", D::damping,
           "balls: damping of each ball's radial motion (default: rotor.damping)",
-          [](auto& c) -> auto& { return c.ball.damping; }, non_negative(),
+          [](auto& c) -> auto& { return c.ball.damping; }, limits::ball_damping,
           [](const Case& c) { return c.rotor.damping; }),
       boolean(
           "ball.centrifugal",
@@ -305,8 +294,7 @@ std::vector<Key> solver_keys() {
           [](auto& c) -> auto& { return c.solver.method; }),
       quantity(
           "solver.dt", D::time, "time step, or first step (default 5 us)",
-          [](auto& c) -> auto& { return c.solver.dt; },
-          within(0, 1e-3, true, false, "must lie in (0, 1 ms]; the Hertz contacts need a few us")),
+          [](auto& c) -> auto& { return c.solver.dt; }, limits::solver_dt),
       quantity(
           "solver.duration", D::time, "simulated time (default 1.2 s)",
           [](auto& c) -> auto& { return c.solver.duration; },
@@ -317,8 +305,7 @@ std::vector<Key> solver_keys() {
       quantity(
           "solver.tolerance", D::dimensionless,
           "relative tolerance, adaptive/bdf/newmark (default 1e-6)",
-          [](auto& c) -> auto& { return c.solver.tolerance; },
-          within(0, 0.1, true, false, "must lie in (0, 0.1]")),
+          [](auto& c) -> auto& { return c.solver.tolerance; }, limits::solver_tolerance),
       quantity(
           "solver.output_rate", D::frequency, "samples written per second (20 kHz)",
           [](auto& c) -> auto& { return c.solver.output_rate; },
@@ -326,7 +313,8 @@ std::vector<Key> solver_keys() {
       quantity(
           "solver.max_displacement", D::length,
           "blow-up bound on the ring displacement (default 1 mm)",
-          [](auto& c) -> auto& { return c.solver.max_displacement; }, positive("must be positive")),
+          [](auto& c) -> auto& { return c.solver.max_displacement; },
+          limits::solver_max_displacement),
   };
 }
 

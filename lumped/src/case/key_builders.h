@@ -9,35 +9,27 @@
 #include <utility>
 
 #include "bearing/errors.h"
+#include "bearing/limits.h"
 #include "case_schema.h"
 
 namespace bearing::case_schema {
 
-/// The allowed range of a number, and the message that says it ("must lie in (0, 1 ms]").
-struct Limit {
-  double lo = -std::numeric_limits<double>::infinity();
-  double hi = std::numeric_limits<double>::infinity();
-  bool lo_open = false, hi_open = false;
-  std::string allowed;         ///< empty: no check
-  const char* unit = nullptr;  ///< show the value in this unit ("rpm"); nullptr: SI
-
-  bool contains(double v) const {
-    return (lo_open ? v > lo : v >= lo) && (hi_open ? v < hi : v <= hi);
-  }
-};
-
-inline Limit positive(std::string allowed) {
-  Limit l;
-  l.lo = 0, l.lo_open = true, l.allowed = std::move(allowed);
-  return l;
+// Ranges of keys only the schema checks; those other layers check too are in bearing/limits.h.
+inline Limit positive(const char* allowed) {
+  return Limit{nullptr, Dimension::dimensionless, 0, limits::inf, true, false, allowed};
 }
-inline Limit non_negative(std::string allowed = "must be >= 0") {
-  Limit l;
-  l.lo = 0, l.allowed = std::move(allowed);
-  return l;
+inline Limit non_negative(const char* allowed = "must be >= 0") {
+  return Limit{nullptr, Dimension::dimensionless, 0, limits::inf, false, false, allowed};
 }
-inline Limit within(double lo, double hi, bool lo_open, bool hi_open, std::string allowed) {
-  return Limit{lo, hi, lo_open, hi_open, std::move(allowed)};
+inline Limit within(double lo, double hi, bool lo_open, bool hi_open, const char* allowed) {
+  return Limit{nullptr, Dimension::dimensionless, lo, hi, lo_open, hi_open, allowed};
+}
+/// No range check.
+inline Limit unchecked() {
+  return Limit{nullptr, Dimension::dimensionless, 0, 0, false, false, nullptr};
+}
+inline bool checked(const Limit& l) {
+  return l.allowed != nullptr;
 }
 
 /// InputError "key = value unit: allowed" unless `ok`.
@@ -46,8 +38,14 @@ inline void require(bool ok, const std::string& key, double v, Dimension dim,
   if (!ok) throw InputError(key + " = " + fmt_si(v, dim) + ": " + allowed);
 }
 
+// A shared limit belongs to exactly the key whose row uses it.
+inline void require_own_limit(const Limit& limit, const std::string& key) {
+  if (limit.key && key != limit.key)
+    throw std::logic_error("case schema: row " + key + " uses the limit of " + limit.key);
+}
+
 inline void check_limit(const Limit& limit, const std::string& key, double v, Dimension dim) {
-  if (limit.allowed.empty() || limit.contains(v)) return;
+  if (!checked(limit) || limit.contains(v)) return;
   if (limit.unit)
     throw InputError(key + " = " + format_quantity(v, limit.unit, dim) + ": " + limit.allowed);
   require(false, key, v, dim, limit.allowed);
@@ -108,9 +106,10 @@ inline Key described(std::string name, Kind kind, Dimension dim, std::string hel
 
 /// A number with a dimension; absent, it keeps the Case default or takes `fallback(c)`.
 template <class At>
-Key quantity(std::string name, Dimension dim, std::string help, At at, Limit limit = {},
+Key quantity(std::string name, Dimension dim, std::string help, At at, Limit limit = unchecked(),
              std::function<double(const Case&)> fallback = {}) {
   Key k = described(std::move(name), Kind::quantity, dim, std::move(help));
+  require_own_limit(limit, k.name);
   const std::string leaf = leaf_of(k.name);
   k.read = [at, leaf, fallback](TableReader& r, Case& c, const ReadContext&) {
     if (const auto v = r.quantity(leaf))
@@ -118,7 +117,7 @@ Key quantity(std::string name, Dimension dim, std::string help, At at, Limit lim
     else if (fallback)
       at(c) = fallback(c);
   };
-  if (!limit.allowed.empty())
+  if (checked(limit))
     k.check = [at, key = k.name, dim, limit](const Case& c) {
       check_limit(limit, key, at(c), dim);
     };
@@ -130,17 +129,17 @@ Key quantity(std::string name, Dimension dim, std::string help, At at, Limit lim
 
 /// A whole number; `limit` is checked on the value as written, before it lands in an int.
 template <class At>
-Key integer(std::string name, std::string help, At at, Limit limit = {},
+Key integer(std::string name, std::string help, At at, Limit limit = unchecked(),
             std::function<int(const Case&)> fallback = {}) {
   Key k = described(std::move(name), Kind::integer, Dimension::dimensionless, std::move(help));
   const std::string leaf = leaf_of(k.name);
   k.read = [at, leaf, limit, fallback, key = k.name](TableReader& r, Case& c, const ReadContext&) {
     if (const auto v = r.integer(leaf)) {
-      const bool fits = limit.allowed.empty() ? std::abs(*v) <= 1000000000LL
-                                              : limit.contains(static_cast<double>(*v));
+      const bool fits =
+          !checked(limit) ? std::abs(*v) <= 1000000000LL : limit.contains(static_cast<double>(*v));
       if (!fits)
         throw InputError(key + " = " + std::to_string(*v) + ": " +
-                         (limit.allowed.empty() ? "too large" : limit.allowed));
+                         (checked(limit) ? limit.allowed : "too large"));
       at(c) = static_cast<int>(*v);
     } else if (fallback) {
       at(c) = fallback(c);

@@ -24,6 +24,7 @@
 #include "bearing/constants.h"
 #include "bearing/errors.h"
 #include "bearing/kinematics.h"
+#include "bearing/limits.h"
 #include "bearing/models/three_dof.h"
 #include "bearing/numerics/roots.h"
 #include "bearing/static_load.h"
@@ -38,20 +39,12 @@ namespace {
 // ω_c at the loaded contact angle of the axial static state when there is an axial load.
 double checked_cage_speed(const ModelInputs& in) {
   detail::validate_common_inputs(in);
-  if (!(in.cage_slip >= 0 && in.cage_slip < 1))
-    throw InputError("cage.slip = " + format_number(in.cage_slip) +
-                     ": the cage slip s_c must be in [0, 1) (0: pure rolling; 0.02: 2 %)");
+  limits::cage_slip.check(in.cage_slip);
   make_traction_curve(in.traction.max_coefficient, in.traction.slide_speed);
-  const auto non_negative = [](double v, const std::string& key, const char* unit) {
-    if (!(std::isfinite(v) && v >= 0))
-      throw InputError(key + " = " + format_number(v) + " " + unit +
-                       ": must be finite and >= 0 (0: the default)");
-  };
-  non_negative(in.ball_mass, "ball.mass", "kg");
-  non_negative(in.ball_inertia, "ball.inertia", "kg m^2");
-  if (!(std::isfinite(in.ball_damping) && in.ball_damping >= 0))
-    throw InputError("ball.damping = " + format_number(in.ball_damping) +
-                     " N s/m: must be finite and >= 0");
+  // 0 stands for the default (default_ball_mass, default_ball_inertia).
+  if (in.ball_mass != 0) limits::ball_mass.check(in.ball_mass);
+  if (in.ball_inertia != 0) limits::ball_inertia.check(in.ball_inertia);
+  limits::ball_damping.check(in.ball_damping);
   if (!(in.contact.inner.K > 0 && in.contact.outer.K > 0 && std::isfinite(in.contact.inner.K) &&
         std::isfinite(in.contact.outer.K) && in.contact.inner.exponent >= 1 &&
         in.contact.outer.exponent >= 1))
@@ -114,8 +107,8 @@ class BallDofs final : public BallDofModel {
     }
     const double g = D * std::cos(alpha) / dm;
     const double wc = set_.cage_speed();
-    ball_mass_ = in.ball_mass > 0 ? in.ball_mass : b.ball.density * pi * D * D * D / 6.0;
-    ball_inertia_ = in.ball_inertia > 0 ? in.ball_inertia : ball_mass_ * D * D / 10.0;
+    ball_mass_ = in.ball_mass > 0 ? in.ball_mass : default_ball_mass(b);
+    ball_inertia_ = in.ball_inertia > 0 ? in.ball_inertia : default_ball_inertia(ball_mass_, D);
     ball_damping_ = in.ball_damping;
     lever_ = 0.5 * D * std::cos(alpha);
     drive_inner_ = 0.5 * (in.inner_speed - wc) * dm * (1.0 - g);
@@ -465,6 +458,15 @@ class BallDofs final : public BallDofModel {
 };
 
 }  // namespace
+
+double default_ball_mass(const Bearing& b) {
+  const double D = b.ball_diameter;
+  return b.ball.density * pi * D * D * D / 6.0;
+}
+
+double default_ball_inertia(double mass, double diameter) {
+  return mass * diameter * diameter / 10.0;  // a solid sphere
+}
 
 std::unique_ptr<BallDofModel> make_ball_dof_model(const ModelInputs& inputs) {
   return std::make_unique<BallDofs>(inputs);

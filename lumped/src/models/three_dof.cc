@@ -26,6 +26,7 @@
 #include "ball_set.h"
 #include "bearing/constants.h"
 #include "bearing/kinematics.h"
+#include "bearing/limits.h"
 #include "bearing/numerics/newton.h"
 #include "bearing/numerics/roots.h"
 #include "bearing/static_load.h"
@@ -43,12 +44,8 @@ void validate_axial(const ModelInputs& in) {
   if (!std::isfinite(in.axial_load))
     throw InputError("operation.axial_load = " + format_number(in.axial_load) +
                      " N: must be finite");
-  if (!(std::isfinite(in.axial_mass) && in.axial_mass >= 0))
-    throw InputError("rotor.axial_mass = " + format_number(in.axial_mass) +
-                     " kg: must be finite and >= 0 (0: same as rotor.mass)");
-  if (!(std::isfinite(in.axial_damping) && in.axial_damping >= 0))
-    throw InputError("rotor.axial_damping = " + format_number(in.axial_damping) +
-                     " N s/m: must be finite and >= 0");
+  if (in.axial_mass != 0) limits::rotor_axial_mass.check(in.axial_mass);  // 0: rotor.mass
+  limits::rotor_axial_damping.check(in.axial_damping);
 }
 
 // The axial static state for load F (sign included): Z K δ^n sin α = F.

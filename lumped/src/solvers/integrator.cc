@@ -27,6 +27,7 @@
 #include <Eigen/Dense>
 
 #include "bearing/errors.h"
+#include "bearing/limits.h"
 #include "bearing/numerics/roots.h"
 #include "bearing/units.h"
 #include "integrator_detail.h"
@@ -35,18 +36,15 @@ namespace bearing {
 
 namespace {
 
+// The settings come from [solver] (limits.h holds the keys' ranges) except atol, which the run
+// derives from solver.tolerance.
 void validate(const IntegratorSettings& s) {
-  if (!(std::isfinite(s.dt) && s.dt > 0))
-    throw InputError("solver.dt = " + format_number(s.dt) + " s must be positive and finite");
-  if (!(s.rtol > 0 && s.rtol <= 0.1))
-    throw InputError("solver.tolerance: relative tolerance " + format_number(s.rtol) +
-                     " must be in (0, 0.1]");
+  limits::solver_dt.check(s.dt);
+  limits::solver_tolerance.check(s.rtol);
   if (!(std::isfinite(s.atol) && s.atol > 0))
     throw InputError("solver.tolerance: absolute tolerance " + format_number(s.atol) +
                      " m must be positive and finite");
-  if (!(std::isfinite(s.max_displacement) && s.max_displacement > 0))
-    throw InputError("solver max_displacement = " + format_number(s.max_displacement) +
-                     " m (the blow-up bound) must be positive and finite");
+  limits::solver_max_displacement.check(s.max_displacement);
 }
 
 }  // namespace

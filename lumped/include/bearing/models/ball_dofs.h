@@ -92,6 +92,11 @@ class BallDofModel : public BearingModel {
   virtual FrictionPower friction_power(double t, const double* q, const double* v) const = 0;
 };
 
+/// A steel ball's mass from its material, ρ π D³/6 [kg] (ball.mass's default).
+double default_ball_mass(const Bearing& b);
+/// A solid sphere's moment of inertia m D²/10 [kg m²] (ball.inertia's default).
+double default_ball_inertia(double mass, double diameter);
+
 /// Builds the ball-DOF model: planar (2Z + 2 DOFs), or with the ring's z (2Z + 3) when
 /// inputs.axial_load ≠ 0. Throws InputError naming the case key for invalid inputs (those of the
 /// 2-DOF and, with an axial load, the 3-DOF model, and cage.slip outside [0, 1), a negative
