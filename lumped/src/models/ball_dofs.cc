@@ -29,6 +29,7 @@
 #include "bearing/static_load.h"
 #include "bearing/units.h"
 #include "groove_geometry.h"
+#include "model_input_checks.h"
 
 namespace bearing {
 

@@ -17,6 +17,7 @@
 #include "bearing/numerics/newton.h"
 #include "bearing/static_load.h"
 #include "bearing/units.h"
+#include "model_input_checks.h"
 
 namespace bearing {
 

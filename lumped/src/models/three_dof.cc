@@ -30,6 +30,7 @@
 #include "bearing/numerics/roots.h"
 #include "bearing/static_load.h"
 #include "groove_geometry.h"
+#include "model_input_checks.h"
 
 namespace bearing {
 

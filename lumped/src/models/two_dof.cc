@@ -11,6 +11,7 @@
 #include "bearing/constants.h"
 #include "bearing/kinematics.h"
 #include "bearing/static_load.h"
+#include "model_input_checks.h"
 
 namespace bearing {
 
