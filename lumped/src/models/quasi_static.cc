@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "ball_motion.h"
 #include "ball_set.h"
 #include "bearing/constants.h"
 #include "bearing/errors.h"

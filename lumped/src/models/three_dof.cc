@@ -23,6 +23,7 @@
 
 #include <Eigen/Dense>
 
+#include "ball_motion.h"
 #include "ball_set.h"
 #include "bearing/constants.h"
 #include "bearing/kinematics.h"

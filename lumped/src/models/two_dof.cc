@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "ball_motion.h"
 #include "ball_set.h"
 #include "bearing/constants.h"
 #include "bearing/kinematics.h"
