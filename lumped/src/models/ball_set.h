@@ -12,9 +12,8 @@
 //     K_j = (K_i^{−2/3} + K_o^{−2/3})^{−3/2}.
 
 #include <algorithm>
-#include <atomic>
+#include <cassert>
 #include <cmath>
-#include <cstdint>
 #include <memory>
 #include <vector>
 
@@ -23,6 +22,8 @@
 #include "bearing/excitation.h"
 #include "bearing/hertz.h"
 #include "bearing/models/model_inputs.h"
+#include "bearing/solvers/mechanical_system.h"
+#include "frame_workspace.h"
 #include "max_balls.h"
 #include "model_input_checks.h"
 #include "phasor.h"
@@ -153,12 +154,19 @@ class BallSet {
     }
   }
 
-  /// The frame at time t [s], memoised per thread for the last (ball set, t). RK4 evaluates twice
-  /// at t + h/2 and starts each step at the previous step's end time, so half its force calls
-  /// reuse the frame. The memo is keyed by a per-object id, never by address, and each thread
-  /// has its own, so force() stays const and thread-safe. The reference is valid until the next
-  /// call of frame() on this thread.
-  const BallFrame& frame(double t) const { return memoised<BallFrame>(t); }
+  /// The frame at time t [s] in `workspace` (a FrameWorkspace<Frame> from the model's
+  /// make_workspace()), evaluated only when t differs from the last t asked of it
+  /// (frame_workspace.h). The reference is valid until the next call with this workspace.
+  template <class Frame>
+  const Frame& frame(double t, MechanicalSystem::Workspace& workspace) const {
+    assert(dynamic_cast<FrameWorkspace<Frame>*>(&workspace));
+    auto& w = static_cast<FrameWorkspace<Frame>&>(workspace);
+    if (w.t != t) {
+      evaluate(t, w.frame);
+      w.t = t;
+    }
+    return w.frame;
+  }
 
   /// Each ball's load Q_j = K_j [δ_j]_+^n at time t [N], with δ_j = approach(j, frame) [m] the
   /// model's own geometry (shared by the models' ball_loads()).
@@ -234,26 +242,7 @@ class BallSet {
     }
   }
 
-  /// The races' frame at t (evaluate(t, RaceFrame&)), memoised per thread like frame().
-  const RaceFrame& race_frame(double t) const { return memoised<RaceFrame>(t); }
-
  private:
-  // One memo per thread and frame type (BallFrame, RaceFrame); see frame().
-  template <class Frame>
-  const Frame& memoised(double t) const {
-    thread_local struct {
-      std::uint64_t owner = 0;
-      double t = 0.0;
-      Frame frame;
-    } memo;
-    if (memo.owner != id_ || memo.t != t) {
-      evaluate(t, memo.frame);
-      memo.owner = id_;
-      memo.t = t;
-    }
-    return memo.frame;
-  }
-
   // θ_j and the shaft angle at t: the precomputed (cos, sin) of φ₀ + 2πj/Z rotated by the one
   // phasor of ω_c t (Frame: BallFrame or RaceFrame).
   template <class Frame>
@@ -296,12 +285,7 @@ class BallSet {
     inner_stiffness_ = race_stiffness(in, Race::inner, in.inner_waviness, *method);
     outer_stiffness_ = race_stiffness(in, Race::outer, in.outer_waviness, *method);
   }
-  static std::uint64_t next_id() {
-    static std::atomic<std::uint64_t> counter{0};
-    return ++counter;
-  }
 
-  std::uint64_t id_ = next_id();  ///< identifies this ball set in the per-thread frame memo
   int balls_;
   double cage_speed_;
   double inner_speed_;
