@@ -30,6 +30,7 @@
 #include "bearing/static_load.h"
 #include "bearing/units.h"
 #include "groove_geometry.h"
+#include "model_input_checks.h"
 
 namespace bearing {
 
@@ -128,10 +129,21 @@ class BallDofs final : public BallDofModel {
   }
   bool cyclic(int i) const override { return i >= ring_ + balls_; }
 
+  std::unique_ptr<Workspace> make_workspace() const override {
+    return std::make_unique<detail::FrameWorkspace<detail::RaceFrame>>();
+  }
+
   void force(double t, const double* q, const double* v, double* f) const override {
+    detail::FrameWorkspace<detail::RaceFrame> fresh;  // on the stack, evaluated at t
+    force_with(&fresh, t, q, v, f);
+  }
+
+  void force_with(Workspace* workspace, double t, const double* q, const double* v,
+                  double* f) const override {
+    if (!workspace) return force(t, q, v, f);
     // One instantiation per geometry, friction on/off and Hertz exponents: the hot loop has no
     // per-ball branches on them.
-    const detail::RaceFrame& fr = set_.race_frame(t);
+    const detail::RaceFrame& fr = set_.frame<detail::RaceFrame>(t, *workspace);
     if (axial_)
       friction_ ? force_impl<true, true>(fr, q, v, f) : force_impl<true, false>(fr, q, v, f);
     else if (hertz_)
@@ -144,7 +156,8 @@ class BallDofs final : public BallDofModel {
   // Row-major n×n (see the top of this file).
   void force_jacobian(double t, const double* q, const double* v, double* dfdq,
                       double* dfdv) const override {
-    const detail::RaceFrame& fr = set_.race_frame(t);
+    detail::RaceFrame fr;
+    set_.evaluate(t, fr);
     const int Z = balls_, n = dofs(), nr = ring_;
     std::fill(dfdq, dfdq + n * n, 0.0);
     std::fill(dfdv, dfdv + n * n, 0.0);

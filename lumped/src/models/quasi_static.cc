@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "ball_motion.h"
 #include "ball_set.h"
 #include "bearing/constants.h"
 #include "bearing/errors.h"
@@ -17,6 +18,7 @@
 #include "bearing/numerics/newton.h"
 #include "bearing/static_load.h"
 #include "bearing/units.h"
+#include "model_input_checks.h"
 
 namespace bearing {
 

@@ -23,6 +23,7 @@
 
 #include <Eigen/Dense>
 
+#include "ball_motion.h"
 #include "ball_set.h"
 #include "bearing/constants.h"
 #include "bearing/kinematics.h"
@@ -31,6 +32,7 @@
 #include "bearing/numerics/roots.h"
 #include "bearing/static_load.h"
 #include "groove_geometry.h"
+#include "model_input_checks.h"
 
 namespace bearing {
 
@@ -121,8 +123,19 @@ class ThreeDofModel final : public BearingModel {
     m[2] = axial_mass_;
   }
 
+  std::unique_ptr<Workspace> make_workspace() const override {
+    return std::make_unique<detail::FrameWorkspace<detail::BallFrame>>();
+  }
+
   void force(double t, const double* q, const double* v, double* f) const override {
-    const detail::BallFrame& fr = set_.frame(t);
+    detail::FrameWorkspace<detail::BallFrame> fresh;  // on the stack, evaluated at t
+    force_with(&fresh, t, q, v, f);
+  }
+
+  void force_with(Workspace* workspace, double t, const double* q, const double* v,
+                  double* f) const override {
+    if (!workspace) return force(t, q, v, f);
+    const detail::BallFrame& fr = set_.frame<detail::BallFrame>(t, *workspace);
     const double x = q[0], y = q[1], z = q[2], n = set_.exponent();
     const double w = geometry_.w0 + z;
     double fx = load_x_ + unbalance_force_ * fr.cos_shaft - damping_ * v[0];
@@ -148,7 +161,8 @@ class ThreeDofModel final : public BearingModel {
 
   void force_jacobian(double t, const double* q, const double* /*v*/, double* dfdq,
                       double* dfdv) const override {
-    const detail::BallFrame& fr = set_.frame(t);
+    detail::BallFrame fr;
+    set_.evaluate(t, fr);
     contact_stiffness(fr, q, dfdq);
     for (int i = 0; i < 9; ++i) dfdq[i] = -dfdq[i];
     for (int i = 0; i < 9; ++i) dfdv[i] = 0.0;

@@ -7,10 +7,12 @@
 #include <string>
 #include <vector>
 
+#include "ball_motion.h"
 #include "ball_set.h"
 #include "bearing/constants.h"
 #include "bearing/kinematics.h"
 #include "bearing/static_load.h"
+#include "model_input_checks.h"
 
 namespace bearing {
 
@@ -37,9 +39,20 @@ class TwoDofModel final : public BearingModel {
   int dofs() const override { return 2; }
   void mass(double* m) const override { m[0] = m[1] = mass_; }
 
-  // Contact loop: δ_j from the rotated ball directions, Q_j = K_j δ_j^n, summed on the ring.
+  std::unique_ptr<Workspace> make_workspace() const override {
+    return std::make_unique<detail::FrameWorkspace<detail::BallFrame>>();
+  }
+
   void force(double t, const double* q, const double* v, double* f) const override {
-    const detail::BallFrame& fr = set_.frame(t);
+    detail::FrameWorkspace<detail::BallFrame> fresh;  // on the stack, evaluated at t
+    force_with(&fresh, t, q, v, f);
+  }
+
+  // Contact loop: δ_j from the rotated ball directions, Q_j = K_j δ_j^n, summed on the ring.
+  void force_with(Workspace* workspace, double t, const double* q, const double* v,
+                  double* f) const override {
+    if (!workspace) return force(t, q, v, f);
+    const detail::BallFrame& fr = set_.frame<detail::BallFrame>(t, *workspace);
     const double x = q[0], y = q[1], n = set_.exponent();
     double fx = load_x_ + unbalance_force_ * fr.cos_shaft - damping_ * v[0];
     double fy = load_y_ + unbalance_force_ * fr.sin_shaft - damping_ * v[1];
@@ -60,7 +73,8 @@ class TwoDofModel final : public BearingModel {
   // ∂f/∂v = −c I.
   void force_jacobian(double t, const double* q, const double* /*v*/, double* dfdq,
                       double* dfdv) const override {
-    const detail::BallFrame& fr = set_.frame(t);
+    detail::BallFrame fr;
+    set_.evaluate(t, fr);
     const double x = q[0], y = q[1], n = set_.exponent();
     double kxx = 0, kxy = 0, kyy = 0;
     const int Z = set_.balls();

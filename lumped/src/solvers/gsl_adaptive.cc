@@ -82,7 +82,7 @@ int first_order_rhs(double t, const double y[], double dydt[], void* params) {
   auto* c = static_cast<GslContext*>(params);
   const int n = c->n;
   try {
-    c->system->force(t, y, y + n, dydt + n);
+    c->system->force_with(c->workspace, t, y, y + n, dydt + n);
   } catch (...) {
     c->error = std::current_exception();
     return GSL_EBADFUNC;
@@ -151,8 +151,10 @@ IntegrationStats integrate_gsl(const std::string& method, const gsl_odeiv2_step_
   if (output_times.empty()) return stats;
 
   std::vector<double> dfdq(static_cast<std::size_t>(n) * n), dfdv(dfdq.size());
+  const std::unique_ptr<MechanicalSystem::Workspace> workspace = system.make_workspace();
   GslContext context;
   context.system = &system;
+  context.workspace = workspace.get();
   context.n = n;
   context.inv_mass = inv_mass.data();
   context.dfdq = dfdq.data();
@@ -189,7 +191,7 @@ IntegrationStats integrate_gsl(const std::string& method, const gsl_odeiv2_step_
   // its ends slightly). a = M⁻¹ f there is evaluated afresh (counted) and must be finite.
   const auto emit = [&](double t_out, const double* q, const double* v, long step, double dt) {
     check_state(method, t_out, step, dt, q, v, n, bound);
-    system.force(t_out, q, v, a.data());
+    system.force_with(workspace.get(), t_out, q, v, a.data());
     ++context.force_evaluations;
     for (int i = 0; i < n; ++i) a[static_cast<std::size_t>(i)] *= inv_mass[i];
     check_acceleration(method, t_out, step, dt, a.data(), n);

@@ -26,11 +26,13 @@ std::unique_ptr<Integrator> make_gsl_adaptive(const IntegratorSettings& settings
 std::unique_ptr<Integrator> make_newmark(const IntegratorSettings& settings);
 std::unique_ptr<Integrator> make_bdf(const IntegratorSettings& settings);
 
-/// What the GSL callbacks see through gsl_odeiv2_system::params: the model, 1/m, counters, work
-/// arrays for force_jacobian, and an exception the model threw inside a callback (it is carried
-/// across GSL's C frames and rethrown after gsl_odeiv2_evolve_apply returns).
+/// What the GSL callbacks see through gsl_odeiv2_system::params: the model and its force
+/// workspace, 1/m, counters, work arrays for force_jacobian, and an exception the model threw
+/// inside a callback (it is carried across GSL's C frames and rethrown after
+/// gsl_odeiv2_evolve_apply returns).
 struct GslContext {
   const MechanicalSystem* system = nullptr;
+  MechanicalSystem::Workspace* workspace = nullptr;  ///< the system's, for force_with()
   int n = 0;
   const double* inv_mass = nullptr;  ///< 1/m_i [1/kg]
   double* dfdq = nullptr;            ///< n×n work array

@@ -1,4 +1,5 @@
-// The default Jacobian of a MechanicalSystem: central differences of force().
+// The default Jacobian of a MechanicalSystem: central differences of force(); and the default
+// force_with(), which keeps nothing.
 //
 // Column j of ∂f/∂q is (f(q + h_j e_j) − f(q − h_j e_j)) / (2 h_j), and likewise for ∂f/∂v. The
 // central difference has truncation error ~h²|f'''|/6 and rounding error ~ε|f|/h, balanced by
@@ -51,6 +52,17 @@ void central_differences(int n, double* x, double scale, double* fp, double* fm,
 }
 
 }  // namespace
+
+// Out of line: visible in the integrators, the default would invite a speculative
+// devirtualisation of every force_with() call (a compare and branch per call on the hot path).
+std::unique_ptr<MechanicalSystem::Workspace> MechanicalSystem::make_workspace() const {
+  return nullptr;
+}
+
+void MechanicalSystem::force_with(Workspace* /*workspace*/, double t, const double* q,
+                                  const double* v, double* f) const {
+  force(t, q, v, f);
+}
 
 void MechanicalSystem::force_jacobian(double t, const double* q, const double* v, double* dfdq,
                                       double* dfdv) const {

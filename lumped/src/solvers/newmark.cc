@@ -32,6 +32,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -98,7 +99,8 @@ IntegrationStats Newmark::integrate(const MechanicalSystem& system, double t0,
 
   check_state(method, t0, 0, dt, q.data(), v.data(), n, bound);
   if (output_times.empty()) return stats;
-  system.force(t0, q.data(), v.data(), a.data());
+  const std::unique_ptr<MechanicalSystem::Workspace> workspace = system.make_workspace();
+  system.force_with(workspace.get(), t0, q.data(), v.data(), a.data());
   ++stats.force_evaluations;
   a = a.cwiseQuotient(mass);
   check_acceleration(method, t0, 0, dt, a.data(), n);
@@ -125,7 +127,7 @@ IntegrationStats Newmark::integrate(const MechanicalSystem& system, double t0,
       for (; iteration < kMaxIterations && !converged; ++iteration) {
         v_new = c2 * (x - q) - v;
         a_new = c0 * (x - q) - (4.0 / h) * v - a;
-        system.force(t_new, x.data(), v_new.data(), f.data());
+        system.force_with(workspace.get(), t_new, x.data(), v_new.data(), f.data());
         ++stats.force_evaluations;
         residual = mass.cwiseProduct(a_new) - f;
         if (!residual.allFinite()) break;
@@ -176,7 +178,7 @@ IntegrationStats Newmark::integrate(const MechanicalSystem& system, double t0,
       check_state(method, t, stats.steps, h, q.data(), v.data(), n, bound);
       report.update(t);
     }
-    system.force(t, q.data(), v.data(), a_out.data());
+    system.force_with(workspace.get(), t, q.data(), v.data(), a_out.data());
     ++stats.force_evaluations;
     a_out = a_out.cwiseQuotient(mass);
     check_acceleration(method, t, stats.steps, dt, a_out.data(), n);

@@ -10,10 +10,12 @@
 // shortened to end on it exactly; the next step starts there with dt again.
 //
 // Cost: four force evaluations per step and O(n) arithmetic, on eight arrays of n doubles
-// allocated once per integrate(). At an output time the force is evaluated afresh for the
-// observer's acceleration (counted in force_evaluations); that evaluation is at the state the
-// next step starts from, so it doubles as that step's a₁ and costs nothing extra.
+// allocated once per integrate() (and the system's force workspace, MechanicalSystem::force_with).
+// At an output time the force is evaluated afresh for the observer's acceleration (counted in
+// force_evaluations); that evaluation is at the state the next step starts from, so it doubles as
+// that step's a₁ and costs nothing extra.
 
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -67,8 +69,9 @@ IntegrationStats Rk4::integrate(const MechanicalSystem& system, double t0,
   check_state(method, t0, 0, dt, q, v, n, bound);
   if (output_times.empty()) return stats;
 
+  const std::unique_ptr<MechanicalSystem::Workspace> workspace = system.make_workspace();
   const auto acceleration = [&](double t, const double* qq, const double* vv, double* aa) {
-    system.force(t, qq, vv, aa);
+    system.force_with(workspace.get(), t, qq, vv, aa);
     for (int i = 0; i < n; ++i) aa[i] *= w[i];
   };
 

@@ -54,7 +54,7 @@ using Progress = std::function<void(double fraction)>;
 struct IntegrationStats {
   long steps = 0;              ///< accepted steps
   long rejected_steps = 0;     ///< rejected steps (adaptive methods)
-  long force_evaluations = 0;  ///< calls of MechanicalSystem::force
+  long force_evaluations = 0;  ///< calls of MechanicalSystem::force (or force_with)
   long jacobian_evaluations = 0;
 };
 

@@ -2,6 +2,7 @@
 // A mechanical system  M q̈ = f(t, q, q̇)  with a diagonal mass matrix: the form every bearing model
 // takes, and the only thing the integrators know about a model.
 
+#include <memory>
 #include <vector>
 
 namespace bearing {
@@ -20,6 +21,26 @@ class MechanicalSystem {
   /// contact forces, damping and friction. Must not allocate (it runs in the integrators' hot loop)
   /// and must be safe to call concurrently on one object from several threads.
   virtual void force(double t, const double* q, const double* v, double* f) const = 0;
+
+  /// What one caller of force_with() lends the system between its calls; a system derives its
+  /// own (the bearing models keep the ball set at the last t in it).
+  class Workspace {
+   public:
+    virtual ~Workspace() = default;
+  };
+
+  /// A workspace for force_with(), made once per integration (it may allocate), or nullptr (the
+  /// default) for a system that keeps nothing between calls.
+  virtual std::unique_ptr<Workspace> make_workspace() const;
+
+  /// force() for a caller that owns `workspace` (made by this object's make_workspace(), or
+  /// nullptr): the same f to the bit, but what depends on t alone may be kept in the workspace
+  /// and reused while t repeats (RK4 asks twice at t + h/2, and again at t + h when the next step
+  /// starts). The integrators make one workspace per integrate() and pass it to every call. Must
+  /// not allocate; calls with distinct workspaces may run concurrently on one object, and one
+  /// workspace serves one thread at a time. The default calls force().
+  virtual void force_with(Workspace* workspace, double t, const double* q, const double* v,
+                          double* f) const;
 
   /// ∂f/∂q and ∂f/∂v, each n×n row-major (entry [i*n + j] = ∂f_i/∂q_j). The default uses central
   /// differences of force(); models override it with the analytic form where an implicit method

@@ -1,0 +1,49 @@
+#pragma once
+// Private to the lumped models (not installed): each ball centre's radial motion at an output
+// instant (BearingModel::ball_motion, bearing_model.h), from its load and the ball set's rates.
+
+#include <cmath>
+
+#include "ball_set.h"
+
+namespace bearing::detail {
+
+/// The ball centre's radial displacement from the pitch radius, r = δ_o − Π_o + ΔD/2 [m], and
+/// its rate [m/s], from the ball's load Q = K δ^n and its rate (see bearing_model.h for the
+/// definition): δ_o = (Q/K_o)^{1/n_o}, dδ_o/dt = δ_o/n_o · (dQ/dt / Q − dK_o/dt / K_o).
+inline void outer_ball_motion(double load, double load_rate, const BallRates& br, int j,
+                              double outer_exponent, double size_error, double& r, double& vr) {
+  double d_o = 0, d_o_rate = 0;
+  if (load > 0) {
+    const double Ko = br.outer_stiffness[j];
+    d_o = std::pow(load / Ko, 1.0 / outer_exponent);
+    d_o_rate = d_o / outer_exponent * (load_rate / load - br.outer_stiffness_rate[j] / Ko);
+  }
+  r = d_o - br.outer_profile[j] + 0.5 * size_error;
+  vr = d_o_rate - br.outer_profile_rate[j];
+}
+
+/// The radial ball motion (bearing_model.h) of the 2-DOF geometry, δ_j = x cos θ_j + y sin θ_j −
+/// γ + e_j, at (t, q = (x, y), v = (ẋ, ẏ)): dδ_j/dt = v·(cos θ_j, sin θ_j) + ω_c (−x sin θ_j +
+/// y cos θ_j) + de_j/dt, dQ_j/dt = n K_j δ_j^{n−1} dδ_j/dt + dK_j/dt δ_j^n.
+inline void radial_ball_motion(const BallSet& set, double gap, double t, const double* q,
+                               const double* v, double* r, double* vr) {
+  BallFrame fr;
+  set.evaluate(t, fr);
+  BallRates br;
+  set.rates(t, br);
+  const double n = set.exponent(), wc = set.cage_speed();
+  for (int j = 0; j < set.balls(); ++j) {
+    const double c = fr.cos_theta[j], s = fr.sin_theta[j];
+    const double delta = q[0] * c + q[1] * s - gap + fr.excitation[j];
+    double Q = 0, Q_rate = 0;
+    if (delta > 0) {
+      const double rate = v[0] * c + v[1] * s + wc * (q[1] * c - q[0] * s) + br.excitation_rate[j];
+      Q = contact_load(fr.stiffness[j], n, delta);
+      Q_rate = n * Q / delta * rate + br.stiffness_rate[j] * std::pow(delta, n);
+    }
+    outer_ball_motion(Q, Q_rate, br, j, set.outer_exponent(), set.size_error(j), r[j], vr[j]);
+  }
+}
+
+}  // namespace bearing::detail
