@@ -306,4 +306,34 @@ std::vector<double> ball_size_errors_from_band(int balls, double band, std::uint
   return errors;
 }
 
+void check_waviness(const std::vector<WavinessHarmonic>& harmonics, const Bearing& bearing,
+                    const std::string& key) {
+  for (std::size_t i = 0; i < harmonics.size(); ++i) {
+    const WavinessHarmonic& h = harmonics[i];
+    const std::string entry = key + "[" + std::to_string(i) + "]";
+    if (h.order < 1 || h.order > 100000)
+      throw InputError(entry + ".order = " + std::to_string(h.order) +
+                       ": waves per revolution must be an integer >= 1");
+    if (!(std::isfinite(h.amplitude) && h.amplitude >= 0 &&
+          h.amplitude < 0.01 * bearing.ball_diameter))
+      throw InputError(entry + ".amplitude = " + format_number(h.amplitude) +
+                       " m: must be >= 0 and below 1 % of the ball diameter (waviness is a few "
+                       "um at most)");
+    if (!std::isfinite(h.phase))
+      throw InputError(entry + ".phase = " + format_number(h.phase) + " rad: must be finite");
+  }
+}
+
+void check_ball_size_errors(const std::vector<double>& errors, const Bearing& bearing) {
+  if (errors.empty()) return;
+  if (static_cast<int>(errors.size()) != bearing.balls)
+    throw InputError("ball_errors.values has " + std::to_string(errors.size()) +
+                     " entries: expected one per ball (" + std::to_string(bearing.balls) + ")");
+  for (std::size_t j = 0; j < errors.size(); ++j)
+    if (!(std::fabs(errors[j]) < 0.01 * bearing.ball_diameter))
+      throw InputError("ball_errors.values[" + std::to_string(j) +
+                       "] = " + format_number(-errors[j]) +
+                       " m: a ball-size error must be below 1 % of the ball diameter");
+}
+
 }  // namespace bearing

@@ -7,6 +7,8 @@
 #include <string>
 #include <vector>
 
+#include "bearing/bearing.h"
+
 namespace bearing {
 
 struct WavinessHarmonic {
@@ -35,6 +37,16 @@ struct Waviness {
 /// `phase_deg`); '#' starts a comment. Throws InputError naming `key`, the file, the line and
 /// the value for anything malformed (order < 1, negative or non-finite amplitude, wrong columns).
 std::vector<WavinessHarmonic> read_waviness_table(const std::string& path, const std::string& key);
+
+/// The rules for waviness harmonics on a race of `bearing` (the case key `key`,
+/// "waviness.inner"): order in [1, 100000], amplitude in [0, D/100) (waviness is a few µm at
+/// most), phase finite. Throws InputError naming key[i] and the field.
+void check_waviness(const std::vector<WavinessHarmonic>& harmonics, const Bearing& bearing,
+                    const std::string& key);
+
+/// The rules for ball-size errors ΔD_j = D − D_j [m]: none, or one per ball, each finite with
+/// |ΔD_j| < D/100. Throws InputError naming ball_errors.values[j] (shown as D_j − D).
+void check_ball_size_errors(const std::vector<double>& errors, const Bearing& bearing);
 
 /// Ball-size deviations ΔD_j = D − D_j [m] drawn uniformly in [−band/2, band/2] (so the diameters
 /// spread over `band`) from a 64-bit seed; the same seed gives the same values on every machine

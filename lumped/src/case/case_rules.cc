@@ -37,9 +37,8 @@ void read_waviness_entry(TableReader& r, const std::string& shown, const std::st
     throw InputError(shown +
                      ": each entry needs order and amplitude (phase optional), or "
                      "table = \"file.csv\"");
-  if (*order < 1 || *order > 100000)
-    throw InputError(r.full("order") + " = " + std::to_string(*order) +
-                     ": waves per revolution must be an integer >= 1");
+  if (std::llabs(*order) > 1000000000LL)  // the range itself is check_waviness's
+    throw InputError(r.full("order") + " = " + std::to_string(*order) + ": too large");
   WavinessHarmonic h;
   h.order = static_cast<int>(*order);
   h.amplitude = *amplitude;
@@ -71,11 +70,7 @@ void read_waviness(TableReader& parent, const std::string& race, Case& c,
     read_waviness_entry(r, shown, schema, context, out);
     r.finish();
   }
-  for (std::size_t i = 0; i < out.size(); ++i)
-    require(std::isfinite(out[i].amplitude) && out[i].amplitude >= 0 &&
-                out[i].amplitude < 0.01 * c.bearing.ball_diameter,
-            schema + "[" + std::to_string(i) + "].amplitude", out[i].amplitude, Dimension::length,
-            "must be >= 0 and below 1 % of the ball diameter (waviness is a few um at most)");
+  check_waviness(out, c.bearing, schema);
 }
 
 void write_waviness(std::ostream& o, const Case& c) {
@@ -103,15 +98,8 @@ void read_ball_errors(TableReader& r, Case& c, const ReadContext&) {
     throw InputError("ball_errors.seed = " + std::to_string(*seed) +
                      ": a seed needs ball_errors.band to draw from");
   if (values) {
-    if (static_cast<int>(values->size()) != b.balls)
-      throw InputError("ball_errors.values has " + std::to_string(values->size()) +
-                       " entries: expected one per ball (" + std::to_string(b.balls) + ")");
-    for (std::size_t j = 0; j < values->size(); ++j) {
-      require(std::fabs((*values)[j]) < 0.01 * b.ball_diameter,
-              "ball_errors.values[" + std::to_string(j) + "]", (*values)[j], Dimension::length,
-              "a ball-size error must be below 1 % of the ball diameter");
-      e.ball_size_errors.push_back(-(*values)[j]);  // ΔD_j = D − D_j
-    }
+    for (double v : *values) e.ball_size_errors.push_back(-v);  // ΔD_j = D − D_j
+    check_ball_size_errors(e.ball_size_errors, b);
   }
   if (band) {
     require(*band >= 0 && *band < 0.02 * b.ball_diameter, "ball_errors.band", *band,

@@ -9,6 +9,7 @@
 #include "bearing/contact.h"
 #include "bearing/errors.h"
 #include "bearing/excitation.h"
+#include "bearing/limits.h"
 #include "bearing/models/model_inputs.h"
 #include "bearing/units.h"
 #include "max_balls.h"
@@ -19,21 +20,9 @@ inline void require_finite(double v, const std::string& key, const char* what) {
   if (!std::isfinite(v)) throw InputError(key + " = " + format_number(v) + ": " + what);
 }
 
-inline void validate_waviness(const Waviness& w, const std::string& key) {
-  for (const WavinessHarmonic& h : w.harmonics) {
-    if (h.order < 1)
-      throw InputError(key + ": order = " + std::to_string(h.order) +
-                       ": must be an integer >= 1 (waves per revolution)");
-    if (!(std::isfinite(h.amplitude) && h.amplitude >= 0))
-      throw InputError(key + ": amplitude = " + format_number(h.amplitude) + " m (order " +
-                       std::to_string(h.order) + "): must be finite and >= 0");
-    if (!std::isfinite(h.phase))
-      throw InputError(key + ": phase = " + format_number(h.phase) + " rad (order " +
-                       std::to_string(h.order) + "): must be finite");
-  }
-}
-
-/// Checks of the ModelInputs fields every lumped model uses (InputError naming the case key).
+/// Checks of the ModelInputs fields every lumped model uses (InputError naming the case key): the
+/// same rules the case reader applies (Bearing::validate, limits.h, check_waviness,
+/// check_ball_size_errors), for inputs built in code; plus what only the models need.
 inline void validate_common_inputs(const ModelInputs& in) {
   in.bearing.validate();
   if (in.bearing.balls > kMaxBalls)
@@ -45,30 +34,17 @@ inline void validate_common_inputs(const ModelInputs& in) {
   if (!(std::isfinite(in.contact.exponent) && in.contact.exponent >= 1))
     throw InputError("model.contact: load-deflection exponent " +
                      format_number(in.contact.exponent) + " must be finite and >= 1");
-  require_finite(in.inner_speed, "operation.speed", "rad/s: must be finite");
+  limits::operation_speed.check(in.inner_speed);
   require_finite(in.cage_phase, "cage phase", "rad: must be finite");
   if (!in.load.allFinite())
     throw InputError("operation.load = (" + format_number(in.load.x()) + ", " +
                      format_number(in.load.y()) + ") N: must be finite");
-  if (!(std::isfinite(in.unbalance) && in.unbalance >= 0))
-    throw InputError("operation.unbalance = " + format_number(in.unbalance) +
-                     " kg m: must be finite and >= 0");
-  if (!(std::isfinite(in.mass) && in.mass > 0))
-    throw InputError("rotor.mass = " + format_number(in.mass) +
-                     " kg: the inner ring and shaft need a positive mass");
-  if (!(std::isfinite(in.damping) && in.damping >= 0))
-    throw InputError("rotor.damping = " + format_number(in.damping) +
-                     " N s/m: must be finite and >= 0");
-  validate_waviness(in.inner_waviness, "waviness.inner");
-  validate_waviness(in.outer_waviness, "waviness.outer");
-  if (!in.ball_size_errors.empty()) {
-    if (static_cast<int>(in.ball_size_errors.size()) != in.bearing.balls)
-      throw InputError("ball_errors.values: " + std::to_string(in.ball_size_errors.size()) +
-                       " values given for " + std::to_string(in.bearing.balls) +
-                       " balls; give one per ball");
-    for (double e : in.ball_size_errors)
-      require_finite(e, "ball_errors.values", "m: each ball-size error must be finite");
-  }
+  limits::operation_unbalance.check(in.unbalance);
+  limits::rotor_mass.check(in.mass);
+  limits::rotor_damping.check(in.damping);
+  check_waviness(in.inner_waviness.harmonics, in.bearing, "waviness.inner");
+  check_waviness(in.outer_waviness.harmonics, in.bearing, "waviness.outer");
+  check_ball_size_errors(in.ball_size_errors, in.bearing);
 }
 
 /// Checks of the contact law that TVDS (model.waviness_stiffness) needs: the Hertz exponent 3/2
