@@ -15,18 +15,9 @@ namespace bearing {
 
 namespace {
 
-// g = D cos α / d_m, checked enough that the formulas cannot produce NaN.
+// g = D cos α / d_m of a valid bearing (Bearing::validate holds the rules).
 double geometry_ratio(const Bearing& b) {
-  if (!(std::isfinite(b.ball_diameter) && b.ball_diameter > 0))
-    throw InputError("bearing.ball_diameter = " + format_number(b.ball_diameter) +
-                     " m: must be positive");
-  if (!(std::isfinite(b.pitch_diameter) && b.pitch_diameter > b.ball_diameter))
-    throw InputError("bearing.pitch_diameter = " + format_number(b.pitch_diameter) +
-                     " m: must exceed the ball diameter (" + format_number(b.ball_diameter) +
-                     " m)");
-  if (!std::isfinite(b.contact_angle))
-    throw InputError("bearing.contact_angle = " + format_number(b.contact_angle) +
-                     " rad: must be finite");
+  b.validate();
   return b.ball_diameter * std::cos(b.contact_angle) / b.pitch_diameter;
 }
 
@@ -48,8 +39,6 @@ double cage_speed(const Bearing& b, double inner_speed, double outer_speed) {
 BearingFrequencies bearing_frequencies(const Bearing& b, double inner_speed, double outer_speed,
                                        double cage_slip) {
   limits::cage_slip.check(cage_slip);
-  if (b.balls < 1)
-    throw InputError("bearing.balls = " + std::to_string(b.balls) + ": must be at least 1");
   const double g = geometry_ratio(b);
   const double cage = (1.0 - cage_slip) * cage_speed(b, inner_speed, outer_speed);  // ω_ca
   const double f_i = inner_speed / two_pi;
