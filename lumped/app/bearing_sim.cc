@@ -66,6 +66,60 @@ struct ProgressLine {
   }
 };
 
+// `run`: simulate, analyse, write the result files, print the summary.
+int run_command(const std::string& case_path, const std::vector<bearing::Override>& overrides,
+                const std::string& out_dir, bool json, bool quiet, bool tty) {
+  const bearing::Case c = load(case_path, overrides);
+  ProgressLine progress{tty, "run"};
+  const auto start = std::chrono::steady_clock::now();
+  const bearing::SimulationResult r = bearing::simulate(c, std::ref(progress));
+  const bearing::RunSummary s = bearing::summarize(c, r);
+  bearing::write_run(out_dir, c, r, s);
+  const double seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  if (json)
+    std::cout << bearing::summary_json(c, r, s).dump(2) << "\n";
+  else
+    std::cout << bearing::summary_text(c, r, s);
+  if (!quiet) std::fprintf(stderr, "run: wrote %s/ in %.3f s\n", out_dir.c_str(), seconds);
+  return 0;
+}
+
+// `sweep`: every point of the --vary grid, in parallel; sweep.csv written whole or not at all.
+int sweep_command(const std::string& case_path, const std::vector<bearing::Override>& base,
+                  const std::vector<std::string>& vary, const std::string& out_dir, int jobs,
+                  bool tty) {
+  std::vector<bearing::SweepAxis> axes;
+  for (const auto& v : vary) axes.push_back(bearing::parse_vary(v));
+  // Check the base case before starting many runs of it.
+  load(case_path, base);
+  const auto points = bearing::sweep_points(axes);
+  const auto loader = [&](const std::vector<bearing::Override>& point) {
+    auto all = base;
+    all.insert(all.end(), point.begin(), point.end());
+    return load(case_path, all);
+  };
+  const auto progress = [&](std::size_t done, std::size_t total) {
+    if (tty) std::fprintf(stderr, "\rsweep %zu/%zu cases", done, total);
+    if (tty && done == total) std::fprintf(stderr, "\n");
+  };
+  const auto rows = bearing::run_sweep(loader, points, jobs, progress);
+  std::filesystem::create_directories(out_dir);
+  const std::filesystem::path file = std::filesystem::path(out_dir) / "sweep.csv";
+  const std::filesystem::path tmp = std::filesystem::path(out_dir) / ".sweep.csv.partial";
+  {
+    std::ofstream f(tmp, std::ios::binary | std::ios::trunc);
+    f << bearing::sweep_csv(axes, rows);
+    if (!f) throw bearing::InputError("--out " + out_dir + ": cannot write sweep.csv");
+  }
+  std::filesystem::rename(tmp, file);
+  std::size_t failed = 0;
+  for (const auto& r : rows) failed += r.ok ? 0 : 1;
+  std::cout << "sweep: " << rows.size() << " cases, " << failed << " failed; wrote "
+            << file.string() << "\n";
+  return failed == rows.size() ? 3 : 0;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -102,10 +156,13 @@ int main(int argc, char** argv) {
 
   auto* run = app.add_subcommand(
       "run",
-      "Simulate a case (model.kind 2dof, 3dof or quasistatic) and write DIR/response.csv (t, "
-      "then x,y,vx,vy,ax,ay [,z,vz,az] [,Q1..QZ] [,r1..rZ,vr1..vrZ]), DIR/spectrum.csv (one-sided amplitude spectra after the transient), "
-      "DIR/summary.json (channels.<name>.{rms,ptp,kurtosis,crest}, peaks.<name>[] with frequency, "
-      "amplitude, label) and DIR/case.toml (the fully resolved case); prints the summary");
+      "Simulate a case (model.kind " + bearing::names_of(bearing::kModelKinds, " | ") +
+          ") and write DIR/response.csv (t, "
+          "then x,y,vx,vy,ax,ay [,z,vz,az] [,Q1..QZ] [,r1..rZ,vr1..vrZ]), DIR/spectrum.csv "
+          "(one-sided amplitude spectra after the transient), "
+          "DIR/summary.json (channels.<name>.{rms,ptp,kurtosis,crest}, peaks.<name>[] with "
+          "frequency, "
+          "amplitude, label) and DIR/case.toml (the fully resolved case); prints the summary");
   add_case_options(run, case_path, sets);
   run->add_option("--out", out_dir, "Folder for the result files (created if missing)")->required();
   run->add_flag("--json", json, "Print summary.json instead of the readable summary");
@@ -149,54 +206,8 @@ int main(int argc, char** argv) {
         std::cout << bearing::info_text(report);
       return 0;
     }
-    if (*run) {
-      const bearing::Case c = load(case_path, overrides_of(sets));
-      ProgressLine progress{tty, "run"};
-      const auto start = std::chrono::steady_clock::now();
-      const bearing::SimulationResult r = bearing::simulate(c, std::ref(progress));
-      const bearing::RunSummary s = bearing::summarize(c, r);
-      bearing::write_run(out_dir, c, r, s);
-      const double seconds =
-          std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-      if (json)
-        std::cout << bearing::summary_json(c, r, s).dump(2) << "\n";
-      else
-        std::cout << bearing::summary_text(c, r, s);
-      if (!quiet) std::fprintf(stderr, "run: wrote %s/ in %.3f s\n", out_dir.c_str(), seconds);
-      return 0;
-    }
-    if (*sweep) {
-      const auto base = overrides_of(sets);
-      std::vector<bearing::SweepAxis> axes;
-      for (const auto& v : vary) axes.push_back(bearing::parse_vary(v));
-      // Check the base case before starting many runs of it.
-      load(case_path, base);
-      const auto points = bearing::sweep_points(axes);
-      const auto loader = [&](const std::vector<bearing::Override>& point) {
-        auto all = base;
-        all.insert(all.end(), point.begin(), point.end());
-        return load(case_path, all);
-      };
-      const auto progress = [&](std::size_t done, std::size_t total) {
-        if (tty) std::fprintf(stderr, "\rsweep %zu/%zu cases", done, total);
-        if (tty && done == total) std::fprintf(stderr, "\n");
-      };
-      const auto rows = bearing::run_sweep(loader, points, jobs, progress);
-      std::filesystem::create_directories(out_dir);
-      const std::filesystem::path file = std::filesystem::path(out_dir) / "sweep.csv";
-      const std::filesystem::path tmp = std::filesystem::path(out_dir) / ".sweep.csv.partial";
-      {
-        std::ofstream f(tmp, std::ios::binary | std::ios::trunc);
-        f << bearing::sweep_csv(axes, rows);
-        if (!f) throw bearing::InputError("--out " + out_dir + ": cannot write sweep.csv");
-      }
-      std::filesystem::rename(tmp, file);
-      std::size_t failed = 0;
-      for (const auto& r : rows) failed += r.ok ? 0 : 1;
-      std::cout << "sweep: " << rows.size() << " cases, " << failed << " failed; wrote "
-                << file.string() << "\n";
-      return failed == rows.size() ? 3 : 0;
-    }
+    if (*run) return run_command(case_path, overrides_of(sets), out_dir, json, quiet, tty);
+    if (*sweep) return sweep_command(case_path, overrides_of(sets), vary, out_dir, jobs, tty);
   } catch (const bearing::InputError& e) {
     std::cerr << "bearing-sim: error: " << e.what() << "\n";
     return 2;

@@ -105,6 +105,46 @@ int first_order_rhs(double t, const double y[], double dydt[], void* params) {
   return GSL_EBADFUNC;
 }
 
+// Absolute-tolerance scales: 1 for displacements (kCyclicScale for a cyclic one), ω_i for
+// velocities (see the top), from the Jacobian at the initial state (counted in `context`).
+std::vector<double> tolerance_scales(const MechanicalSystem& system, double t0,
+                                     const std::vector<double>& q0, const std::vector<double>& v0,
+                                     const std::vector<double>& inv_mass, double dt,
+                                     GslContext& context) {
+  const int n = context.n;
+  std::vector<double> scale(static_cast<std::size_t>(2 * n), 1.0);
+  for (int i = 0; i < n; ++i)
+    if (system.cyclic(i)) scale[static_cast<std::size_t>(i)] = kCyclicScale;
+  system.force_jacobian(t0, q0.data(), v0.data(), context.dfdq, context.dfdv);
+  ++context.jacobian_evaluations;
+  for (int i = 0; i < n; ++i) {
+    const double stiffness =
+        std::abs(context.dfdq[static_cast<std::size_t>(i) * n + i]) * inv_mass[i];
+    const double damping =
+        std::abs(context.dfdv[static_cast<std::size_t>(i) * n + i]) * inv_mass[i];
+    const double omega = std::max(std::sqrt(stiffness), damping);
+    scale[static_cast<std::size_t>(n + i)] = std::isfinite(omega) && omega > 0 ? omega : 1.0 / dt;
+  }
+  return scale;
+}
+
+// The outcome of one gsl_odeiv2_evolve_apply: a model exception, a non-finite force (blow-up), or
+// a step-size control that cannot meet the tolerance, each reported at step `step` (t, h).
+void check_step(const std::string& method, int status, const GslContext& context, double t,
+                long step, double h) {
+  if (context.error) std::rethrow_exception(context.error);
+  if (status == GSL_EBADFUNC && context.bad_dof >= 0)
+    throw_blow_up(method, context.bad_time, step, h,
+                  "the force on DOF " + std::to_string(context.bad_dof) + " is " +
+                      format_brief(context.bad_value));
+  if (status != GSL_SUCCESS)
+    throw SolverError(method + ": the step-size control failed at t = " + format_brief(t) +
+                      " s (step " + std::to_string(step) + ", dt = " + format_brief(h) +
+                      " s): " + gsl_strerror(status) +
+                      "; the tolerance cannot be met with a representable step: loosen "
+                      "solver.tolerance or check the load/clearance");
+}
+
 struct DriverFree {
   void operator()(gsl_odeiv2_driver* d) const { gsl_odeiv2_driver_free(d); }
 };
@@ -160,20 +200,8 @@ IntegrationStats integrate_gsl(const std::string& method, const gsl_odeiv2_step_
   context.dfdq = dfdq.data();
   context.dfdv = dfdv.data();
 
-  // Absolute-tolerance scales: 1 for displacements (kCyclicScale for a cyclic one), ω_i for
-  // velocities (see the top).
-  std::vector<double> scale(dim, 1.0);
-  for (int i = 0; i < n; ++i)
-    if (system.cyclic(i)) scale[static_cast<std::size_t>(i)] = kCyclicScale;
-  system.force_jacobian(t0, q0.data(), v0.data(), dfdq.data(), dfdv.data());
-  ++context.jacobian_evaluations;
-  for (int i = 0; i < n; ++i) {
-    const double stiffness = std::abs(dfdq[static_cast<std::size_t>(i) * n + i]) * inv_mass[i];
-    const double damping = std::abs(dfdv[static_cast<std::size_t>(i) * n + i]) * inv_mass[i];
-    const double omega = std::max(std::sqrt(stiffness), damping);
-    scale[static_cast<std::size_t>(n + i)] =
-        std::isfinite(omega) && omega > 0 ? omega : 1.0 / settings.dt;
-  }
+  const std::vector<double> scale =
+      tolerance_scales(system, t0, q0, v0, inv_mass, settings.dt, context);
 
   gsl_odeiv2_system ode{first_order_rhs, jacobian, dim, &context};
   std::unique_ptr<gsl_odeiv2_driver, DriverFree> driver(gsl_odeiv2_driver_alloc_scaled_new(
@@ -234,17 +262,7 @@ IntegrationStats integrate_gsl(const std::string& method, const gsl_odeiv2_step_
     std::copy(y.begin(), y.end(), y_start.begin());
     const int status =
         gsl_odeiv2_evolve_apply(driver->e, driver->c, driver->s, &ode, &t, t_end, &h, y.data());
-    if (context.error) std::rethrow_exception(context.error);
-    if (status == GSL_EBADFUNC && context.bad_dof >= 0)
-      throw_blow_up(method, context.bad_time, stats.steps + 1, h,
-                    "the force on DOF " + std::to_string(context.bad_dof) + " is " +
-                        format_brief(context.bad_value));
-    if (status != GSL_SUCCESS)
-      throw SolverError(method + ": the step-size control failed at t = " + format_brief(t) +
-                        " s (step " + std::to_string(stats.steps + 1) +
-                        ", dt = " + format_brief(h) + " s): " + gsl_strerror(status) +
-                        "; the tolerance cannot be met with a representable step: loosen "
-                        "solver.tolerance or check the load/clearance");
+    check_step(method, status, context, t, stats.steps + 1, h);
     ++stats.steps;
     const double dt = evolve->last_step;
     check_state(method, t, stats.steps, dt, y.data(), y.data() + n, n, bound);
