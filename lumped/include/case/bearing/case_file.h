@@ -76,7 +76,7 @@ struct ModelOptions {
   /// Contact law: a Hertz method, or calibrated (the FE constants of `calibration`).
   ContactLaw contact = ContactLaw::exact;
   /// `model.calibration`, read and checked against the bearing when the case is parsed: present
-  /// exactly when contact == "calibrated". Its path is absolute.
+  /// exactly when contact is ContactLaw::calibrated. Its path is absolute.
   std::optional<ContactCalibration> calibration;
   bool waviness_stiffness = false;  ///< TVDS (seed 002): K follows the waviness curvature
 };
