@@ -396,3 +396,18 @@ TEST(CaseSchema, EveryKeyIsDocumented) {
   EXPECT_EQ(key_dimension("waviness.outer.3.phase"), Dimension::angle);
   EXPECT_THROW(key_dimension("model.kind"), InputError);
 }
+
+// A whole number the int it lands in cannot hold is refused by name, never wrapped around.
+TEST(CaseSchema, HugeIntegersAreRefused) {
+  for (const char* set : {"bearing.balls=99999999999", "output.peaks=4294967306",
+                          "waviness.inner=[{order=4294967297, amplitude=\"1 um\"}]"}) {
+    try {
+      parse_case("[bearing]\npreset = \"6308\"\n", "t", {parse_override(set)});
+      FAIL() << set;
+    } catch (const InputError& e) {
+      const std::string msg = e.what();
+      EXPECT_NE(msg.find(std::string(set).substr(0, std::string(set).find('='))), std::string::npos)
+          << msg;
+    }
+  }
+}

@@ -30,7 +30,8 @@ auto preset_or_required(std::string leaf, At at) {
 
 template <class At>
 Key geometry(const std::string& leaf, Dimension dim, std::string help, At at) {
-  return quantity("bearing." + leaf, dim, std::move(help), at, {}, preset_or_required(leaf, at));
+  return quantity("bearing." + leaf, dim, std::move(help), at, unchecked(),
+                  preset_or_required(leaf, at));
 }
 
 std::vector<Key> bearing_keys() {
@@ -49,7 +50,7 @@ std::vector<Key> bearing_keys() {
       geometry(
           "pitch_diameter", D::length, "pitch diameter d_m",
           [](auto& c) -> auto& { return c.bearing.pitch_diameter; }),
-      integer("bearing.balls", "number of balls Z (>= 3)", balls, {},
+      integer("bearing.balls", "number of balls Z (>= 3)", balls, unchecked(),
               preset_or_required("balls", balls)),
       geometry(
           "inner_conformity", D::dimensionless, "inner groove radius / D (> 0.5)",
@@ -385,7 +386,7 @@ std::vector<Key> acoustics_keys() {
       quantity(
           "acoustics.ring_radius", D::length,
           "radiating radius of the inner ring (default: inner raceway radius (d_m - D)/2)",
-          [](auto& c) -> auto& { return c.acoustics.ring_radius; }, {},
+          [](auto& c) -> auto& { return c.acoustics.ring_radius; }, unchecked(),
           [](const Case& c) { return 0.5 * c.bearing.inner_raceway_diameter(); }),
       quantity(
           "acoustics.density", D::density, "air density (default 1.204 kg/m^3)",

@@ -29,7 +29,7 @@ inline Limit unchecked() {
   return Limit{nullptr, Dimension::dimensionless, 0, 0, false, false, nullptr};
 }
 inline bool checked(const Limit& l) {
-  return l.allowed != nullptr;
+  return l.allowed != nullptr && *l.allowed != '\0';
 }
 
 /// InputError "key = value unit: allowed" unless `ok`.
