@@ -26,6 +26,7 @@
 #include <nlohmann/json.hpp>
 
 #include "app/radiate.h"
+#include "bearing/calibration.h"
 #include "bearing/case_file.h"
 #include "bearing/constants.h"
 #include "bearing/contact.h"
@@ -335,20 +336,6 @@ nlohmann::json run_contact(const ContactOptions& o, MPI_Comm comm) {
   return j;
 }
 
-// The contact-relevant geometry of the case's bearing, as the lumped side compares it.
-nlohmann::json bearing_json(const bearing::Bearing& b) {
-  const auto material = [](const bearing::Material& m) {
-    return nlohmann::json{{"young", m.young}, {"poisson", m.poisson}};
-  };
-  return {{"designation", b.designation},
-          {"ball_diameter", b.ball_diameter},
-          {"pitch_diameter", b.pitch_diameter},
-          {"inner_conformity", b.inner_conformity},
-          {"outer_conformity", b.outer_conformity},
-          {"contact_angle", b.contact_angle},
-          {"material", {{"ball", material(b.ball)}, {"rings", material(b.rings)}}}};
-}
-
 std::string utc_now() {
   const std::time_t t = std::time(nullptr);
   char buf[32];
@@ -366,25 +353,29 @@ int run_calibrate(const ContactOptions& base, const std::string& out_file, MPI_C
   if (out_file.empty()) throw InputError("--out: give the calibration file to write");
   const std::filesystem::path file(out_file);
   const std::filesystem::path dir = file.has_parent_path() ? file.parent_path() : ".";
-  nlohmann::json races;
-  double q_min = 0, q_max = 0;
+  CalibrationDocument doc;
+  ContactCalibration& cal = doc.calibration;
   std::string mesh;
-  for (const char* race : {"inner", "outer"}) {
+  const struct {
+    const char* race;
+    RaceLaw& law;
+    RaceFitRecord& fit;
+  } races[] = {{"inner", cal.inner, doc.inner_fit}, {"outer", cal.outer, doc.outer_fit}};
+  for (const auto& [race, law, fit] : races) {
     ContactOptions o = base;
     o.race = race;
     o.vtu = false;
     o.out_dir = (dir / (file.stem().string() + "_" + race)).string();
     const nlohmann::json j = run_contact(o, comm);
     if (!root) continue;
-    const double residual = j["fe"]["fit_residual"];
-    races[race] = {{"K", j["fe"]["K_free_exponent"]},
-                   {"exponent", j["fe"]["exponent"]},
-                   {"fit_residual", residual},
-                   {"K_three_halves", j["fe"]["K"]},
-                   {"hertz_K", j["hertz"]["K"]},
-                   {"details", file.stem().string() + "_" + race}};  // next to the file
-    q_min = j["load_range"]["min"];
-    q_max = j["load_range"]["max"];
+    law.K = j["fe"]["K_free_exponent"];
+    law.exponent = j["fe"]["exponent"];
+    law.fit_residual = j["fe"]["fit_residual"];
+    fit.K_three_halves = j["fe"]["K"];
+    fit.hertz_K = j["hertz"]["K"];
+    fit.details = file.stem().string() + "_" + race;  // next to the file
+    cal.load_min = j["load_range"]["min"];
+    cal.load_max = j["load_range"]["max"];
     mesh += std::string(mesh.empty() ? "" : "; ") + race + ": " +
             std::to_string(j["mesh"]["cells"].get<unsigned long>()) + " cells, " +
             std::to_string(j["mesh"]["dofs"].get<unsigned long>()) + " DoFs";
@@ -394,48 +385,32 @@ int run_calibrate(const ContactOptions& base, const std::string& out_file, MPI_C
   for (const auto& s : base.sets) overrides.push_back(parse_override(s));
   const Case c =
       base.case_path.empty() ? default_case(overrides) : read_case_file(base.case_path, overrides);
-  const std::string geometry = base.geometry == "hertz" ? "hertz" : "groove";
+  cal.bearing = c.bearing;
+  cal.geometry = base.geometry == "hertz" ? "hertz" : "groove";
+  const std::string body =
+      cal.geometry == "hertz"
+          ? "Hertz-reduced quarter block with E* and a rigid paraboloid"
+          : "ring segment with its true groove (meshes/raceway_segment.geo), E* in the ring, "
+            "rigid sphere (" +
+                base.gap + " gap)";
+  cal.method =
+      "bearing-fem contact per race: 3-D linear elasticity, Q1, primal-dual active set, CG + "
+      "Trilinos ML; " +
+      body + "; Q = K delta^n fitted by least squares of ln Q on ln delta over " +
+      std::to_string(base.steps) + " approach steps from light load to Q_max";
   std::ostringstream mesh_text;
   mesh_text << "N_b = " << base.cells << " cells per semi-minor axis at Q_max, grading "
             << base.grading << ", stretch " << base.stretch << "; ";
-  const nlohmann::json cal = {
-      {"format", "bearing-fem calibration 1"},
-      {"bearing", bearing_json(c.bearing)},
-      {"inner", races["inner"]},
-      {"outer", races["outer"]},
-      {"load_range", {q_min, q_max}},
-      {"geometry", geometry},
-      {"method",
-       std::string("bearing-fem contact per race: 3-D linear elasticity, Q1, primal-dual active "
-                   "set, CG + Trilinos ML; ") +
-           (geometry == "hertz"
-                ? "Hertz-reduced quarter block with E* and a rigid paraboloid"
-                : "ring segment with its true groove (meshes/raceway_segment.geo), E* in the "
-                  "ring, rigid sphere (" +
-                      base.gap + " gap)") +
-           "; Q = K delta^n fitted by least squares of ln Q on ln delta over " +
-           std::to_string(base.steps) + " approach steps from light load to Q_max"},
-      {"mesh", mesh_text.str() + mesh},
-      {"case", c.source},
-      {"date", utc_now()},
-      {"units",
-       {{"K", "N/m^exponent"},
-        {"lengths", "m"},
-        {"young", "Pa"},
-        {"contact_angle", "rad"},
-        {"load_range", "N"}}}};
-  // Complete or nothing: written to a temporary name, then renamed.
-  const std::filesystem::path partial = file.string() + ".partial";
-  {
-    std::ofstream out(partial);
-    out << std::setprecision(17) << cal.dump(2) << '\n';
-    if (!out) throw InputError("cannot write " + partial.string());
+  cal.mesh = mesh_text.str() + mesh;
+  cal.date = utc_now();
+  doc.case_source = c.source;
+  write_calibration(doc, file.string());
+  if (!base.quiet) {
+    using nlohmann::json;  // the numbers as the file shows them
+    std::cout << "calibration written to " << file.string() << ": inner K = " << json(cal.inner.K)
+              << " N/m^" << json(cal.inner.exponent) << ", outer K = " << json(cal.outer.K)
+              << " N/m^" << json(cal.outer.exponent) << '\n';
   }
-  std::filesystem::rename(partial, file);
-  if (!base.quiet)
-    std::cout << "calibration written to " << file.string() << ": inner K = " << races["inner"]["K"]
-              << " N/m^" << races["inner"]["exponent"] << ", outer K = " << races["outer"]["K"]
-              << " N/m^" << races["outer"]["exponent"] << '\n';
   return 0;
 }
 

@@ -1,5 +1,6 @@
-// The FE-calibrated contact law: reading calibration.json, checking it belongs to the case's
-// bearing, and the law of a ball between two calibrated races (calibration.h).
+// The FE-calibrated contact law: writing and reading calibration.json (its keys are spelled here
+// alone), checking it belongs to the case's bearing, and the law of a ball between two calibrated
+// races (calibration.h).
 
 #include "bearing/calibration.h"
 
@@ -10,6 +11,8 @@
 #include <filesystem>
 #include <fstream>
 #include <sstream>
+#include <system_error>
+#include <utility>
 #include <vector>
 
 #include <nlohmann/json.hpp>
@@ -24,6 +27,37 @@ namespace bearing {
 namespace {
 
 using nlohmann::json;
+
+// The `units` object: written as is, and a file declaring other units is refused.
+constexpr std::pair<const char*, const char*> kUnits[] = {{"K", "N/m^exponent"},
+                                                          {"lengths", "m"},
+                                                          {"young", "Pa"},
+                                                          {"contact_angle", "rad"},
+                                                          {"load_range", "N"}};
+
+// The contact geometry the constants belong to, as check_calibration_bearing compares it.
+json bearing_json(const Bearing& b) {
+  const auto material = [](const Material& m) {
+    return json{{"young", m.young}, {"poisson", m.poisson}};
+  };
+  return {{"designation", b.designation},
+          {"ball_diameter", b.ball_diameter},
+          {"pitch_diameter", b.pitch_diameter},
+          {"inner_conformity", b.inner_conformity},
+          {"outer_conformity", b.outer_conformity},
+          {"contact_angle", b.contact_angle},
+          {"material", {{"ball", material(b.ball)}, {"rings", material(b.rings)}}}};
+}
+
+json race_json(const RaceLaw& law, const RaceFitRecord& fit) {
+  json j = {{"K", law.K},
+            {"exponent", law.exponent},
+            {"K_three_halves", fit.K_three_halves},
+            {"hertz_K", fit.hertz_K},
+            {"details", fit.details}};
+  if (law.fit_residual != -1) j["fit_residual"] = law.fit_residual;  // −1: not given
+  return j;
+}
 
 // A JSON value as it appears in the file, shortened for a one-line message.
 std::string shown_json(const json& j) {
@@ -160,12 +194,7 @@ void check_units(const Reader& top) {
   if (!u) return;
   if (!u->is_object())
     top.fail("units = " + shown_json(*u) + ": expected an object, got " + article(*u));
-  const std::pair<const char*, const char*> expected[] = {{"K", "N/m^exponent"},
-                                                          {"lengths", "m"},
-                                                          {"young", "Pa"},
-                                                          {"contact_angle", "rad"},
-                                                          {"load_range", "N"}};
-  for (const auto& [key, unit] : expected) {
+  for (const auto& [key, unit] : kUnits) {
     const json* v = member(*u, key);
     if (v && !(v->is_string() && v->get<std::string>() == unit))
       top.fail(std::string("units.") + key + " = " + shown_json(*v) + ": expected \"" + unit +
@@ -174,6 +203,43 @@ void check_units(const Reader& top) {
 }
 
 }  // namespace
+
+std::string calibration_text(const CalibrationDocument& doc) {
+  const ContactCalibration& cal = doc.calibration;
+  json j = {{"format", std::string(kCalibrationFormat)},
+            {"bearing", bearing_json(cal.bearing)},
+            {"inner", race_json(cal.inner, doc.inner_fit)},
+            {"outer", race_json(cal.outer, doc.outer_fit)},
+            {"method", cal.method},
+            {"mesh", cal.mesh},
+            {"case", doc.case_source},
+            {"date", cal.date},
+            {"units", json::object()}};
+  for (const auto& [key, unit] : kUnits) j["units"][key] = unit;
+  // What parse_calibration reads for an absent key is written as one.
+  if (cal.load_min != 0 || cal.load_max != 0) j["load_range"] = {cal.load_min, cal.load_max};
+  if (!cal.geometry.empty()) j["geometry"] = cal.geometry;
+  // Keys sorted (nlohmann's default object); numbers in their shortest exact form.
+  return j.dump(2) + "\n";
+}
+
+void write_calibration(const CalibrationDocument& doc, const std::string& path) {
+  const std::string text = calibration_text(doc);
+  // Complete or nothing: written to a temporary name, then renamed.
+  const std::filesystem::path file(path), partial = path + ".partial";
+  {
+    std::ofstream out(partial);
+    const bool opened = out.is_open();
+    out << text;
+    out.close();
+    if (!out) {
+      std::error_code ignored;
+      if (opened) std::filesystem::remove(partial, ignored);  // the part that was written
+      throw InputError("cannot write " + partial.string());
+    }
+  }
+  std::filesystem::rename(partial, file);
+}
 
 ContactCalibration parse_calibration(std::string_view json_text, const std::string& path,
                                      const std::string& shown) {

@@ -17,7 +17,7 @@
 #include "bearing/constants.h"
 #include "bearing/decimal.h"
 #include "bearing/errors.h"
-#include "bearing/info_report.h"
+#include "bearing/json_helpers.h"
 
 namespace bearing {
 

@@ -1,10 +1,13 @@
-// The FE-calibrated contact law (`[model] contact = "calibrated"`): reading calibration.json back,
-// rejecting a file computed for another bearing, and the law of a ball between two calibrated
-// races (closed form for equal exponents, least-squares fit otherwise).
+// The FE-calibrated contact law (`[model] contact = "calibrated"`): writing calibration.json and
+// reading it back, rejecting a file computed for another bearing, and the law of a ball between
+// two calibrated races (closed form for equal exponents, least-squares fit otherwise).
 
 #include <cmath>
 #include <filesystem>
+#include <fstream>
+#include <iterator>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <gtest/gtest.h>
@@ -392,6 +395,121 @@ TEST(Calibration, PathsAndTheResolvedCase) {
   ASSERT_TRUE(r.model.calibration.has_value());
   EXPECT_EQ(r.model.calibration->path, a.model.calibration->path);
   EXPECT_EQ(contact_constants(r).K, contact_constants(a).K);
+}
+
+// The writer (what bearing-fem calibrate calls) and the reader agree on every field, to the bit;
+// the record for people (K_three_halves, hertz_K, details, case) is in the file too.
+TEST(Calibration, WrittenFileReadsBackExactly) {
+  CalibrationDocument doc;
+  ContactCalibration& cal = doc.calibration;
+  cal.bearing = case_bearing();
+  cal.bearing.designation = "6308-test";
+  cal.bearing.ball_diameter = 1.0 / 66.0;  // numbers without a short decimal form
+  cal.bearing.inner_conformity = 0.1 + 0.42;
+  cal.bearing.contact_angle = std::nextafter(0.2, 1.0);
+  cal.bearing.rings.poisson = std::nextafter(0.3, 0.0);
+  cal.inner = {35996868626.91724, 1.5015359213753956, 0.0003496142744503277};
+  cal.outer = {38661719399.47691, 1.0 + 1.0 / 3.0, 4.2e-4};
+  cal.load_min = 1.9999999999999987;
+  cal.load_max = 19.999999999999986;
+  cal.geometry = "groove";
+  cal.method = "test: \"quoted\" method, \u00e9";
+  cal.mesh = "test: 35883 cells";
+  cal.date = "2026-11-22T05:40:52Z";
+  doc.inner_fit = {35179326229.21373, 35066601758.29305, "cal_inner"};
+  doc.outer_fit = {37601800818.32296, 37473288750.74463, "cal_outer"};
+  doc.case_source = "examples/seed003_6308.toml";
+
+  namespace fs = std::filesystem;
+  fs::create_directories(test::test_dir());
+  const std::string path = (test::test_dir() / "written.json").string();
+  bearing::write_calibration(doc, path);
+  EXPECT_FALSE(fs::exists(path + ".partial"));
+  const ContactCalibration back = read_calibration(path, "written.json");
+
+  EXPECT_EQ(back.path, fs::absolute(path).lexically_normal().string());
+  const Bearing &b = back.bearing, &w = cal.bearing;
+  EXPECT_EQ(b.designation, w.designation);
+  EXPECT_EQ(b.ball_diameter, w.ball_diameter);
+  EXPECT_EQ(b.pitch_diameter, w.pitch_diameter);
+  EXPECT_EQ(b.inner_conformity, w.inner_conformity);
+  EXPECT_EQ(b.outer_conformity, w.outer_conformity);
+  EXPECT_EQ(b.contact_angle, w.contact_angle);
+  EXPECT_EQ(b.ball.young, w.ball.young);
+  EXPECT_EQ(b.ball.poisson, w.ball.poisson);
+  EXPECT_EQ(b.rings.young, w.rings.young);
+  EXPECT_EQ(b.rings.poisson, w.rings.poisson);
+  for (const auto& [got, wrote] : {std::pair{back.inner, cal.inner}, {back.outer, cal.outer}}) {
+    EXPECT_EQ(got.K, wrote.K);
+    EXPECT_EQ(got.exponent, wrote.exponent);
+    EXPECT_EQ(got.fit_residual, wrote.fit_residual);
+  }
+  EXPECT_EQ(back.load_min, cal.load_min);
+  EXPECT_EQ(back.load_max, cal.load_max);
+  EXPECT_EQ(back.geometry, cal.geometry);
+  EXPECT_EQ(back.method, cal.method);
+  EXPECT_EQ(back.mesh, cal.mesh);
+  EXPECT_EQ(back.date, cal.date);
+  check_calibration_bearing(back, w, "written.json");  // the same contact geometry
+
+  const json file = json::parse(std::ifstream(path));
+  EXPECT_EQ(file["inner"]["K_three_halves"], 35179326229.21373);
+  EXPECT_EQ(file["outer"]["hertz_K"], 37473288750.74463);
+  EXPECT_EQ(file["inner"]["details"], "cal_inner");
+  EXPECT_EQ(file["case"], "examples/seed003_6308.toml");
+  EXPECT_EQ(file.dump(2) + "\n", calibration_text(doc));
+}
+
+// A residual not given, no load range (equal exponents) and no geometry are written as absent,
+// which is how the reader reads them.
+TEST(Calibration, WrittenFileLeavesOutWhatIsNotGiven) {
+  CalibrationDocument doc;
+  doc.calibration.bearing = case_bearing();
+  doc.calibration.inner = {3.1e10, 1.45};
+  doc.calibration.outer = {3.7e10, 1.45};
+  const std::string text = calibration_text(doc);
+  const json file = json::parse(text);
+  for (const json* where : {&file, &file["inner"], &file["outer"]})
+    for (const char* key : {"fit_residual", "load_range", "geometry"})
+      EXPECT_FALSE(where->contains(key)) << key << " in\n" << text;
+  const ContactCalibration back = parse_calibration(text, "mem.json", "mem.json");
+  EXPECT_EQ(back.inner.fit_residual, -1);
+  EXPECT_EQ(back.outer.fit_residual, -1);
+  EXPECT_FALSE(back.has_load_range());
+  EXPECT_EQ(back.geometry, "");
+  EXPECT_EQ(back.outer.K, 3.7e10);
+}
+
+// The committed example was written by bearing-fem calibrate before the writer moved here: the
+// same document gives the same bytes.
+TEST(Calibration, WriterReproducesTheExampleFile) {
+  const std::string path =
+      std::string(BEARING_SOURCE_DIR) + "/examples/seed003_6308_calibration.json";
+  std::ifstream in(path, std::ios::binary);
+  ASSERT_TRUE(in) << path;
+  const std::string text{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+  const json file = json::parse(text);
+  CalibrationDocument doc;
+  doc.calibration = parse_calibration(text, path, "example");
+  const auto record = [&](const char* race) {
+    const json& r = file[race];
+    return RaceFitRecord{r["K_three_halves"], r["hertz_K"], r["details"]};
+  };
+  doc.inner_fit = record("inner");
+  doc.outer_fit = record("outer");
+  doc.case_source = file["case"];
+  EXPECT_EQ(calibration_text(doc), text);
+}
+
+// A file that cannot be written leaves nothing behind.
+TEST(Calibration, FailedWriteLeavesNothing) {
+  namespace fs = std::filesystem;
+  CalibrationDocument doc;
+  doc.calibration.bearing = case_bearing();
+  const fs::path path = test::test_dir() / "no such folder" / "cal.json";
+  EXPECT_THROW(bearing::write_calibration(doc, path.string()), InputError);
+  EXPECT_FALSE(fs::exists(path));
+  EXPECT_FALSE(fs::exists(path.string() + ".partial"));
 }
 
 }  // namespace

@@ -1,16 +1,18 @@
 #pragma once
 // The FE-calibrated contact law (`[model] contact = "calibrated"`, DESIGN.md "ContactLaw"): the
 // load–deflection law Q = K δ^n of each race, fitted by `bearing-fem calibrate` to a finite-element
-// force–approach curve (MODEL.md §9), read back from the calibration.json it writes.
+// force–approach curve (MODEL.md §9), written by it as calibration.json (write_calibration) and
+// read back from it (read_calibration): the file's keys live in calibration.cc alone.
 //
-// The file (SI units; numbers with 17 significant digits):
+// The file (SI units; numbers in their shortest exact form):
 //   {"format": "bearing-fem calibration 1",
 //    "bearing": {"designation", "ball_diameter", "pitch_diameter", "inner_conformity",
 //                "outer_conformity", "contact_angle",
 //                "material": {"ball": {"young", "poisson"}, "rings": {"young", "poisson"}}},
-//    "inner": {"K", "exponent", "fit_residual"}, "outer": {...},
-//    "load_range": [Q_min, Q_max], "geometry": "hertz" | "groove",
-//    "method": "...", "mesh": "...", "date": "...", "units": {...}}
+//    "inner": {"K", "exponent", "fit_residual", "K_three_halves", "hertz_K", "details"},
+//    "outer": {...}, "load_range": [Q_min, Q_max], "geometry": "hertz" | "groove",
+//    "method": "...", "mesh": "...", "case": "...", "date": "...", "units": {...}}
+// K_three_halves, hertz_K, details and case are a record for people and are not read back.
 // The constants belong to one contact geometry: a case whose ball diameter, pitch diameter,
 // conformities, contact angle or elastic constants differ from the file's is rejected. Clearance,
 // ball count, density and the rotor do not enter the contact constants and are not compared.
@@ -59,6 +61,32 @@ struct ContactCalibration {
 
   bool has_load_range() const { return load_max > 0; }
 };
+
+/// What the file records of one race's FE fit besides its law, for people: not read back.
+struct RaceFitRecord {
+  double K_three_halves = 0;  ///< the FE constant refitted with n = 1.5 [N/m^1.5]
+  double hertz_K = 0;         ///< exact Hertz constant of the same contact [N/m^1.5]
+  std::string details;        ///< folder of the race's contact.json, beside the file
+};
+
+/// A calibration file's whole content, as `bearing-fem calibrate` writes it.
+struct CalibrationDocument {
+  ContactCalibration calibration;  ///< what parse_calibration reads back (`path` is not written;
+                                   ///< of `bearing` the fields it compares and the designation)
+  RaceFitRecord inner_fit;         ///< inner.{K_three_halves, hertz_K, details}
+  RaceFitRecord outer_fit;         ///< outer.{...}
+  std::string case_source;         ///< `case`: the case the bearing came from (Case::source)
+};
+
+/// The file's text: JSON indented by 2, keys sorted, numbers in their shortest exact form, a
+/// final newline. What parse_calibration gives for an absent key is written as absent: a race's
+/// fit_residual of −1 (not given), a load range of [0, 0] (none) and an empty geometry.
+std::string calibration_text(const CalibrationDocument& doc);
+
+/// Writes calibration_text(doc) to `path` complete or not at all: to `path`.partial, then renamed.
+/// Throws InputError if it cannot be written, std::filesystem::filesystem_error if the rename
+/// fails.
+void write_calibration(const CalibrationDocument& doc, const std::string& path);
 
 /// Parses and validates calibration JSON. `shown` names the input in messages, e.g.
 /// `model.calibration = "cal.json"`; `path` is stored as is. Throws InputError ("<shown>: <key> =

@@ -27,18 +27,11 @@ InfoReport compute_info(const Case& c);
 /// contact.{inner,outer}.{sum_rho [1/m], f_rho, ellipticity, delta_star, K [N/m^n], exponent n},
 /// contact.K, contact.exponent, static.{deflection [m, m], ball_loads [N], q_max [N]}; plus
 /// contact.method, static.ball_angles [rad] and a `units` object; for a calibrated law
-/// contact.calibration (calibration_json). Throws SolverError if any value is not finite.
+/// contact.calibration (calibration_json, json_helpers.h). Throws SolverError if any value is not
+/// finite.
 nlohmann::json info_json(const InfoReport& report);
-
-/// The calibration behind a calibrated law: {file, designation, geometry, method, mesh, date,
-/// load_range [N] (null if the file has none), fit_residual.{inner,outer} (the FE fit's; null if
-/// not given), series_fit_residual (the ball's law, 0 if exact)}.
-nlohmann::json calibration_json(const ContactCalibration& cal, const ContactConstants& cc);
 
 /// Human-readable report with units.
 std::string info_text(const InfoReport& report);
-
-/// Throws SolverError naming the JSON path of the first NaN or infinity in `j`.
-void require_finite(const nlohmann::json& j, const std::string& path = "");
 
 }  // namespace bearing

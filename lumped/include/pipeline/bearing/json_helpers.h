@@ -1,0 +1,22 @@
+#pragma once
+// JSON pieces shared by the result writers (`bearing-sim info --json` and run's summary.json):
+// the check that nothing non-finite is written, and a calibrated law's provenance as both show it.
+
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+#include "bearing/calibration.h"
+#include "bearing/contact.h"
+
+namespace bearing {
+
+/// The calibration behind a calibrated law: {file, designation, geometry, method, mesh, date,
+/// load_range [N] (null if the file has none), fit_residual.{inner,outer} (the FE fit's; null if
+/// not given), series_fit_residual (the ball's law, 0 if exact)}.
+nlohmann::json calibration_json(const ContactCalibration& cal, const ContactConstants& cc);
+
+/// Throws SolverError naming the JSON path of the first NaN or infinity in `j`.
+void require_finite(const nlohmann::json& j, const std::string& path = "");
+
+}  // namespace bearing
