@@ -1,0 +1,89 @@
+#!/usr/bin/env bash
+# A refactoring's safety net: runs a fixed matrix of bearing-sim commands (every example, every
+# model kind with every method, every output flag, acoustics, sweeps and ~30 input errors) and
+# keeps every result file, stdout, stderr and exit code, so that two builds can be compared byte
+# for byte:
+#
+#     tests/outputs/run_matrix.sh OLD/bearing-sim /tmp/old
+#     tests/outputs/run_matrix.sh build/lumped/bearing-sim /tmp/new
+#     diff -r /tmp/old /tmp/new
+#
+# About 5 s. Not part of ctest: its expected output is whatever the previous build wrote.
+set -u
+[[ $# -eq 2 ]] || { echo "usage: $0 BEARING_SIM OUTDIR" >&2; exit 2; }
+root=$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)
+sim=$(cd "$(dirname "$1")" && pwd)/$(basename "$1"); out=$2; ex=$root/examples
+rm -rf "$out"; mkdir -p "$out"
+n=0
+go() {  # go NAME ARGS...   (run gets --out $out/NAME)
+  local name=$1; shift
+  local cmd=$1; shift
+  if [[ $cmd == run ]]; then
+    (cd "$root" && "$sim" run "$@" --out "$out/$name" --quiet >"$out/$name.stdout" 2>"$out/$name.stderr"; echo $? >"$out/$name.rc")
+  elif [[ $cmd == sweep ]]; then
+    (cd "$root" && "$sim" sweep "$@" --out "$out/$name" --quiet --jobs 2 >"$out/$name.stdout" 2>"$out/$name.stderr"; echo $? >"$out/$name.rc")
+  else
+    (cd "$root" && "$sim" $cmd "$@" >"$out/$name.stdout" 2>"$out/$name.stderr"; echo $? >"$out/$name.rc")
+  fi
+  n=$((n+1))
+}
+# every example as written, and its info (text and JSON)
+for f in "$ex"/*.toml; do
+  b=$(basename "$f" .toml)
+  go "run_$b" run "$f"
+  go "run_${b}_json" run "$f" --json --set solver.duration=0.3 --set solver.transient=0.1
+  go "info_$b" info "$f"
+  go "infojson_$b" info "$f" --json
+done
+go run_default run
+go info_default info
+go presets presets
+go help_run run --help
+go help_info info --help
+go help_sweep sweep --help
+S="--set solver.duration=0.15 --set solver.transient=0.05"
+for m in rk4 rkf45 rk8pd newmark bdf; do
+  for k in 2dof 3dof; do
+    go "m_${m}_${k}" run $S --set solver.method=$m --set model.kind=$k --set operation.axial_load=100 --set output.ball_loads=true --set output.ball_approach=true --set output.ball_motion=true --set output.window=flattop
+  done
+  go "m_${m}_balls" run "$ex/seed004_6304.toml" $S --set solver.method=$m --set solver.dt=2us --set output.ball_dynamics=true --set output.ball_loads=true --set output.ball_approach=true --set output.ball_motion=true --set cage.slip=0.02
+done
+go balls_axial run "$ex/seed004_6304.toml" $S --set operation.axial_load=300 --set output.ball_dynamics=true --set output.window=rectangular --set output.peaks=3
+go qs_full run "$ex/seed000_608_quasistatic.toml" $S --set output.ball_loads=true --set output.ball_approach=true --set acoustics.summation=energetic --set acoustics.ball_source=paper --set acoustics.ring_source=paper
+go qs_pulsating run "$ex/seed000_608_quasistatic.toml" $S --set acoustics.ball_source=pulsating-sphere --set acoustics.ring_source=none
+go tvds run "$ex/seed002_tvds.toml" $S --set model.waviness_stiffness=true --set model.contact=hamrock-brewe
+go harris run $S --set model.contact=harris-table --set operation.unbalance=1e-5 --set operation.gravity=true
+go calibrated run "$ex/seed003_6308_calibrated.toml" $S --set model.kind=3dof --set operation.axial_load=50
+go band run $S --set ball_errors.band=2um --set ball_errors.seed=7 --set model.waviness_stiffness=true
+go sweep1 sweep "$ex/seed003_6308.toml" $S --vary operation.speed=1000rpm:3000rpm:3 --vary bearing.balls=7:9:2
+go sweep_noise sweep "$ex/seed000_608_quasistatic.toml" $S --vary operation.load.1=-60:-40:2
+go sweep_fail sweep $S --vary solver.dt=1us:2ms:2
+# input errors (messages and exit codes)
+go e_kind run --set model.kind=4dof
+go e_method run --set solver.method=euler
+go e_contact run --set model.contact=calibratd
+go e_window run --set output.window=hamming
+go e_slip run "$ex/seed004_6304.toml" --set cage.slip=1
+go e_cage run --set cage.slip=0.1
+go e_axial run --set rotor.axial_mass=0
+go e_mass run --set rotor.mass=-1
+go e_unknown run --set bearing.bals=9
+go e_unknown2 run --set solvr.dt=1us
+go e_dt run --set solver.dt=2ms
+go e_balls run --set bearing.balls=2
+go e_speed run --set operation.speed=-5rpm
+go e_mic run "$ex/seed000_608_quasistatic.toml" --set 'acoustics.microphones=[["4 mm", "0 deg"]]'
+go e_src run "$ex/seed000_608_quasistatic.toml" --set acoustics.ring_source=monopole
+go e_none run "$ex/seed000_608_quasistatic.toml" --set acoustics.ring_source=none --set acoustics.ball_source=none
+go e_bd run --set output.ball_dynamics=true
+go e_unit run --set bearing.clearance=5
+go e_wav run --set waviness.inner.0.order=0
+go e_calib run --set model.contact=calibrated
+go e_peaks run --set output.peaks=2000
+go e_rk4 run "$ex/seed004_6304.toml" --set solver.dt=20us
+go e_bmass run "$ex/seed004_6304.toml" --set ball.mass=0
+go e_friction run "$ex/seed004_6304.toml" --set cage.friction=2
+go e_vary sweep --vary model.kind=1:2:2
+# paths differ between runs: normalise them
+sed -i -e "s#$out#OUT#g" -e "s#$sim#SIM#g" "$out"/*.stdout "$out"/*.stderr
+echo "$n commands"
