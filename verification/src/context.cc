@@ -1,0 +1,145 @@
+#include "context.h"
+
+#include <cmath>
+#include <filesystem>
+
+#include "bearing/constants.h"
+#include "bearing/presets.h"
+#include "fem_runner.h"
+
+namespace bearing::verify {
+
+Context::Context(Level level, Perturbation perturbation, FemRunner* fem, std::string source_dir)
+    : level_(level), perturbation_(perturbation), fem_(fem), source_dir_(std::move(source_dir)) {}
+
+Bearing Context::bearing(const std::string& designation) const {
+  return bearing(preset(designation));
+}
+
+Bearing Context::bearing(Bearing b) const {
+  b.pitch_diameter *= perturbation_.pitch_diameter;
+  return b;
+}
+
+namespace {
+
+void perturb(RaceContact& r, const Perturbation& p) {
+  r.K *= p.contact_constant;
+  r.exponent += p.contact_exponent;
+}
+
+void perturb(ContactConstants& k, const Perturbation& p) {
+  perturb(k.inner, p);
+  perturb(k.outer, p);
+  k.K *= p.contact_constant;
+  k.exponent += p.contact_exponent;
+}
+
+void turn_over(Waviness& w) {
+  for (auto& h : w.harmonics) h.phase += pi;
+}
+
+}  // namespace
+
+RaceContact Context::race_contact(const Bearing& b, Race race, HertzMethod method) const {
+  RaceContact r = bearing::race_contact(b, race, *make_hertz_solution(method));
+  perturb(r, perturbation_);
+  return r;
+}
+
+ContactConstants Context::contact(const Bearing& b, HertzMethod method) const {
+  ContactConstants k = contact_constants(b, *make_hertz_solution(method));
+  perturb(k, perturbation_);
+  return k;
+}
+
+BearingFrequencies Context::frequencies(const Bearing& b, double inner_speed) const {
+  return bearing_frequencies(b, inner_speed);
+}
+
+StaticLoadResult Context::static_load(int balls, const ContactConstants& k, double gap,
+                                      const Eigen::Vector2d& load, double phase) const {
+  StaticLoadOptions options;
+  options.phase = phase;
+  options.exponent = k.exponent;
+  return solve_static_load(balls, k.K, gap, load, options);
+}
+
+Case Context::example(const std::string& file, const std::vector<Override>& overrides) const {
+  return read_case_file((std::filesystem::path(source_dir_) / "examples" / file).string(),
+                        overrides);
+}
+
+Case Context::default_case(const std::vector<Override>& overrides) const {
+  return bearing::default_case(overrides);
+}
+
+ModelInputs Context::inputs(const Case& c) const {
+  Case geometry = c;
+  geometry.bearing = bearing(c.bearing);
+  ModelInputs in = model_inputs(geometry);
+  perturb_model(in);
+  return in;
+}
+
+ModelInputs Context::perturbed(ModelInputs in) const {
+  if (perturbation_.pitch_diameter != 1.0) {
+    in.bearing = bearing(in.bearing);
+    if (in.contact.method != ContactLaw::calibrated)
+      in.contact = contact_constants(in.bearing, *make_hertz_solution(in.hertz_method));
+  }
+  perturb_model(in);
+  return in;
+}
+
+void Context::perturb_model(ModelInputs& in) const {
+  perturb(in.contact, perturbation_);
+  in.mass *= perturbation_.mass;
+  in.axial_mass *= perturbation_.mass;
+  in.damping *= perturbation_.damping;
+  if (perturbation_.drop_tvds) in.waviness_stiffness = false;
+  if (perturbation_.waviness_sign) {
+    turn_over(in.inner_waviness);
+    turn_over(in.outer_waviness);
+  }
+  in.cage_slip += perturbation_.cage_slip;
+}
+
+SimulationResult Context::simulate(ModelKind kind, const ModelInputs& in,
+                                   const SolverSettings& solver,
+                                   const OutputRequest& output) const {
+  return bearing::simulate(kind, in, solver, output);
+}
+
+RunSettings Context::settings(const Case& c) const {
+  RunSettings s = run_settings(c);
+  s.model = inputs(c);
+  s.acoustics = acoustics(s.acoustics);
+  return s;
+}
+
+Air Context::air(double density, double sound_speed) const {
+  return Air{density, sound_speed * perturbation_.sound_speed};
+}
+
+Microphone Context::microphone(double radius, double angle) const {
+  return Microphone{radius * perturbation_.microphone_distance, angle};
+}
+
+AcousticsOptions Context::acoustics(AcousticsOptions a) const {
+  a.sound_speed *= perturbation_.sound_speed;
+  for (auto& m : a.microphones) m.radius *= perturbation_.microphone_distance;
+  return a;
+}
+
+nlohmann::json Context::fem(const std::vector<std::string>& args,
+                            const std::string& json_name) const {
+  if (fem_ == nullptr) throw Skipped("no FE runner in this context");
+  return fem_->run(args, json_name);
+}
+
+int Context::fe_cells(int cells) const {
+  return std::max(1, static_cast<int>(std::lround(cells * perturbation_.fe_cells)));
+}
+
+}  // namespace bearing::verify

@@ -1,0 +1,41 @@
+#pragma once
+// Runs the FE reference program `bearing-fem` as a child process, under `mpirun -np N` when asked,
+// once per distinct argument list (memoised, thread-safe), each run in its own folder.
+
+#include <future>
+#include <map>
+#include <mutex>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+namespace bearing::verify {
+
+class FemRunner {
+ public:
+  /// `program`: bearing-fem's path ("" when it was not built: every run throws Skipped);
+  /// `mpi_processes` ≥ 1 (1: run directly); `work_dir`: where the run folders go.
+  FemRunner(std::string program, int mpi_processes, std::string work_dir);
+
+  /// The JSON file `json_name` that `bearing-fem ARGS --out DIR` wrote (DIR/json_name), plus
+  /// "dir": DIR and "wall_time_total". Throws Skipped (no program) or SolverError (it failed:
+  /// the message carries its exit status and the end of its output).
+  nlohmann::json run(const std::vector<std::string>& args, const std::string& json_name);
+
+  bool available() const { return !program_.empty(); }
+  const std::string& program() const { return program_; }
+  int mpi_processes() const { return mpi_; }
+
+ private:
+  nlohmann::json execute(const std::vector<std::string>& args, const std::string& json_name,
+                         int index) const;
+
+  std::string program_;
+  int mpi_;
+  std::string work_dir_;
+  std::mutex mutex_;
+  std::map<std::string, std::shared_future<nlohmann::json>> runs_;
+};
+
+}  // namespace bearing::verify

@@ -1,0 +1,42 @@
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+
+#include "report.h"
+
+namespace bearing::verify {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+nlohmann::json figure_json(const Figure& f) {
+  nlohmann::json series = nlohmann::json::array();
+  for (const auto& s : f.series)
+    series.push_back({{"label", s.label}, {"x", s.x}, {"y", s.y}, {"style", s.style}});
+  nlohmann::json markers = nlohmann::json::array();
+  for (const auto& m : f.markers) markers.push_back({{"x", m.x}, {"label", m.label}});
+  return {{"name", f.name},   {"title", f.title}, {"x_label", f.x_label}, {"y_label", f.y_label},
+          {"log_x", f.log_x}, {"log_y", f.log_y}, {"series", series},     {"markers", markers}};
+}
+
+}  // namespace
+
+void write_figures(const Report& report, const std::string& dir, const std::string& plot_script) {
+  nlohmann::json all = nlohmann::json::array();
+  for (const auto& r : report.results)
+    for (const auto& f : r.figures) all.push_back(figure_json(f));
+  const fs::path data = fs::path(dir) / "figures.json";
+  std::ofstream(data) << all.dump() << "\n";
+  for (const auto& f : all) fs::remove(fs::path(dir) / (f["name"].get<std::string>() + ".png"));
+  if (all.empty()) return;
+  // Debian's matplotlib is /usr/bin/python3's (the python3 on PATH may be another interpreter).
+  const std::string command = "/usr/bin/python3 '" + plot_script + "' '" + data.string() + "' '" +
+                              dir + "' > '" + dir + "/plot.log' 2>&1";
+  if (std::system(command.c_str()) != 0)
+    std::ofstream(fs::path(dir) / "NO_FIGURES.txt")
+        << "The figures were not drawn: /usr/bin/python3 with matplotlib is needed "
+           "(Debian: python3-matplotlib); see plot.log. Their data is in figures.json.\n";
+}
+
+}  // namespace bearing::verify

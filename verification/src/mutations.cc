@@ -1,0 +1,52 @@
+#include "mutations.h"
+
+namespace bearing::verify {
+
+namespace {
+
+Perturbation with(void (*set)(Perturbation&)) {
+  Perturbation p;
+  set(p);
+  return p;
+}
+
+}  // namespace
+
+const std::vector<Mutation>& mutations() {
+  static const std::vector<Mutation> table = {
+      {"contact-constant-x1.03",
+       "the lumped load-deflection constant K 3 % too stiff (both races and the series law)",
+       with([](Perturbation& p) { p.contact_constant = 1.03; })},
+      {"contact-exponent+0.05", "the lumped load-deflection exponent 1.55 instead of Hertz's 1.5",
+       with([](Perturbation& p) { p.contact_exponent = 0.05; })},
+      {"tvds-dropped", "the time-varying deflection stiffness (waviness curvature) term left out",
+       with([](Perturbation& p) { p.drop_tvds = true; })},
+      {"waviness-sign-swapped", "every waviness harmonic turned over (a sign error in the profile)",
+       with([](Perturbation& p) { p.waviness_sign = true; })},
+      {"cage-speed-1pct-slow",
+       "the cage of the ball-DOF model 1 % slower than its kinematics (s_c + 0.01)",
+       with([](Perturbation& p) { p.cage_slip = 0.01; })},
+      {"pitch-diameter-x1.01", "the pitch diameter 1 % too large (kinematics and curvatures)",
+       with([](Perturbation& p) { p.pitch_diameter = 1.01; })},
+      {"mass-x1.05", "the inner-ring mass 5 % too large in the dynamic models",
+       with([](Perturbation& p) { p.mass = 1.05; })},
+      {"damping-x2", "the radial viscous damping doubled",
+       with([](Perturbation& p) { p.damping = 2.0; })},
+      {"sound-speed-x1.02", "the speed of sound 2 % too high in the lumped acoustics",
+       with([](Perturbation& p) { p.sound_speed = 1.02; })},
+      {"microphone-distance-x1.05", "every microphone placed 5 % too far from the bearing",
+       with([](Perturbation& p) { p.microphone_distance = 1.05; })},
+      {"fe-mesh-halved",
+       "the FE meshes at half the resolution (cells across the contact / per radius)",
+       with([](Perturbation& p) { p.fe_cells = 0.5; })},
+  };
+  return table;
+}
+
+const Mutation* find_mutation(const std::string& id) {
+  for (const auto& m : mutations())
+    if (m.id == id) return &m;
+  return nullptr;
+}
+
+}  // namespace bearing::verify
