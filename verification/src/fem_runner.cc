@@ -23,7 +23,9 @@ std::string quoted(const std::string& s) {
   return out + "'";
 }
 
-std::string tail_of(const fs::path& file, std::size_t chars) {
+}  // namespace
+
+std::string tail_of(const std::string& file, std::size_t chars) {
   std::ifstream in(file);
   std::stringstream ss;
   ss << in.rdbuf();
@@ -31,7 +33,19 @@ std::string tail_of(const fs::path& file, std::size_t chars) {
   return s.size() <= chars ? s : "…" + s.substr(s.size() - chars);
 }
 
-}  // namespace
+std::string fem_command(const std::string& program, int mpi_processes,
+                        const std::vector<std::string>& args) {
+  std::string command;
+  if (mpi_processes > 1) command = "mpirun --oversubscribe -np " + std::to_string(mpi_processes) + " ";
+  command += quoted(program);
+  for (const auto& a : args) command += " " + quoted(a);
+  return command;
+}
+
+int run_logged(const std::string& command, const std::string& log) {
+  const int status = std::system((command + " > " + quoted(log) + " 2>&1").c_str());
+  return status == -1 ? -1 : (WIFEXITED(status) ? WEXITSTATUS(status) : 128);
+}
 
 FemRunner::FemRunner(std::string program, int mpi_processes, std::string work_dir)
     : program_(std::move(program)), mpi_(mpi_processes), work_dir_(std::move(work_dir)) {}
@@ -64,22 +78,18 @@ nlohmann::json FemRunner::execute(const std::vector<std::string>& args,
   const fs::path dir = fs::path(work_dir_) / name;
   fs::remove_all(dir);
   fs::create_directories(dir);
-  std::string command;
-  if (mpi_ > 1) command = "mpirun --oversubscribe -np " + std::to_string(mpi_) + " ";
-  command += quoted(program_);
-  for (const auto& a : args) command += " " + quoted(a);
-  command += " --out " + quoted(dir.string());
+  std::vector<std::string> all = args;
+  all.insert(all.end(), {"--out", dir.string()});
+  const std::string command = fem_command(program_, mpi_, all);
   { std::ofstream(dir / "command.txt") << command << "\n"; }
   const auto start = std::chrono::steady_clock::now();
-  const int status =
-      std::system((command + " > " + quoted((dir / "log.txt").string()) + " 2>&1").c_str());
+  const int code = run_logged(command, (dir / "log.txt").string());
   const double seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  const int code = status == -1 ? -1 : (WIFEXITED(status) ? WEXITSTATUS(status) : 128);
   const fs::path json_file = json_name.empty() ? fs::path() : dir / json_name;
   if (code != 0 || !fs::exists(json_file))
     throw SolverError("bearing-fem failed (exit " + std::to_string(code) + "): " + command + "\n" +
-                      tail_of(dir / "log.txt", 600));
+                      tail_of((dir / "log.txt").string(), 600));
   std::ifstream in(json_file);
   nlohmann::json j = nlohmann::json::parse(in);
   j["dir"] = dir.string();

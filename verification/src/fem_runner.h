@@ -12,6 +12,16 @@
 
 namespace bearing::verify {
 
+/// The shell command running `program ARGS` (under `mpirun -np N` when mpi_processes > 1).
+std::string fem_command(const std::string& program, int mpi_processes,
+                        const std::vector<std::string>& args);
+
+/// Runs a shell command with its output into `log`; its exit status (-1: not started).
+int run_logged(const std::string& command, const std::string& log);
+
+/// The last `chars` characters of a file (a failed run's log, for the error message).
+std::string tail_of(const std::string& file, std::size_t chars);
+
 class FemRunner {
  public:
   /// `program`: bearing-fem's path ("" when it was not built: every run throws Skipped);

@@ -23,9 +23,15 @@ nlohmann::json figure_json(const Figure& f) {
 }  // namespace
 
 void write_figures(const Report& report, const std::string& dir, const std::string& plot_script) {
+  std::vector<Figure> figures;
+  for (const auto& r : report.results) figures.insert(figures.end(), r.figures.begin(), r.figures.end());
+  draw_figures(figures, dir, plot_script);
+}
+
+void draw_figures(const std::vector<Figure>& figures, const std::string& dir,
+                  const std::string& plot_script) {
   nlohmann::json all = nlohmann::json::array();
-  for (const auto& r : report.results)
-    for (const auto& f : r.figures) all.push_back(figure_json(f));
+  for (const auto& f : figures) all.push_back(figure_json(f));
   const fs::path data = fs::path(dir) / "figures.json";
   std::ofstream(data) << all.dump() << "\n";
   for (const auto& f : all) fs::remove(fs::path(dir) / (f["name"].get<std::string>() + ".png"));

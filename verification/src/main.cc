@@ -36,8 +36,21 @@ struct Options {
   int mpi = 1;
   std::string out;
   std::string fem = BEARING_VERIFY_FEM;
+  std::string plant;  ///< run --plant: a mutation planted in this run
   bool quiet = false;
 };
+
+// The perturbation `run --plant ID` asks for (identity without it).
+Perturbation planted(const std::string& id) {
+  if (id.empty()) return {};
+  const Mutation* m = find_mutation(id);
+  if (m == nullptr) {
+    std::string allowed;
+    for (const auto& x : mutations()) allowed += (allowed.empty() ? "" : ", ") + x.id;
+    throw bearing::InputError("--plant = \"" + id + "\": unknown mutation; allowed: " + allowed);
+  }
+  return m->perturbation;
+}
 
 void check_regex(const std::string& only) {
   try {
@@ -74,6 +87,11 @@ int list_command(const Options& o) {
   return 0;
 }
 
+int mutations_command() {
+  for (const auto& m : mutations()) std::printf("%-28s %s\n", m.id.c_str(), m.description.c_str());
+  return 0;
+}
+
 std::string fem_program(const Options& o) {
   if (o.fem.empty()) return "";
   if (!fs::exists(o.fem))
@@ -93,8 +111,9 @@ Report run_report(const Options& o, const std::string& command, FemRunner& fem,
                   const std::vector<Check>& all, std::vector<const Check*>& selected) {
   Report report;
   report.info = run_info(command, o.level, o.only, o.jobs, o.mpi, fem.program());
+  report.info.planted = o.plant;
   selected = select_checks(all, kLevels.at(o.level), command == "mutate" ? "" : o.only);
-  const Context context(kLevels.at(o.level), {}, &fem, BEARING_SOURCE_DIR);
+  const Context context(kLevels.at(o.level), planted(o.plant), &fem, BEARING_SOURCE_DIR);
   say(o, command + ": " + std::to_string(selected.size()) + " checks at level " + o.level);
   report.results = run_checks(selected, context, o.jobs, [&](const CheckResult& r, int n) {
     say(o, "[" + std::to_string(n) + "/" + std::to_string(selected.size()) + "] " +
@@ -188,6 +207,8 @@ int main(int argc, char** argv) {
   auto* list =
       app.add_subcommand("list", "every check: id, family, reference, level, cost, tolerance");
   add_common(list, o);
+  bool list_mutations = false;
+  list->add_flag("--mutations", list_mutations, "list the mutations instead of the checks");
   list->callback([&] { o.level = list->count("--level") ? o.level : "full"; });
   auto* run = app.add_subcommand("run",
                                  "run the checks; writes DIR/report.{html,md,json} and "
@@ -195,6 +216,9 @@ int main(int argc, char** argv) {
   add_common(run, o);
   add_running(run, o);
   run->add_option("--out", o.out, "report folder")->required();
+  run->add_option("--plant", o.plant,
+                  "plant one mutation (bearing-verify list --mutations) to see a caught bug: the "
+                  "report says so on its first line");
   auto* mutate = app.add_subcommand(
       "mutate",
       "plant each mutation, rerun the checks, report which caught it; exit 4 if one is not caught");
@@ -206,7 +230,7 @@ int main(int argc, char** argv) {
   try {
     app.parse(argc, argv);
     if (o.out.empty()) o.out = "mutate-report";
-    if (*list) return list_command(o);
+    if (*list) return list_mutations ? mutations_command() : list_command(o);
     if (*run) return run_command(o);
     if (*mutate) return mutate_command(o);
     if (*calibrate) return calibrate_command(co);

@@ -45,6 +45,7 @@ struct RunInfo {
   std::string compiler;
   std::vector<std::pair<std::string, std::string>> libraries;  ///< name, version
   std::string only;                                            ///< the --only filter, empty if none
+  std::string planted;  ///< run --plant: the mutation planted in this run ("" normally)
   int jobs = 1;
   int mpi_processes = 1;
   std::string fem_program;  ///< bearing-fem used, or "" (FE checks skipped)
@@ -66,6 +67,10 @@ struct Report {
 /// Each file is written to a temporary name and renamed, so a report is complete or absent.
 void write_report(const Report& report, const std::string& dir, const std::string& plot_script);
 
+/// Writes the figures' data to DIR/figures.json and draws DIR/NAME.png with plot_script
+/// (/usr/bin/python3 and matplotlib; without them DIR/NO_FIGURES.txt says why).
+void draw_figures(const std::vector<Figure>& figures, const std::string& dir,
+                  const std::string& plot_script);
 /// Writes each result figure's data to DIR/figures.json and draws them with plot_script.
 void write_figures(const Report& report, const std::string& dir, const std::string& plot_script);
 

@@ -2,7 +2,7 @@
 
 #include "families.h"
 #include "mutations.h"
-#include "report.h"
+#include "report_format.h"
 
 namespace bearing::verify {
 
@@ -63,6 +63,7 @@ nlohmann::json report_json(const Report& report) {
         {"compiler", i.compiler},
         {"libraries", libraries},
         {"only", i.only},
+        {"planted", i.planted},
         {"jobs", i.jobs},
         {"mpi_processes", i.mpi_processes},
         {"fem_program", i.fem_program},
@@ -91,9 +92,7 @@ nlohmann::json report_json(const Report& report) {
   j["checks"] = checks;
   if (report.has_mutations) {
     nlohmann::json ms = nlohmann::json::array();
-    int caught = 0;
     for (const auto& m : report.mutations) {
-      caught += m.caught() ? 1 : 0;
       ms.push_back({{"id", m.id},
                     {"description", m.description},
                     {"caught", m.caught()},
@@ -102,7 +101,7 @@ nlohmann::json report_json(const Report& report) {
                     {"wall_time", m.wall_time}});
     }
     j["mutations"] = ms;
-    j["mutation_score"] = {{"caught", caught}, {"total", report.mutations.size()}};
+    j["mutation_score"] = {{"caught", mutations_caught(report)}, {"total", report.mutations.size()}};
   }
   return j;
 }

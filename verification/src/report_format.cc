@@ -1,0 +1,66 @@
+#include "report_format.h"
+
+#include <cmath>
+#include <cstdio>
+
+#include "families.h"
+
+namespace bearing::verify {
+
+std::string with_unit(double value, const std::string& unit) {
+  if (!std::isfinite(value)) return "—";
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "%.6g", value);
+  return unit == "-" ? std::string(buf) : std::string(buf) + " " + unit;
+}
+
+std::string tolerance_text(const Check& c) {
+  char buf[64];
+  if (c.tolerance.kind == Tolerance::Kind::relative)
+    std::snprintf(buf, sizeof buf, "±%.3g %%", 100 * c.tolerance.bound);
+  else
+    std::snprintf(buf, sizeof buf, "±%.3g%s%s", c.tolerance.bound, c.unit == "-" ? "" : " ",
+                  c.unit == "-" ? "" : c.unit.c_str());
+  return buf;
+}
+
+std::string deviation_text(const CheckResult& r) {
+  if (r.status == Status::skipped || !std::isfinite(r.deviation)) return "—";
+  char buf[64];
+  if (r.check->tolerance.kind == Tolerance::Kind::relative)
+    std::snprintf(buf, sizeof buf, "%.3g %%", 100 * r.deviation);
+  else
+    std::snprintf(buf, sizeof buf, "%.3g%s%s", r.deviation, r.check->unit == "-" ? "" : " ",
+                  r.check->unit == "-" ? "" : r.check->unit.c_str());
+  return buf;
+}
+
+std::string seconds_text(double s) {
+  char buf[32];
+  if (s < 1.0)
+    std::snprintf(buf, sizeof buf, "%.0f ms", 1000 * s);
+  else
+    std::snprintf(buf, sizeof buf, "%.1f s", s);
+  return buf;
+}
+
+std::vector<FamilyCount> family_counts(const Report& report) {
+  std::vector<FamilyCount> out;
+  for (const auto& f : kFamilies) {
+    FamilyCount c{f.id, f.title};
+    for (const auto& r : report.results) {
+      if (r.check->family != f.id) continue;
+      (r.status == Status::pass ? c.passed : r.status == Status::fail ? c.failed : c.skipped)++;
+    }
+    out.push_back(c);
+  }
+  return out;
+}
+
+int mutations_caught(const Report& report) {
+  int n = 0;
+  for (const auto& m : report.mutations) n += m.caught() ? 1 : 0;
+  return n;
+}
+
+}  // namespace bearing::verify
