@@ -11,6 +11,7 @@ packages=(
   libeigen3-dev libgsl-dev libtomlplusplus-dev nlohmann-json3-dev libcli11-dev   # lumped/
   googletest libgtest-dev libgmock-dev libbenchmark-dev                          # tests/, bench/
   libdeal.ii-dev petsc-dev mpi-default-bin gmsh                                  # fem/, meshes/
+  python3-matplotlib python3-numpy python3-jsonschema chromium                   # verification/: figures, report tests
 )
 
 missing=()

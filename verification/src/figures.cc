@@ -33,6 +33,7 @@ void draw_figures(const std::vector<Figure>& figures, const std::string& dir,
   nlohmann::json all = nlohmann::json::array();
   for (const auto& f : figures) all.push_back(figure_json(f));
   const fs::path data = fs::path(dir) / "figures.json";
+  fs::remove(fs::path(dir) / "NO_FIGURES.txt");
   std::ofstream(data) << all.dump() << "\n";
   for (const auto& f : all) fs::remove(fs::path(dir) / (f["name"].get<std::string>() + ".png"));
   if (all.empty()) return;
