@@ -51,8 +51,7 @@ void say(const CalibrateOptions& o, const std::string& line) {
 }
 
 // Runs bearing-fem; throws SolverError with the end of its log when it fails.
-void run_fem(const CalibrateOptions& o, const std::vector<std::string>& args,
-             const fs::path& log) {
+void run_fem(const CalibrateOptions& o, const std::vector<std::string>& args, const fs::path& log) {
   const std::string command = fem_command(o.fem, o.mpi, args);
   if (run_logged(command, log.string()) != 0)
     throw SolverError("bearing-fem failed: " + command + "\n" + tail_of(log.string(), 800));
@@ -110,8 +109,8 @@ int calibrate_command(const CalibrateOptions& o) {
     fs::remove(out / stale);
 
   say(o, "bearing-fem calibrate (" + o.geometry + ") …");
-  std::vector<std::string> args = {"calibrate", o.case_path, "--out", file.string(),
-                                   "--geometry", o.geometry};
+  std::vector<std::string> args = {"calibrate",   o.case_path,  "--out",
+                                   file.string(), "--geometry", o.geometry};
   for (const auto& a : mesh_args(o)) args.push_back(a);
   run_fem(o, args, out / "calibrate.log");
   const ContactCalibration cal = read_calibration(file.string(), "calibration.json");
@@ -131,9 +130,13 @@ int calibrate_command(const CalibrateOptions& o) {
                                    "FE " + o.geometry + " (calibrated)"));
     say(o, "bearing-fem contact --race " + name + " --geometry " + other + " …");
     const fs::path dir = out / (other + "_" + name);
-    std::vector<std::string> a = {"contact", o.case_path, "--race", name, "--geometry", other,
-                                  "--load-min", std::to_string(cal.load_min), "--load-max",
-                                  std::to_string(cal.load_max), "--no-vtu", "--out", dir.string()};
+    std::vector<std::string> a = {"contact",    o.case_path,
+                                  "--race",     name,
+                                  "--geometry", other,
+                                  "--load-min", std::to_string(cal.load_min),
+                                  "--load-max", std::to_string(cal.load_max),
+                                  "--no-vtu",   "--out",
+                                  dir.string()};
     for (const auto& m : mesh_args(o)) a.push_back(m);
     run_fem(o, a, out / (other + "_" + name + ".log"));
     rs.curves.push_back(read_curve(dir / "force_approach.csv", "FE " + other));

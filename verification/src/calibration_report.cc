@@ -30,7 +30,8 @@ struct Law {
 std::vector<Law> laws(const CalibrationStudy& s, Race race) {
   const RaceLaw& cal = race == Race::inner ? s.calibration.inner : s.calibration.outer;
   std::vector<Law> out = {{"calibrated (FE " + s.geometry + ")", cal.K, cal.exponent}};
-  for (HertzMethod m : {HertzMethod::exact, HertzMethod::hamrock_brewe, HertzMethod::harris_table}) {
+  for (HertzMethod m :
+       {HertzMethod::exact, HertzMethod::hamrock_brewe, HertzMethod::harris_table}) {
     const RaceContact rc = race_contact(s.bearing, race, *make_hertz_solution(m));
     out.push_back({name_of(kContactLaws, contact_law(m)), rc.K, rc.exponent});
   }
@@ -66,9 +67,14 @@ std::string fmt(const char* f, double x) {
 
 Figure law_figure(const CalibrationStudy& s, const RaceStudy& r) {
   const std::string race = to_string(r.race);
-  Figure f{"calibration-" + race, "Effective stiffness Q/δ^1.5 of the " + race +
-                                      " contact over the calibrated load range",
-           "ball load Q [N]", "Q / δ^1.5 [N/m^1.5]", true, false, {}, {}};
+  Figure f{"calibration-" + race,
+           "Effective stiffness Q/δ^1.5 of the " + race + " contact over the calibrated load range",
+           "ball load Q [N]",
+           "Q / δ^1.5 [N/m^1.5]",
+           true,
+           false,
+           {},
+           {}};
   const auto q = loads(s.calibration, 25);
   for (const Law& law : laws(s, r.race)) {
     Series line{law.name, q, {}, "line"};
@@ -91,8 +97,14 @@ const ChannelSummary* channel(const RunSummary& s, const std::string& name) {
 }
 
 Figure spectrum_figure(const CalibrationStudy& s) {
-  Figure f{"calibration-spectra", "Vertical displacement spectrum under each contact law",
-           "frequency [Hz]", "amplitude of y [m]", false, true, {}, {}};
+  Figure f{"calibration-spectra",
+           "Vertical displacement spectrum under each contact law",
+           "frequency [Hz]",
+           "amplitude of y [m]",
+           false,
+           true,
+           {},
+           {}};
   for (const auto& r : s.responses) {
     for (std::size_t k = 0; k < r.summary.spectrum_channels.size(); ++k) {
       if (r.summary.spectrum_channels[k] != "y") continue;
@@ -121,17 +133,21 @@ std::vector<std::vector<std::string>> race_table(const CalibrationStudy& s, cons
   const Law& cal = all.front();
   auto add = [&](const std::string& name, double K, double n, auto approach) {
     std::vector<std::string> row = {name, fmt("%.5e", K), fmt("%.5f", n)};
-    nlohmann::json jr = {{"law", name}, {"K", K}, {"exponent", n}, {"approach", nlohmann::json::array()}};
+    nlohmann::json jr = {
+        {"law", name}, {"K", K}, {"exponent", n}, {"approach", nlohmann::json::array()}};
     for (double x : q) {
       const double d = approach(x);
-      row.push_back(fmt("%.5f", d * 1e6) + " (" + fmt("%+.2f", 100 * (d / cal.approach(x) - 1)) + " %)");
+      row.push_back(fmt("%.5f", d * 1e6) + " (" + fmt("%+.2f", 100 * (d / cal.approach(x) - 1)) +
+                    " %)");
       jr["approach"].push_back(std::isfinite(d) ? nlohmann::json(d) : nlohmann::json());
     }
     rows.push_back(row);
     j["laws"].push_back(jr);
   };
-  for (const Law& law : all) add(law.name, law.K, law.exponent, [&](double x) { return law.approach(x); });
-  for (const FeCurve& c : r.curves) add(c.label + " (points)", NAN, NAN, [&](double x) { return fe_approach(c, x); });
+  for (const Law& law : all)
+    add(law.name, law.K, law.exponent, [&](double x) { return law.approach(x); });
+  for (const FeCurve& c : r.curves)
+    add(c.label + " (points)", NAN, NAN, [&](double x) { return fe_approach(c, x); });
   j["loads"] = q;
   return rows;
 }
@@ -146,15 +162,19 @@ std::vector<std::vector<std::string>> response_table(const CalibrationStudy& s, 
     nlohmann::json jp = nlohmann::json::array();
     for (std::size_t k = 0; y && k < y->peaks.size() && k < 3; ++k) {
       const auto& p = y->peaks[k];
-      peaks += (k ? "; " : "") + fmt("%.2f", p.frequency) + (p.label.empty() ? "" : " (" + p.label + ")") +
-               ": " + fmt("%.3e", p.amplitude);
+      peaks += (k ? "; " : "") + fmt("%.2f", p.frequency) +
+               (p.label.empty() ? "" : " (" + p.label + ")") + ": " + fmt("%.3e", p.amplitude);
       jp.push_back({{"frequency", p.frequency}, {"amplitude", p.amplitude}, {"label", p.label}});
     }
     const double rx = x ? x->statistics.rms : NAN, ry = y ? y->statistics.rms : NAN;
-    rows.push_back({r.law, fmt("%.5e", r.contact.K), fmt("%.5f", r.contact.exponent), fmt("%.4e", rx),
-                    fmt("%.4e", ry), peaks});
-    j.push_back({{"law", r.law}, {"K", r.contact.K}, {"exponent", r.contact.exponent},
-                 {"rms_x", rx}, {"rms_y", ry}, {"peaks_y", jp}});
+    rows.push_back({r.law, fmt("%.5e", r.contact.K), fmt("%.5f", r.contact.exponent),
+                    fmt("%.4e", rx), fmt("%.4e", ry), peaks});
+    j.push_back({{"law", r.law},
+                 {"K", r.contact.K},
+                 {"exponent", r.contact.exponent},
+                 {"rms_x", rx},
+                 {"rms_y", ry},
+                 {"peaks_y", jp}});
   }
   return rows;
 }
@@ -214,8 +234,8 @@ void write_calibration_report(const CalibrationStudy& s, const std::string& dir)
   h << html_head("bearing-verify calibration — " + s.bearing.designation);
   const std::string title = "Stiffness calibration of the " + s.bearing.designation;
   const std::string intro =
-      "Case " + s.case_path + "; FE geometry fitted: " + s.geometry + " (" + s.mesh +
-      "); loads " + fmt("%.4g", s.calibration.load_min) + " to " + fmt("%.4g", s.calibration.load_max) +
+      "Case " + s.case_path + "; FE geometry fitted: " + s.geometry + " (" + s.mesh + "); loads " +
+      fmt("%.4g", s.calibration.load_min) + " to " + fmt("%.4g", s.calibration.load_max) +
       " N (light load to the case's largest ball load); commit " + info.commit + ", " + info.date +
       ". calibration.json is read by bearing-sim with [model] contact = \"calibrated\", "
       "calibration = \"calibration.json\". δ is the elastic approach of one ball on the race.";
@@ -224,7 +244,8 @@ void write_calibration_report(const CalibrationStudy& s, const std::string& dir)
   for (const RaceStudy& r : s.races) {
     nlohmann::json jr = {{"race", to_string(r.race)}, {"laws", nlohmann::json::array()}};
     const auto rows = race_table(s, r, jr);
-    const std::string head = std::string("The ") + to_string(r.race) + " race: every law against the calibrated one";
+    const std::string head =
+        std::string("The ") + to_string(r.race) + " race: every law against the calibrated one";
     h << "<h2>" << escape_html(head) << "</h2>\n";
     html_table(h, rows);
     m << "## " << head << "\n\n";

@@ -9,6 +9,23 @@
 
 namespace bearing::verify {
 
+namespace {
+
+thread_local unsigned* t_knobs = nullptr;
+
+void read(unsigned knobs) {
+  if (t_knobs != nullptr) *t_knobs |= knobs;
+}
+
+}  // namespace
+
+KnobRecorder::KnobRecorder() : previous_(t_knobs) {
+  t_knobs = &knobs_;
+}
+KnobRecorder::~KnobRecorder() {
+  t_knobs = previous_;
+}
+
 Context::Context(Level level, Perturbation perturbation, FemRunner* fem, std::string source_dir)
     : level_(level), perturbation_(perturbation), fem_(fem), source_dir_(std::move(source_dir)) {}
 
@@ -17,6 +34,7 @@ Bearing Context::bearing(const std::string& designation) const {
 }
 
 Bearing Context::bearing(Bearing b) const {
+  read(kPitch);
   b.pitch_diameter *= perturbation_.pitch_diameter;
   return b;
 }
@@ -42,12 +60,14 @@ void turn_over(Waviness& w) {
 }  // namespace
 
 RaceContact Context::race_contact(const Bearing& b, Race race, HertzMethod method) const {
+  read(kContact);
   RaceContact r = bearing::race_contact(b, race, *make_hertz_solution(method));
   perturb(r, perturbation_);
   return r;
 }
 
 ContactConstants Context::contact(const Bearing& b, HertzMethod method) const {
+  read(kContact);
   ContactConstants k = contact_constants(b, *make_hertz_solution(method));
   perturb(k, perturbation_);
   return k;
@@ -83,6 +103,7 @@ ModelInputs Context::inputs(const Case& c) const {
 }
 
 ModelInputs Context::perturbed(ModelInputs in) const {
+  read(kPitch);
   if (perturbation_.pitch_diameter != 1.0) {
     in.bearing = bearing(in.bearing);
     if (in.contact.method != ContactLaw::calibrated)
@@ -92,7 +113,11 @@ ModelInputs Context::perturbed(ModelInputs in) const {
   return in;
 }
 
+// Records only the knobs that can change these inputs (no waviness: the sign cannot matter).
 void Context::perturb_model(ModelInputs& in) const {
+  read(kContact | kMass | kCageSlip | (in.damping != 0 || in.axial_damping != 0 ? kDamping : 0u) |
+       (in.waviness_stiffness ? kTvds : 0u) |
+       (in.inner_waviness.empty() && in.outer_waviness.empty() ? 0u : kWaviness));
   perturb(in.contact, perturbation_);
   in.mass *= perturbation_.mass;
   in.axial_mass *= perturbation_.mass;
@@ -119,14 +144,17 @@ RunSettings Context::settings(const Case& c) const {
 }
 
 Air Context::air(double density, double sound_speed) const {
+  read(kSoundSpeed);
   return Air{density, sound_speed * perturbation_.sound_speed};
 }
 
 Microphone Context::microphone(double radius, double angle) const {
+  read(kMicrophone);
   return Microphone{radius * perturbation_.microphone_distance, angle};
 }
 
 AcousticsOptions Context::acoustics(AcousticsOptions a) const {
+  read(kSoundSpeed | kMicrophone);
   a.sound_speed *= perturbation_.sound_speed;
   for (auto& m : a.microphones) m.radius *= perturbation_.microphone_distance;
   return a;
@@ -139,6 +167,7 @@ nlohmann::json Context::fem(const std::vector<std::string>& args,
 }
 
 int Context::fe_cells(int cells) const {
+  read(kFeCells);
   return std::max(1, static_cast<int>(std::lround(cells * perturbation_.fe_cells)));
 }
 

@@ -28,6 +28,22 @@ namespace bearing::verify {
 
 class FemRunner;
 
+/// Records, on this thread, which perturbation knobs the Context methods read while it lives
+/// (runner.cc: a mutation that turns none of a check's knobs cannot change its result, so
+/// `mutate` does not rerun it). Sound because checks take the toolkit's values only from a Context.
+class KnobRecorder {
+ public:
+  KnobRecorder();
+  ~KnobRecorder();
+  KnobRecorder(const KnobRecorder&) = delete;
+  KnobRecorder& operator=(const KnobRecorder&) = delete;
+  unsigned knobs() const { return knobs_; }
+
+ private:
+  unsigned knobs_ = 0;
+  unsigned* previous_;
+};
+
 class Context {
  public:
   Context(Level level, Perturbation perturbation, FemRunner* fem, std::string source_dir);

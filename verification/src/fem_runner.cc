@@ -36,7 +36,9 @@ std::string tail_of(const std::string& file, std::size_t chars) {
 std::string fem_command(const std::string& program, int mpi_processes,
                         const std::vector<std::string>& args) {
   std::string command;
-  if (mpi_processes > 1) command = "mpirun --allow-run-as-root --oversubscribe -np " + std::to_string(mpi_processes) + " ";
+  if (mpi_processes > 1)
+    command =
+        "mpirun --allow-run-as-root --oversubscribe -np " + std::to_string(mpi_processes) + " ";
   command += quoted(program);
   for (const auto& a : args) command += " " + quoted(a);
   return command;

@@ -24,7 +24,8 @@ nlohmann::json figure_json(const Figure& f) {
 
 void write_figures(const Report& report, const std::string& dir, const std::string& plot_script) {
   std::vector<Figure> figures;
-  for (const auto& r : report.results) figures.insert(figures.end(), r.figures.begin(), r.figures.end());
+  for (const auto& r : report.results)
+    figures.insert(figures.end(), r.figures.begin(), r.figures.end());
   draw_figures(figures, dir, plot_script);
 }
 

@@ -7,6 +7,20 @@
 
 namespace bearing::verify {
 
+/// The knobs as bits: which ones a check read (Context records it) and which a mutation turns.
+enum Knob : unsigned {
+  kContact = 1u << 0,     ///< contact_constant, contact_exponent
+  kTvds = 1u << 1,        ///< drop_tvds
+  kWaviness = 1u << 2,    ///< waviness_sign
+  kCageSlip = 1u << 3,    ///< cage_slip
+  kPitch = 1u << 4,       ///< pitch_diameter
+  kMass = 1u << 5,        ///< mass
+  kDamping = 1u << 6,     ///< damping
+  kSoundSpeed = 1u << 7,  ///< sound_speed
+  kMicrophone = 1u << 8,  ///< microphone_distance
+  kFeCells = 1u << 9,     ///< fe_cells
+};
+
 struct Perturbation {
   double contact_constant = 1.0;     ///< × K of both races and of the ball's series law [-]
   double contact_exponent = 0.0;     ///< + load–deflection exponent n of every lumped law [-]
@@ -19,6 +33,22 @@ struct Perturbation {
   double sound_speed = 1.0;          ///< × c₀ in the lumped acoustics [-]
   double microphone_distance = 1.0;  ///< × every lumped microphone's distance [-]
   double fe_cells = 1.0;             ///< × cells across the FE contact patch / per radius [-]
+
+  /// The knobs this perturbation turns away from the identity.
+  unsigned changed() const {
+    unsigned k = 0;
+    if (contact_constant != 1.0 || contact_exponent != 0.0) k |= kContact;
+    if (drop_tvds) k |= kTvds;
+    if (waviness_sign) k |= kWaviness;
+    if (cage_slip != 0.0) k |= kCageSlip;
+    if (pitch_diameter != 1.0) k |= kPitch;
+    if (mass != 1.0) k |= kMass;
+    if (damping != 1.0) k |= kDamping;
+    if (sound_speed != 1.0) k |= kSoundSpeed;
+    if (microphone_distance != 1.0) k |= kMicrophone;
+    if (fe_cells != 1.0) k |= kFeCells;
+    return k;
+  }
 };
 
 }  // namespace bearing::verify

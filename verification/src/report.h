@@ -23,6 +23,7 @@ struct CheckResult {
   std::string detail;      ///< the check's detail, or the error / skip reason
   double wall_time = 0.0;  ///< [s]
   std::vector<Figure> figures;
+  unsigned knobs = 0;  ///< the perturbation knobs the check read (perturbation.h)
 };
 
 /// What one mutation did: the checks that failed under it (that passed without it).
@@ -31,6 +32,7 @@ struct MutationResult {
   std::string description;
   std::vector<std::string> caught_by;
   std::vector<std::string> claimed_not_caught;  ///< checks naming it that still passed
+  int rerun = 0;  ///< checks rerun (those that read a knob it turns; the others cannot change)
   double wall_time = 0.0;
   bool caught() const { return !caught_by.empty(); }
 };

@@ -31,9 +31,10 @@ void title_page(std::ostringstream& h, const Report& report) {
   row("machine", i.machine);
   row("compiler", i.compiler);
   for (const auto& [name, version] : i.libraries) row(name, version);
-  row("FE program", i.fem_program.empty() ? "not built: FE checks skipped"
-                                          : i.fem_program + " (MPI processes per FE run: " +
-                                                std::to_string(i.mpi_processes) + ")");
+  row("FE program",
+      i.fem_program.empty()
+          ? "not built: FE checks skipped"
+          : i.fem_program + " (MPI processes per FE run: " + std::to_string(i.mpi_processes) + ")");
   row("wall time", seconds_text(i.wall_time) + " (" + std::to_string(i.jobs) + " jobs)");
   h << "</tbody></table></div>\n";
 }
@@ -72,18 +73,21 @@ void mutations(std::ostringstream& h, const Report& report) {
 void check_row(std::ostringstream& h, const CheckResult& r) {
   const Check& c = *r.check;
   const char* cls = to_string(r.status);
-  h << "<tr class=\"" << cls << "\" id=\"" << escape_html(c.id) << "\"><td><code>" << escape_html(c.id)
-    << "</code></td><td>" << to_string(c.reference) << "</td><td class=\"num\">"
-    << escape_html(with_unit(r.value, c.unit)) << "</td><td class=\"num\">"
-    << escape_html(with_unit(r.reference, c.unit)) << "</td><td class=\"num\">"
-    << escape_html(deviation_text(r)) << "</td><td class=\"num\">" << escape_html(tolerance_text(c))
-    << "</td><td class=\"verdict\">" << escape_html(r.status == Status::fail ? "FAIL" : r.verdict)
-    << "</td><td class=\"num\">" << seconds_text(r.wall_time) << "</td></tr>\n";
+  h << "<tr class=\"" << cls << "\" id=\"" << escape_html(c.id) << "\"><td><code>"
+    << escape_html(c.id) << "</code></td><td>" << to_string(c.reference)
+    << "</td><td class=\"num\">" << escape_html(with_unit(r.value, c.unit))
+    << "</td><td class=\"num\">" << escape_html(with_unit(r.reference, c.unit))
+    << "</td><td class=\"num\">" << escape_html(deviation_text(r)) << "</td><td class=\"num\">"
+    << escape_html(tolerance_text(c)) << "</td><td class=\"verdict\">"
+    << escape_html(r.status == Status::fail ? "FAIL" : r.verdict) << "</td><td class=\"num\">"
+    << seconds_text(r.wall_time) << "</td></tr>\n";
   h << "<tr class=\"" << cls << "\"><td colspan=\"8\" class=\"why\">" << escape_html(c.compares)
     << ".<br>Tolerance: " << escape_html(c.tolerance.why) << ".";
   if (c.paper)
-    h << "<br>Paper (" << escape_html(c.paper->source) << "): " << escape_html(with_unit(c.paper->value, c.unit))
-      << "." << (c.paper->disagreement.empty() ? "" : " Disagreement: " + escape_html(c.paper->disagreement));
+    h << "<br>Paper (" << escape_html(c.paper->source)
+      << "): " << escape_html(with_unit(c.paper->value, c.unit)) << "."
+      << (c.paper->disagreement.empty() ? ""
+                                        : " Disagreement: " + escape_html(c.paper->disagreement));
   if (!r.detail.empty()) h << "<br>" << escape_html(r.detail);
   h << "</td></tr>\n";
 }
@@ -93,7 +97,8 @@ void family(std::ostringstream& h, const Report& report, const Family& f,
   bool any = false;
   for (const auto& r : report.results) any = any || r.check->family == f.id;
   if (!any) return;
-  h << "<h2 id=\"" << f.id << "\">" << escape_html(f.title) << "</h2>\n<div class=\"scroll\"><table>"
+  h << "<h2 id=\"" << f.id << "\">" << escape_html(f.title)
+    << "</h2>\n<div class=\"scroll\"><table>"
     << "<thead><tr><th>check</th><th>reference</th><th>value</th><th>reference value</th>"
        "<th>deviation</th><th>tolerance</th><th>verdict</th><th>time</th></tr></thead><tbody>\n";
   for (const auto& r : report.results)

@@ -98,10 +98,12 @@ nlohmann::json report_json(const Report& report) {
                     {"caught", m.caught()},
                     {"caught_by", m.caught_by},
                     {"claimed_not_caught", m.claimed_not_caught},
+                    {"checks_rerun", m.rerun},
                     {"wall_time", m.wall_time}});
     }
     j["mutations"] = ms;
-    j["mutation_score"] = {{"caught", mutations_caught(report)}, {"total", report.mutations.size()}};
+    j["mutation_score"] = {{"caught", mutations_caught(report)},
+                           {"total", report.mutations.size()}};
   }
   return j;
 }

@@ -24,8 +24,10 @@ void title_page(std::ostringstream& md, const Report& report) {
   if (!i.planted.empty())
     md << "| **planted mutation** | **" << i.planted << "** (a deliberately broken run) |\n";
   md << "| machine | " << cell(i.machine) << " |\n| compiler | " << cell(i.compiler) << " |\n";
-  for (const auto& [name, version] : i.libraries) md << "| " << name << " | " << cell(version) << " |\n";
-  md << "| FE program | " << (i.fem_program.empty() ? "not built: FE checks skipped" : i.fem_program)
+  for (const auto& [name, version] : i.libraries)
+    md << "| " << name << " | " << cell(version) << " |\n";
+  md << "| FE program | "
+     << (i.fem_program.empty() ? "not built: FE checks skipped" : i.fem_program)
      << " (MPI processes per FE run: " << i.mpi_processes << ") |\n";
   md << "| wall time | " << seconds_text(i.wall_time) << " (" << i.jobs << " jobs) |\n\n";
 }
@@ -36,15 +38,16 @@ void summary(std::ostringstream& md, const Report& report) {
     md << "| " << f.title << " | " << f.passed << " | " << f.failed << " | " << f.skipped << " |\n";
   md << "| **all** | **" << report.passed() << "** | **" << report.failed() << "** | **"
      << report.skipped() << "** |\n\n";
-  md << (report.failed() == 0 ? "**Verdict: every check passed.**\n\n"
-                              : "**Verdict: " + std::to_string(report.failed()) +
-                                    " check(s) FAILED.**\n\n");
+  md << (report.failed() == 0
+             ? "**Verdict: every check passed.**\n\n"
+             : "**Verdict: " + std::to_string(report.failed()) + " check(s) FAILED.**\n\n");
 }
 
 void mutations(std::ostringstream& md, const Report& report) {
   if (!report.has_mutations) return;
   md << "## Mutation score: " << mutations_caught(report) << " / " << report.mutations.size()
-     << "\n\nEach mutation plants one deliberate bug; a check catches it when it passes without the "
+     << "\n\nEach mutation plants one deliberate bug; a check catches it when it passes without "
+        "the "
         "bug and fails with it.\n\n| mutation | bug | caught by | wall time |\n|---|---|---|---|\n";
   for (const auto& m : report.mutations) {
     std::string by;
@@ -69,8 +72,8 @@ void family(std::ostringstream& md, const Report& report, const Family& f) {
     const bool bad = r.status == Status::fail;
     md << "| " << (bad ? "**" + c.id + "**" : c.id) << " | " << to_string(c.reference) << " | "
        << with_unit(r.value, c.unit) << " | " << with_unit(r.reference, c.unit) << " | "
-       << deviation_text(r) << " | " << tolerance_text(c) << " | "
-       << (bad ? "**FAIL**" : r.verdict) << " | " << seconds_text(r.wall_time) << " |\n";
+       << deviation_text(r) << " | " << tolerance_text(c) << " | " << (bad ? "**FAIL**" : r.verdict)
+       << " | " << seconds_text(r.wall_time) << " |\n";
   }
   md << "\n";
   for (const auto& r : report.results) {
@@ -81,7 +84,8 @@ void family(std::ostringstream& md, const Report& report, const Family& f) {
       md << " Paper (" << c.paper->source << "): " << with_unit(c.paper->value, c.unit) << "."
          << (c.paper->disagreement.empty() ? "" : " Disagreement: " + c.paper->disagreement);
     if (!r.detail.empty()) md << " " << r.detail;
-    for (const auto& fig : r.figures) md << "\n  ![" << fig.title << "](figures/" << fig.name << ".png)";
+    for (const auto& fig : r.figures)
+      md << "\n  ![" << fig.title << "](figures/" << fig.name << ".png)";
     md << "\n";
   }
   md << "\n";

@@ -33,6 +33,7 @@ CheckResult run_check(const Check& check, const Context& context) {
   CheckResult r;
   r.check = &check;
   const auto start = std::chrono::steady_clock::now();
+  const KnobRecorder recorder;
   try {
     Outcome o = check.measure(context);
     r.value = o.value;
@@ -58,6 +59,7 @@ CheckResult run_check(const Check& check, const Context& context) {
     r.detail = std::string("error: ") + e.what();
   }
   r.wall_time = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  r.knobs = recorder.knobs();
   return r;
 }
 
@@ -89,15 +91,24 @@ std::vector<MutationResult> run_mutations(
     const std::vector<const Mutation*>& mutations, const std::vector<CheckResult>& baseline,
     const std::function<Context(const Perturbation&)>& context_for, int jobs,
     const std::function<void(const MutationResult&)>& progress) {
-  std::vector<const Check*> passing;
-  for (const auto& r : baseline)
-    if (r.status == Status::pass) passing.push_back(r.check);
   std::vector<MutationResult> out;
   for (const Mutation* m : mutations) {
     const auto start = std::chrono::steady_clock::now();
+    // Only the passing checks that read a knob this mutation turns can change.
+    std::vector<const Check*> affected;
+    std::vector<std::string> untouched_claims;
+    for (const auto& r : baseline) {
+      if (r.status != Status::pass) continue;
+      if (r.knobs & m->perturbation.changed())
+        affected.push_back(r.check);
+      else if (std::find(r.check->catches.begin(), r.check->catches.end(), m->id) !=
+               r.check->catches.end())
+        untouched_claims.push_back(r.check->id);
+    }
     const Context context = context_for(m->perturbation);
-    const auto results = run_checks(passing, context, jobs, {});
-    MutationResult mr{m->id, m->description, {}, {}, 0.0};
+    const auto results = run_checks(affected, context, jobs, {});
+    MutationResult mr{m->id, m->description, {}, untouched_claims};
+    mr.rerun = static_cast<int>(affected.size());
     for (const auto& r : results) {
       const auto& names = r.check->catches;
       const bool claimed = std::find(names.begin(), names.end(), m->id) != names.end();
