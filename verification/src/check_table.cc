@@ -50,6 +50,7 @@ std::vector<Check> all_checks() {
   append(all, acoustics_checks());
   append(all, acoustics_fe_checks());
   append(all, paper_checks());
+  append(all, paper_contact_checks());
   validate(all);
   return all;
 }

@@ -15,6 +15,7 @@ std::vector<Check> dynamics_checks();      ///< checks/dynamics.cc
 std::vector<Check> acoustics_checks();     ///< checks/acoustics.cc: sources vs closed forms, decay
 std::vector<Check> acoustics_fe_checks();  ///< checks/acoustics_fe.cc: FE radiation reference
 std::vector<Check> paper_checks();         ///< checks/papers.cc: examples/README.md's tables
+std::vector<Check> paper_contact_checks();  ///< checks/papers_contact.cc: TVDS, ball approach, SPL
 
 /// The families (Check::family), in report order, with the title the report gives each.
 struct Family {
