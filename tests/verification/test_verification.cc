@@ -1,0 +1,120 @@
+// bearing-verify's own machinery: the check table's rules, the judging of a check, the report's
+// red rows, and the mutation runner's bookkeeping. (The checks themselves are judged by running
+// them: ctest verify.quick and verify.mutate_quick.)
+#include <cmath>
+#include <set>
+
+#include <gtest/gtest.h>
+
+#include "families.h"
+#include "mutations.h"
+#include "report.h"
+#include "runner.h"
+
+namespace bearing::verify {
+namespace {
+
+Check synthetic(std::function<Outcome(const Context&)> measure, Tolerance t) {
+  Check c;
+  c.id = "test.synthetic";
+  c.family = "hertz";
+  c.compares = "value: a number; reference: another";
+  c.unit = "m";
+  c.tolerance = std::move(t);
+  c.catches = {"sound-speed-x1.02"};
+  c.measure = std::move(measure);
+  return c;
+}
+
+Context plain() { return Context(Level::quick, {}, nullptr, BEARING_SOURCE_DIR); }
+
+TEST(CheckTable, IsWellFormedAndCoversEveryFamilyAndMutation) {
+  const auto all = all_checks();  // throws on a duplicate id, unknown mutation, no justification
+  std::set<std::string> families, named;
+  for (const auto& c : all) {
+    families.insert(c.family);
+    named.insert(c.catches.begin(), c.catches.end());
+  }
+  for (const auto& f : kFamilies) EXPECT_TRUE(families.count(f.id)) << "no check in " << f.id;
+  for (const auto& m : mutations()) EXPECT_TRUE(named.count(m.id)) << "no check names " << m.id;
+}
+
+TEST(CheckTable, QuickLevelHasAtLeastSixtyChecks) {
+  const auto all = all_checks();
+  EXPECT_GE(select_checks(all, Level::quick, "").size(), 60u);
+  EXPECT_LE(select_checks(all, Level::quick, "").size(), select_checks(all, Level::full, "").size());
+}
+
+TEST(RunCheck, JudgesRelativeAndAbsoluteTolerances) {
+  const Check rel = synthetic([](const Context&) { return Outcome{1.004, 1.0}; },
+                              relative(0.005, "test"));
+  EXPECT_EQ(run_check(rel, plain()).status, Status::pass);
+  EXPECT_NEAR(run_check(rel, plain()).deviation, 0.004, 1e-12);
+  const Check abs = synthetic([](const Context&) { return Outcome{2.0, 1.0}; },
+                              absolute(0.5, "test"));
+  const CheckResult r = run_check(abs, plain());
+  EXPECT_EQ(r.status, Status::fail);
+  EXPECT_EQ(r.verdict, "fail");
+}
+
+TEST(RunCheck, NaNAndErrorsFailAndSkipsAreSkips) {
+  const Check nan = synthetic([](const Context&) { return Outcome{NAN, 1.0}; }, relative(1, "t"));
+  EXPECT_EQ(run_check(nan, plain()).status, Status::fail);
+  const Check error = synthetic(
+      [](const Context&) -> Outcome { throw std::runtime_error("boom"); }, relative(1, "t"));
+  const CheckResult e = run_check(error, plain());
+  EXPECT_EQ(e.status, Status::fail);
+  EXPECT_NE(e.detail.find("boom"), std::string::npos);
+  const Check skip = synthetic([](const Context&) -> Outcome { throw Skipped("no FE"); },
+                               relative(1, "t"));
+  EXPECT_EQ(run_check(skip, plain()).status, Status::skipped);
+}
+
+TEST(RunCheck, PaperVerdictsSayAgreeOrDisagreeExplained) {
+  Check c = synthetic([](const Context&) { return Outcome{10.0, 10.0}; }, absolute(0.1, "t"));
+  c.paper = PaperValue{10.0, "seed", ""};
+  EXPECT_EQ(run_check(c, plain()).verdict, "agree");
+  c.paper = PaperValue{20.0, "seed", "the paper halves it"};
+  EXPECT_EQ(run_check(c, plain()).verdict, "disagree-explained");
+  c.measure = [](const Context&) { return Outcome{20.0, 10.0}; };  // ours took the paper's value
+  EXPECT_EQ(run_check(c, plain()).verdict, "fail");
+}
+
+TEST(Report, AFailedCheckIsARedRowAndTheBannerSaysSo) {
+  const Check c = synthetic([](const Context&) { return Outcome{2.0, 1.0}; }, relative(0.01, "t"));
+  Report report;
+  report.info.commit = "test";
+  report.results.push_back(run_check(c, plain()));
+  const std::string html = report_html(report, "/nonexistent");
+  EXPECT_NE(html.find("<tr class=\"fail\" id=\"test.synthetic\">"), std::string::npos);
+  EXPECT_NE(html.find("1 of 1 checks FAILED"), std::string::npos);
+  EXPECT_NE(report_markdown(report).find("**FAIL**"), std::string::npos);
+  EXPECT_EQ(report_json(report)["totals"]["failed"], 1);
+}
+
+TEST(Mutations, OnlyChecksThatReadATurnedKnobAreRerunAndCaught) {
+  int runs = 0;
+  // Reads the air: the sound-speed mutation changes it, the mass mutation cannot.
+  const Check c = synthetic(
+      [&runs](const Context& ctx) {
+        ++runs;
+        return Outcome{ctx.air().sound_speed, 343.2};
+      },
+      relative(1e-9, "t"));
+  const std::vector<const Check*> checks = {&c};
+  const auto baseline = run_checks(checks, plain(), 1, {});
+  ASSERT_EQ(baseline[0].status, Status::pass);
+  const std::vector<const Mutation*> ms = {find_mutation("sound-speed-x1.02"),
+                                           find_mutation("mass-x1.05")};
+  const auto results = run_mutations(
+      ms, baseline,
+      [](const Perturbation& p) { return Context(Level::quick, p, nullptr, BEARING_SOURCE_DIR); },
+      1, {});
+  EXPECT_EQ(runs, 2);  // baseline + sound speed; the mass mutation did not rerun it
+  EXPECT_EQ(results[0].caught_by, std::vector<std::string>{"test.synthetic"});
+  EXPECT_FALSE(results[1].caught());
+  EXPECT_EQ(results[1].rerun, 0);
+}
+
+}  // namespace
+}  // namespace bearing::verify
