@@ -14,13 +14,16 @@
 
 namespace bearing::verify::dynamics {
 
+/// Ball 0 at the bottom (θ₀ = −π/2): the ball set is symmetric about the y axis for any Z.
+inline constexpr double kBottom = -1.57079632679489661923;
+
 /// The default case (6308, 2000 rpm, 20 N down, 0.6 kg, 200 N s/m) with `key=value` overrides,
 /// mapped to model inputs without any perturbation: the physics the references describe.
 inline ModelInputs case_inputs(const Context& ctx, const std::vector<std::string>& sets) {
   std::vector<Override> o;
   for (const auto& s : sets) o.push_back(parse_override(s));
   ModelInputs in = model_inputs(ctx.default_case(o));
-  in.cage_phase = 0.0;  // ball 0 on +x: with Z = 8 the set is symmetric about the y axis
+  in.cage_phase = kBottom;
   return in;
 }
 

@@ -30,8 +30,8 @@ namespace cf = closed_form;
 
 constexpr double kShaft = 2000.0 / 60.0;  // the default case's 2000 rpm [Hz]
 
-cf::Kinematics true_kinematics() {
-  return cf::kinematics(preset("6308"), kShaft);
+cf::Kinematics true_kinematics(const std::string& bearing = "6308") {
+  return cf::kinematics(preset(bearing), kShaft);
 }
 
 // The strongest spectral line within ±5 % of `expected`, from a record of whole periods of the
@@ -83,14 +83,14 @@ RunSpec running(double duration = 0.5) {
 
 // ---------------------------------------------------------------------------------------------
 
-Outcome bpfo_line(const Context& ctx) {
-  const cf::Kinematics k = true_kinematics();
-  const Response r = run(ctx, case_inputs(ctx, {}), running());
+Outcome bpfo_line(const Context& ctx, const std::string& bearing) {
+  const cf::Kinematics k = true_kinematics(bearing);
+  const Response r = run(ctx, case_inputs(ctx, {"bearing.preset=" + bearing}), running());
   const Line line = strongest_line(r, "y", k.bpfo);
   return line_outcome(
       line, k.bpfo,
-      spectrum_figure("dynamics-spectrum-bpfo", "6308, 20 N, 2000 rpm: varying compliance",
-                      line.spectrum, 4.5 * k.bpfo,
+      spectrum_figure("dynamics-spectrum-bpfo-" + bearing,
+                      bearing + ", 20 N, 2000 rpm: varying compliance", line.spectrum, 4.5 * k.bpfo,
                       {{k.bpfo, "BPFO"},
                        {2 * k.bpfo, "2xBPFO"},
                        {3 * k.bpfo, "3xBPFO"},
@@ -197,20 +197,7 @@ std::vector<Check> dynamics_spectra_checks() {
       "the record holds whole periods of the expected line, so a line there sits on a bin and "
       "the parabolic vertex of the Hann log-spectrum is unbiased; the other lines (>= 40 bins "
       "away, Hann sidelobes ~k^-3) shift it by < 1e-3 bin; bound 0.01 bin of the 0.4 s record";
-  return {
-      {"dynamics.bpfo-line.6308",
-       "dynamics",
-       ReferenceKind::closed_form,
-       "value: frequency of the strongest line of y near BPFO, perfect 6308, 20 N, 2000 rpm "
-       "(2-DOF, varying compliance); reference: BPFO = Z f_r (1 - D cos a/d_m)/2 of the preset "
-       "geometry",
-       "BPFO line",
-       "Hz",
-       absolute(0.025, line_why),
-       Level::quick,
-       0.3,
-       {"pitch-diameter-x1.01"},
-       bpfo_line},
+  std::vector<Check> checks = {
       {"dynamics.waviness-line.outer.6308",
        "dynamics",
        ReferenceKind::closed_form,
@@ -284,6 +271,23 @@ std::vector<Check> dynamics_spectra_checks() {
        {"cage-speed-1pct-slow", "mass-x1.05"},
        reduction_balls},
   };
+  for (const std::string bearing : {"608", "6304", "6308", "6205", "209"})
+    checks.push_back({"dynamics.bpfo-line." + bearing,
+                      "dynamics",
+                      ReferenceKind::closed_form,
+                      "value: frequency of the strongest line of y near BPFO, perfect " + bearing +
+                          ", 20 N, 2000 rpm "
+                          "(2-DOF, varying compliance); reference: BPFO = Z f_r (1 - D cos "
+                          "a/d_m)/2 of the preset "
+                          "geometry",
+                      "BPFO line",
+                      "Hz",
+                      absolute(0.025, line_why),
+                      Level::quick,
+                      0.3,
+                      {"pitch-diameter-x1.01"},
+                      [bearing](const Context& ctx) { return bpfo_line(ctx, bearing); }});
+  return checks;
 }
 
 }  // namespace bearing::verify
