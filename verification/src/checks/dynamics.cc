@@ -123,6 +123,62 @@ Outcome energy_conservation(const Context& ctx) {
   return o;
 }
 
+// The ball-DOF model (seed 004) at rest without friction or damping: the ring and the balls'
+// radial motion exchange energy through the two contacts of each ball, K_i δ_i^{5/2}/(5/2) +
+// K_o δ_o^{5/2}/(5/2) with δ_o = r_j + Π_o(θ_j), δ_i = x cos θ_j + y sin θ_j − r_j − γ
+// (ball_dofs.h), K per race in closed form, m_b = ρ π D³/6 of the preset's steel.
+
+Outcome ball_energy_conservation(const Context& ctx) {
+  ModelInputs in = case_inputs(
+      ctx, {"model.kind=balls", "operation.speed=0rpm", "operation.load=[0, -300]",
+            "rotor.damping=0", "ball.damping=0", "ball.centrifugal=false", "cage.friction=0"});
+  add_waviness(in, false, 1, kEnergyAmplitude, kEnergyPhase);
+  const double mass = in.mass, dt = 0.5e-6, duration = 0.005;
+  RunSpec s;
+  s.kind = ModelKind::balls;
+  s.dt = dt;
+  s.duration = duration;
+  s.rate = 50000.0;
+  OutputRequest request;
+  request.ball_motion = true;
+  const Response r = ctx.simulate(s.kind, ctx.perturbed(in), solver_settings(s), request).response;
+  const Bearing b = preset("6308");
+  const double Ki = cf::race_constant(b, true), Ko = cf::race_constant(b, false);
+  const double D = b.ball_diameter, mb = b.ball.density * cf::kPi / 6 * D * D * D;
+  const int Z = b.balls;
+  const auto &x = r.channel("x"), &y = r.channel("y"), &vx = r.channel("vx"), &vy = r.channel("vy");
+  double e0 = 0, drift = 0, kinetic = 0, w2 = 0;
+  for (std::size_t i = 0; i < x.size(); ++i) {
+    double ke = 0.5 * mass * (vx[i] * vx[i] + vy[i] * vy[i]), u = 0, kyy = 0;
+    for (int j = 0; j < Z; ++j) {
+      const double th = kBottom + 2 * cf::kPi * j / Z;
+      const double rj = r.channel("r" + std::to_string(j + 1))[i];
+      const double vr = r.channel("vr" + std::to_string(j + 1))[i];
+      const double dout = rj + kEnergyAmplitude * std::sin(th + kEnergyPhase);
+      const double din = x[i] * std::cos(th) + y[i] * std::sin(th) - rj - 0.5 * b.clearance;
+      ke += 0.5 * mb * vr * vr;
+      double kb = 0;
+      if (dout > 0) u += Ko * std::pow(dout, 2.5) / 2.5, kb += 1.5 * Ko * std::sqrt(dout);
+      if (din > 0) u += Ki * std::pow(din, 2.5) / 2.5, kb += 1.5 * Ki * std::sqrt(din);
+      if (din > 0) kyy += 1.5 * Ki * std::sqrt(din);
+      w2 = std::max(w2, kb / mb);
+    }
+    w2 = std::max(w2, kyy / mass);
+    const double e = ke + u - kLoad * y[i];
+    if (i == 0) e0 = e;
+    drift = std::max(drift, std::fabs(e - e0));
+    kinetic = std::max(kinetic, ke);
+  }
+  const double w = std::sqrt(w2);
+  Outcome o;
+  o.value = kinetic > 0 ? drift / kinetic : 1.0;
+  o.reference = 0.0;
+  o.detail = "stiffest mode w = " + fmt(w, 4) +
+             " rad/s, bound w T (w h)^4/60 = " + fmt(w * duration * std::pow(w * dt, 4) / 60, 3) +
+             "; ball mass " + fmt(mb, 6) + " kg";
+  return o;
+}
+
 // ---------------------------------------------------------------------------------------------
 // Static limit: 0.3 s with the case's damping (ζω_n = c/2m = 167 1/s, the transient decays by
 // e^-50) under a waviness harmonic, against the equilibrium of the closed-form contacts.
@@ -302,6 +358,22 @@ std::vector<Check> dynamics_checks() {
     return [study](const Context& ctx) { return observed_order(ctx, study); };
   };
   std::vector<Check> checks = {
+      {"dynamics.energy-conservation.balls.6308",
+       "dynamics",
+       ReferenceKind::conservation,
+       "value: max |E(t) - E(0)| / max kinetic energy of an undamped, frictionless ball-DOF run "
+       "at rest (RK4, dt 0.5 us, 5 ms), E = ring and ball kinetic energies + both contacts' "
+       "Hertz potentials (closed-form K_i, K_o) - F.q; reference: 0",
+       "energy drift",
+       "-",
+       absolute(1.6e-4,
+                "the RK4 bound w T (w h)^4/60 of dynamics.energy-conservation.rk4 with the "
+                "stiffest mode a loaded ball between its contacts, w = 1.25e5 rad/s "
+                "(dt 0.5 us, T 5 ms)"),
+       Level::quick,
+       0.3,
+       {"mass-x1.05", "contact-constant-x1.03", "waviness-sign-swapped"},
+       ball_energy_conservation},
       {"dynamics.energy-conservation.rk4.6308",
        "dynamics",
        ReferenceKind::conservation,
@@ -414,10 +486,11 @@ std::vector<Check> dynamics_checks() {
              "closed-form Hertz K at the closed-form equilibrium",
          "f_d",
          "Hz",
-         relative(1e-5,
-                  "RK4 phase error (w dt)^4/120 = 1e-9; Hertz nonlinearity (A/delta)^2 = 1e-8; "
-                  "parabolic extremum times at >= 50 samples a period err by < 1e-8 s each, over 15 "
-                  "ms: < 1e-6"),
+         relative(
+             1e-5,
+             "RK4 phase error (w dt)^4/120 = 1e-9; Hertz nonlinearity (A/delta)^2 = 1e-8; "
+             "parabolic extremum times at >= 50 samples a period err by < 1e-8 s each, over 15 "
+             "ms: < 1e-6"),
          Level::quick,
          0.2,
          {"mass-x1.05", "contact-constant-x1.03", "damping-x2"},
