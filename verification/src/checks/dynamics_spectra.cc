@@ -251,7 +251,7 @@ std::vector<Check> dynamics_spectra_checks() {
                 "exact"),
        Level::quick,
        0.3,
-       {"contact-constant-x1.03", "pitch-diameter-x1.01"},
+       {"contact-constant-x1.03", "contact-exponent+0.05"},
        mean_deflection},
       {"dynamics.waviness-line.outer.6308",
        "dynamics",
