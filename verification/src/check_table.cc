@@ -47,6 +47,7 @@ std::vector<Check> all_checks() {
   append(all, hertz_fe_checks());
   append(all, static_load_checks());
   append(all, dynamics_checks());
+  append(all, dynamics_spectra_checks());
   append(all, acoustics_checks());
   append(all, acoustics_fe_checks());
   append(all, paper_checks());

@@ -11,7 +11,8 @@ namespace bearing::verify {
 std::vector<Check> hertz_checks();         ///< checks/hertz.cc: Hertz methods, closed forms
 std::vector<Check> hertz_fe_checks();      ///< checks/hertz_fe.cc: FE contact vs Hertz
 std::vector<Check> static_load_checks();   ///< checks/static_load.cc: kinematics, load distribution
-std::vector<Check> dynamics_checks();      ///< checks/dynamics.cc
+std::vector<Check> dynamics_checks();      ///< checks/dynamics.cc: conservation, limits, orders
+std::vector<Check> dynamics_spectra_checks();  ///< checks/dynamics_spectra.cc: lines, reductions
 std::vector<Check> acoustics_checks();     ///< checks/acoustics.cc: sources vs closed forms, decay
 std::vector<Check> acoustics_fe_checks();  ///< checks/acoustics_fe.cc: FE radiation reference
 std::vector<Check> paper_checks();         ///< checks/papers.cc: examples/README.md's tables
