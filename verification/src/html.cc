@@ -82,7 +82,7 @@ tr.fail td.verdict{color:#a40e26;font-weight:bold}td.why{font-size:.85em;color:#
 .ok{background:#dafbe1;color:#116329}.bad{background:#ffd7d5;color:#a40e26}
 .planted{background:#fff5cc;color:#7d4e00}
 figure{margin:1em 0;max-width:40em}figure img{max-width:100%;height:auto;border:1px solid #eee}
-figcaption{font-size:.85em;color:#555}code{font-size:.9em}.note{color:#7d4e00}
+figcaption{font-size:.85em;color:#555}code{font-size:.9em;white-space:nowrap}.note{color:#7d4e00}
 )";
 
 std::string html_head(const std::string& title) {
