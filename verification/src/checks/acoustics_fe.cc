@@ -131,8 +131,9 @@ Figure level_figure(const FeSource& s, const std::vector<FePoint>& fe,
   fig.y_label = "SPL of a 1 m/s tone [dB re 20 µPa]";
   fig.log_x = true;
   for (const char* mic : kMicrophones) {
-    Series f{std::string("FE at ") + mic, {}, {}, "marker"};
-    Series l{std::string("lumped at ") + mic, {}, {}, "line"};
+    const std::string at = std::string(mic) == "0.01,30" ? "10 mm, 30°" : "1 m, 60°";
+    Series f{"FE at " + at, {}, {}, "marker"};
+    Series l{"lumped at " + at, {}, {}, "line"};
     for (std::size_t i = 0; i < fe.size(); ++i) {
       const std::string here = fmt(fe[i].r) + "," + fmt(fe[i].angle_deg);
       if (here != mic) continue;
