@@ -102,10 +102,11 @@ Check exact_source(const std::string& name, bool cylinder, int order, double rad
 std::vector<Check> exact_sources() {
   const Tolerance quadrature = absolute(
       1e-9,
-      "the reference's Hankel functions are quadratures to 1e-12 relative (GSL QAG/QAGIU); J_n at "
-      "kr ≤ 860 cancels an integrand of size 1 down to ≥ 0.03 (×30) and four of them enter the "
-      "ratio: ≤ 1.2e-10, rounded up to 1e-9; GSL's Bessel functions (the toolkit's) are good to "
-      "a few 1e-16");
+      "the reference's Hankel values are quadratures to 1e-12 (GSL QAG, absolute on [0, π]; "
+      "QAGIU, relative on Schläfli's tail): ≤ 3e-13/|H_n| ≤ 1.2e-11 relative at kr ≤ 863 "
+      "(|H_n| ≥ 0.027), ≤ 5e-11 over the ratio's four values; 1e-9 leaves a factor 20 because "
+      "GSL's error estimate is an estimate, not a guarantee; GSL's Bessel functions (the "
+      "toolkit's) are good to a few 1e-16");
   const Tolerance rounding =
       absolute(1e-12,
                "both sides are closed forms in double precision (GSL's j_n, y_n against e^{−ix} "
@@ -268,7 +269,7 @@ Check time_domain_tone() {
   c.unit = "Pa";
   c.tolerance = relative(1e-9,
                          "the DFT of whole periods is exact up to FFT round-off (~1e-15 log N); "
-                         "the reference's quadrature is good to ~1e-10 (acoustics.exact.*)");
+                         "the reference's field is good to 1e-9 (the bound of acoustics.exact.*)");
   c.level = Level::quick;
   c.cost = 0.05;
   c.catches = {"sound-speed-x1.02", "microphone-distance-x1.05"};

@@ -132,11 +132,12 @@ Check ring_decay() {
       "√(2/(πkr))/|H₁'(ka)| (the fitted exponent is in the detail)";
   c.quantity = "max |L − L_∞|";
   c.unit = "dB";
-  c.tolerance =
-      absolute(bound,
-               "|H₁(x)|² = (2/(πx))(1 + 3/(8x²) − 45/(128x⁴) + …) (Nicholson's asymptotic series, "
-               "A&S 9.2.28): |L − L_∞| ≤ 10 log₁₀(1 + 3/(8x²)) = " +
-                   fmt(bound) + " dB at x = kr_min = " + fmt(x_min));
+  c.tolerance = absolute(
+      bound,
+      "|H₁(x)|² = (2/(πx))(1 + 3/(8x²) − 45/(128x⁴) + …) (Nicholson's asymptotic series, "
+      "A&S 9.2.28; for ν > 1/2 the remainder is smaller than the first neglected term, Watson "
+      "§13.75): |L − L_∞| ≤ 10 log₁₀(1 + 3/(8x²)) = " +
+          fmt(bound) + " dB at x = kr_min = " + fmt(x_min));
   c.level = Level::quick;
   c.cost = 0.05;
   c.catches = {"sound-speed-x1.02", "microphone-distance-x1.05"};
