@@ -49,6 +49,8 @@ std::vector<Check> all_checks() {
   append(all, dynamics_checks());
   append(all, dynamics_spectra_checks());
   append(all, acoustics_checks());
+  append(all, acoustics_paper_checks());
+  append(all, acoustics_decay_checks());
   append(all, acoustics_fe_checks());
   append(all, paper_checks());
   append(all, paper_contact_checks());
