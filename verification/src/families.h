@@ -10,6 +10,7 @@ namespace bearing::verify {
 
 std::vector<Check> hertz_checks();         ///< checks/hertz.cc: Hertz methods, closed forms
 std::vector<Check> hertz_fe_checks();      ///< checks/hertz_fe.cc: FE contact vs Hertz
+std::vector<Check> hertz_groove_checks();  ///< checks/hertz_groove.cc: FE groove vs Hertz
 std::vector<Check> static_load_checks();   ///< checks/static_load.cc: kinematics, load distribution
 std::vector<Check> dynamics_checks();      ///< checks/dynamics.cc
 std::vector<Check> acoustics_checks();     ///< checks/acoustics.cc: sources vs closed forms, decay
