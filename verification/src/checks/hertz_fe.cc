@@ -110,7 +110,27 @@ Check fe_k(Race race, const Mesh& m) {
   c.measure = [race, m](const Context& ctx) {
     const nlohmann::json j = block_run(ctx, race, m);
     const RaceContact rc = ctx.race_contact(ctx.bearing("6308"), race, HertzMethod::exact);
-    return Outcome{rc.K, j["fe"]["K"].get<double>(), run_detail(j), {}};
+    Outcome o{rc.K, j["fe"]["K"].get<double>(), run_detail(j), {}};
+    Figure f;
+    f.name = std::string("hertz-fe-force-approach-6308-") + race_name(race) +
+             (m.level == Level::quick ? "-coarse" : "-accurate");
+    f.title = std::string("6308 ") + race_name(race) + " race: FE block against the lumped law, " +
+              m.label;
+    f.x_label = "approach delta [m]";
+    f.y_label = "force F [N]";
+    f.log_x = f.log_y = true;
+    Series fe{"FE Hertz-reduced block", {}, {}, "marker"};
+    Series lumped{"lumped exact Hertz K delta^n", {}, {}, "line"};
+    for (const auto& s : j["steps"]) {
+      const double d = s["approach"].get<double>();
+      fe.x.push_back(d);
+      fe.y.push_back(s["force"].get<double>());
+      lumped.x.push_back(d);
+      lumped.y.push_back(rc.K * std::pow(d, rc.exponent));
+    }
+    f.series = {fe, lumped};
+    o.figures.push_back(f);
+    return o;
   };
   return c;
 }

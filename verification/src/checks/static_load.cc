@@ -116,7 +116,8 @@ Check stribeck(const std::string& name) {
   Check c = row(
       "static-load.stribeck." + name, ReferenceKind::closed_form,
       "value: Q_max Z / F_r of the lumped static solution of the " + name +
-          " at zero clearance (F_r = 500 N toward ball 0); reference: Z / sum_j cos^2.5(psi_j) "
+          " at zero clearance (F_r = 500 N toward ball 0; the ratio depends on Z only: 608 and "
+          "6304 have Z = 7, 6308 Z = 8, 6205 and 209 Z = 9); reference: Z / sum_j cos^2.5(psi_j) "
           "over the loaded balls, the exact finite-Z form of Stribeck's constant (4.37 = "
           "1/J_r(0.5) is its Z -> infinity limit)",
       "Q_max Z / F_r", "-",
@@ -355,7 +356,7 @@ Check sjovall(const std::string& name) {
 std::vector<Check> static_load_checks() {
   std::vector<Check> all;
   for (const auto& name : preset_names()) all.push_back(kinematics(name));
-  for (const auto& name : preset_names()) all.push_back(stribeck(name));
+  for (const auto& name : {"608", "6308", "6205"}) all.push_back(stribeck(name));
   for (const auto& name : preset_names()) all.push_back(deflection(name));
   for (const auto& name : preset_names()) all.push_back(load_zone(name));
   for (const auto& name : {"6304", "6308", "209"}) all.push_back(sjovall(name));
