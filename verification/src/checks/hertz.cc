@@ -142,10 +142,10 @@ Check semi_axes(const std::string& name) {
 
 // Hamrock–Brewe: κ ≈ 1.0339 (R_y/R_x)^0.636, E ≈ 1.0003 + 0.5968 R_x/R_y,
 // K ≈ 1.5277 + 0.6023 ln(R_y/R_x). K_contact ∝ κ E^{1/2} K(e)^{-3/2}, so its relative error is at
-// most |Δκ/κ| + ½|ΔE/E| + 1.5|ΔK/K|. For these grooves (F = 0.87–0.94, R_y/R_x = 15–32) the fits
-// are within 3.0 % (κ), 0.07 % (E), 0.6 % (K(e)) of exact (their accuracy over the bearing range,
-// tests/lumped/test_contact.cc, against an exact solution; no published figure was found), so
-// |ΔK_contact/K| ≤ 3.0 + 0.04 + 0.9 = 3.9 %.
+// most |Δκ/κ| + ½|ΔE/E| + 1.5|ΔK/K|. For the presets' grooves (F = 0.887–0.958, R_y/R_x = 17–46)
+// the fits are within 3.4 % (κ, for R_y/R_x ≤ 50), 0.07 % (E) and 0.6 % (K(e)) of exact — their
+// accuracy over the bearing range as tests/lumped/test_contact.cc states it (no published figure
+// was found) — so |ΔK_contact/K| ≤ 3.4 + 0.04 + 0.9 = 4.3 %.
 Check hamrock_brewe(const std::string& name) {
   Check c;
   c.id = "hertz.hamrock-brewe-k." + name;
@@ -156,10 +156,11 @@ Check hamrock_brewe(const std::string& name) {
   c.quantity = "K";
   c.unit = "N/m^1.5";
   c.tolerance = relative(
-      0.039,
-      "Hamrock-Brewe's fits over the bearing range (R_y/R_x = 15-32) are within 3.0 % (kappa), "
-      "0.07 % (E(e)) and 0.6 % (K(e)) of exact; K ~ kappa E^1/2 K(e)^-3/2 bounds the error of K "
-      "by 3.0 + 0.04 + 0.9 = 3.9 %");
+      0.043,
+      "Hamrock-Brewe's fits for R_y/R_x <= 50 (the presets: 17-46) are within 3.4 % (kappa), "
+      "0.07 % (E(e)) and 0.6 % (K(e)) of exact (tests/lumped/test_contact.cc; no published "
+      "figure found); K ~ kappa E^1/2 K(e)^-3/2 bounds the error of K by 3.4 + 0.04 + 0.9 = "
+      "4.3 %");
   c.catches = {"contact-constant-x1.03"};
   c.measure = [name](const Context& ctx) {
     Outcome o{0, 1, "", {}};
