@@ -45,6 +45,7 @@ std::vector<Check> all_checks() {
   std::vector<Check> all;
   append(all, hertz_checks());
   append(all, hertz_fe_checks());
+  append(all, hertz_fe_convergence_checks());
   append(all, hertz_groove_checks());
   append(all, static_load_checks());
   append(all, dynamics_checks());

@@ -8,11 +8,12 @@
 
 namespace bearing::verify {
 
-std::vector<Check> hertz_checks();         ///< checks/hertz.cc: Hertz methods, closed forms
-std::vector<Check> hertz_fe_checks();      ///< checks/hertz_fe.cc: FE contact vs Hertz
-std::vector<Check> hertz_groove_checks();  ///< checks/hertz_groove.cc: FE groove vs Hertz
-std::vector<Check> static_load_checks();   ///< checks/static_load.cc: kinematics, load distribution
-std::vector<Check> dynamics_checks();      ///< checks/dynamics.cc: conservation, limits, orders
+std::vector<Check> hertz_checks();                 ///< checks/hertz.cc: Hertz methods, closed forms
+std::vector<Check> hertz_fe_checks();              ///< checks/hertz_fe.cc: FE contact vs Hertz
+std::vector<Check> hertz_fe_convergence_checks();  ///< checks/hertz_fe_convergence.cc (full)
+std::vector<Check> hertz_groove_checks();          ///< checks/hertz_groove.cc: FE groove vs Hertz
+std::vector<Check> static_load_checks();  ///< checks/static_load.cc: kinematics, load distribution
+std::vector<Check> dynamics_checks();     ///< checks/dynamics.cc: conservation, limits, orders
 std::vector<Check> dynamics_spectra_checks();  ///< checks/dynamics_spectra.cc: lines, reductions
 std::vector<Check> acoustics_checks();         ///< checks/acoustics.cc: sources vs closed forms
 std::vector<Check> acoustics_paper_checks();   ///< checks/acoustics_paper.cc: seed 000's forms
