@@ -16,6 +16,7 @@
 #include "acoustics_shared.h"
 #include "bearing/acoustics/microphones.h"
 #include "bearing/constants.h"
+#include "check_util.h"
 
 namespace bearing::verify {
 
@@ -34,16 +35,6 @@ double distance(int i) {
 
 double wavenumber() {
   return 2 * pi * kFrequency / ref::kSoundSpeed;
-}
-
-// Least-squares slope of y against x.
-double slope(const std::vector<double>& x, const std::vector<double>& y) {
-  const double n = static_cast<double>(x.size());
-  double sx = 0, sy = 0, sxx = 0, sxy = 0;
-  for (std::size_t i = 0; i < x.size(); ++i) {
-    sx += x[i], sy += y[i], sxx += x[i] * x[i], sxy += x[i] * y[i];
-  }
-  return (n * sxy - sx * sy) / (n * sxx - sx * sx);
 }
 
 Figure level_figure(const std::string& name, const std::string& title, const std::string& label,
@@ -102,7 +93,7 @@ Check ball_decay() {
     for (double di : d)  // the far field of the reference: |h₁(x)| → 1/x
       law.push_back(tone_level(ref::kImpedance / (di * wavenumber()) /
                                std::abs(ref::spherical_hankel_derivative(1, ka))));
-    Outcome o{slope(log_d, log_p),
+    Outcome o{least_squares_slope(log_d, log_p),
               -1.0,
               "kd = " + fmt(wavenumber() * d.front()) + " … " + fmt(wavenumber() * d.back()),
               {}};
@@ -159,7 +150,7 @@ Check ring_decay() {
     }
     Outcome o{worst,
               0.0,
-              "fitted exponent of |p| ∝ r^n: n = " + fmt(slope(log_r, log_p)) +
+              "fitted exponent of |p| ∝ r^n: n = " + fmt(least_squares_slope(log_r, log_p)) +
                   " (far field −1/2); kr = " + fmt(k * r.front()) + " … " + fmt(k * r.back()),
               {}};
     o.figures.push_back(level_figure("acoustics-decay-ring",

@@ -10,6 +10,7 @@
 #include "../context.h"
 #include "../families.h"
 #include "bearing/presets.h"
+#include "check_util.h"
 #include "hertz_reference.h"
 
 namespace bearing::verify {
@@ -17,16 +18,6 @@ namespace bearing::verify {
 namespace {
 
 using reference::exact_hertz;
-
-std::string fmt(const char* format, double a, double b = 0, double c = 0, double d = 0) {
-  char s[256];
-  std::snprintf(s, sizeof s, format, a, b, c, d);
-  return s;
-}
-
-const char* race_name(Race r) {
-  return r == Race::inner ? "inner" : "outer";
-}
 
 // The closed forms are exact to the root tolerances: κ to 1e-14 (reference) and 1e-15 (toolkit),
 // GSL's elliptic integrals to ~1e-15; K ∝ κ E^{1/2} K(e)^{-3/2} carries these at O(1) gain.
@@ -37,14 +28,14 @@ const char* kRoundOff =
 
 Check exact_k(const std::string& name, Race race) {
   Check c;
-  c.id = "hertz.exact-k." + name + "." + race_name(race);
+  c.id = "hertz.exact-k." + name + "." + to_string(race);
   c.family = "hertz";
   c.reference = ReferenceKind::closed_form;
   c.compares = std::string("value: the lumped exact-Hertz load-deflection constant K of the ") +
-               race_name(race) + " race of the " + name +
+               to_string(race) + " race of the " + name +
                "; reference: Hertz's K from the check's own curvatures, Brent root of F(kappa) "
                "and GSL elliptic integrals (Hamrock's form of the equations)";
-  c.quantity = std::string("K_") + race_name(race);
+  c.quantity = std::string("K_") + to_string(race);
   c.unit = "N/m^1.5";
   c.tolerance = relative(1e-9, kRoundOff);
   c.catches = {"contact-constant-x1.03", "pitch-diameter-x1.01"};
@@ -76,10 +67,10 @@ Figure k_per_bearing(const Context& ctx) {
                  {HertzMethod::hamrock_brewe, "toolkit Hamrock-Brewe"},
                  {HertzMethod::harris_table, "toolkit Harris table"}};
   for (Race race : {Race::inner, Race::outer}) {
-    Series ref{std::string("reference exact, ") + race_name(race), {}, {}, "marker"};
+    Series ref{std::string("reference exact, ") + to_string(race), {}, {}, "marker"};
     std::vector<Series> tk;
     for (const auto& m : methods)
-      tk.push_back({std::string(m.label) + ", " + race_name(race), {}, {}, "marker"});
+      tk.push_back({std::string(m.label) + ", " + to_string(race), {}, {}, "marker"});
     for (const auto& name : preset_names()) {
       const double D = preset(name).ball_diameter;
       ref.x.push_back(D);
@@ -129,10 +120,10 @@ Check semi_axes(const std::string& name) {
           worst_dev = dev;
           worst.value = v[i];
           worst.reference = r[i];
-          worst.detail = std::string(i == 0 ? "a" : "b") + ", " + race_name(race) + " race";
+          worst.detail = std::string(i == 0 ? "a" : "b") + ", " + to_string(race) + " race";
         }
       }
-      all += std::string("; ") + race_name(race) + fmt(" a = %.6g m, b = %.6g m", v[0], v[1]);
+      all += std::string("; ") + to_string(race) + fmt(" a = %.6g m, b = %.6g m", v[0], v[1]);
     }
     worst.detail += " is the farthest" + all;
     return worst;
@@ -169,7 +160,7 @@ Check hamrock_brewe(const std::string& name) {
       const RaceContact rc = ctx.race_contact(ctx.bearing(name), race, HertzMethod::hamrock_brewe);
       const auto ref = exact_hertz(preset(name), race);
       const double dev = std::abs(rc.K / ref.K - 1);
-      o.detail += std::string(race_name(race)) + fmt(": K %+.3f %%, kappa %+.3f %%; ",
+      o.detail += std::string(to_string(race)) + fmt(": K %+.3f %%, kappa %+.3f %%; ",
                                                      100 * (rc.K / ref.K - 1),
                                                      100 * (rc.shape.ellipticity / ref.kappa - 1));
       if (dev > worst) {
@@ -208,7 +199,7 @@ Check harris_table(const std::string& name) {
       const RaceContact rc = ctx.race_contact(ctx.bearing(name), race, HertzMethod::harris_table);
       const auto ref = exact_hertz(preset(name), race);
       const double dev = std::abs(rc.K / ref.K - 1);
-      o.detail += std::string(race_name(race)) +
+      o.detail += std::string(to_string(race)) +
                   fmt(": F = %.5f, K %+.4f %%; ", ref.f_rho, 100 * (rc.K / ref.K - 1));
       if (dev > worst) {
         worst = dev;

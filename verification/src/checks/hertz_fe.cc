@@ -9,20 +9,11 @@
 
 #include "../context.h"
 #include "../families.h"
+#include "check_util.h"
 
 namespace bearing::verify {
 
 namespace {
-
-const char* race_name(Race r) {
-  return r == Race::inner ? "inner" : "outer";
-}
-
-std::string fmt(const char* format, double a, double b = 0, double c = 0, double d = 0) {
-  char s[256];
-  std::snprintf(s, sizeof s, format, a, b, c, d);
-  return s;
-}
 
 // One resolution of the convergence table of fem/README.md (6308, loads 2–20 N, 6 steps) with
 // its measured errors (FE/Hertz − 1), which set the tolerances.
@@ -67,7 +58,7 @@ const Mesh kStandard{"level 2 (N_b 8, m 6)",
 
 nlohmann::json block_run(const Context& ctx, Race race, const Mesh& m) {
   return ctx.fem(
-      {"contact", ctx.source_dir() + "/examples/seed003_6308.toml", "--race", race_name(race),
+      {"contact", ctx.source_dir() + "/examples/seed003_6308.toml", "--race", to_string(race),
        "--geometry", "hertz", "--cells", std::to_string(ctx.fe_cells(m.cells)), "--grading",
        std::to_string(m.grading), "--no-vtu", "--quiet"},
       "contact.json");
@@ -85,7 +76,7 @@ std::string level_suffix(const Mesh& m) {
 
 Check base(const std::string& what, Race race, const Mesh& m) {
   Check c;
-  c.id = "hertz.fe-" + what + ".6308." + race_name(race) + level_suffix(m);
+  c.id = "hertz.fe-" + what + ".6308." + to_string(race) + level_suffix(m);
   c.family = "hertz";
   c.reference = ReferenceKind::fe;
   c.level = m.level;
@@ -96,7 +87,7 @@ Check base(const std::string& what, Race race, const Mesh& m) {
 Check fe_k(Race race, const Mesh& m) {
   const int r = race == Race::inner ? 0 : 1;
   Check c = base("k", race, m);
-  c.compares = std::string("value: the lumped exact-Hertz K of the 6308 ") + race_name(race) +
+  c.compares = std::string("value: the lumped exact-Hertz K of the 6308 ") + to_string(race) +
                " race; reference: the FE Hertz-reduced block's K (least squares of ln F on ln "
                "delta, n fixed at 1.5), " +
                m.label + ", loads 2-20 N";
@@ -112,9 +103,9 @@ Check fe_k(Race race, const Mesh& m) {
     const RaceContact rc = ctx.race_contact(ctx.bearing("6308"), race, HertzMethod::exact);
     Outcome o{rc.K, j["fe"]["K"].get<double>(), run_detail(j), {}};
     Figure f;
-    f.name = std::string("hertz-fe-force-approach-6308-") + race_name(race) +
+    f.name = std::string("hertz-fe-force-approach-6308-") + to_string(race) +
              (m.level == Level::quick ? "-coarse" : "-accurate");
-    f.title = std::string("6308 ") + race_name(race) + " race: FE block against the lumped law, " +
+    f.title = std::string("6308 ") + to_string(race) + " race: FE block against the lumped law, " +
               m.label;
     f.x_label = "approach delta [m]";
     f.y_label = "force F [N]";
@@ -139,7 +130,7 @@ Check fe_exponent(Race race, const Mesh& m) {
   const int r = race == Race::inner ? 0 : 1;
   Check c = base("exponent", race, m);
   c.compares = std::string("value: the lumped exact-Hertz exponent of the 6308 ") +
-               race_name(race) +
+               to_string(race) +
                " race; reference: the FE block's exponent (free least-squares fit of ln F on ln "
                "delta), " +
                m.label;
@@ -166,7 +157,7 @@ Check fe_semi_minor(Race race, const Mesh& m) {
   const int r = race == Race::inner ? 0 : 1;
   Check c = base("semi-minor", race, m);
   c.compares = std::string("value: the lumped exact-Hertz minor semi-axis b of the 6308 ") +
-               race_name(race) +
+               to_string(race) +
                " race at the FE's largest force; reference: the FE block's b from the pressure's "
                "second moment (b^2/5 for Hertz's ellipsoid), " +
                m.label;

@@ -12,6 +12,7 @@
 
 #include "../context.h"
 #include "../families.h"
+#include "check_util.h"
 
 namespace bearing::verify {
 
@@ -23,23 +24,6 @@ struct Level3 {
 };
 // Every cell shrinks ~1.4× per level (fem/README.md, "Convergence").
 constexpr Level3 kLevels[] = {{4, 3}, {6, 4}, {8, 6}, {12, 8}};
-
-std::string fmt(const char* format, double a, double b = 0, double c = 0) {
-  char s[200];
-  std::snprintf(s, sizeof s, format, a, b, c);
-  return s;
-}
-
-// Least-squares slope of ln y on ln x.
-double slope(const std::vector<double>& x, const std::vector<double>& y) {
-  double sx = 0, sy = 0, sxx = 0, sxy = 0;
-  const double n = static_cast<double>(x.size());
-  for (std::size_t i = 0; i < x.size(); ++i) {
-    const double lx = std::log(x[i]), ly = std::log(y[i]);
-    sx += lx, sy += ly, sxx += lx * lx, sxy += lx * ly;
-  }
-  return (n * sxy - sx * sy) / (n * sxx - sx * sx);
-}
 
 Check order_check(Race race) {
   const std::string name = to_string(race);
@@ -94,7 +78,10 @@ Check order_check(Race race) {
     f.series = {{"minor semi-axis b", inverse_cells, b_error, "line+marker"},
                 {"K (n = 1.5 fit)", inverse_cells, k_error, "line+marker"},
                 ref};
-    return Outcome{slope(inverse_cells, b_error), 2.0, detail, {f}};
+    std::vector<double> lx, ly;
+    for (std::size_t i = 0; i < b_error.size(); ++i)
+      lx.push_back(std::log(inverse_cells[i])), ly.push_back(std::log(b_error[i]));
+    return Outcome{least_squares_slope(lx, ly), 2.0, detail, {f}};
   };
   return c;
 }

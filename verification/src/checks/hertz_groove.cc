@@ -27,17 +27,11 @@
 
 #include "../context.h"
 #include "../families.h"
+#include "check_util.h"
 
 namespace bearing::verify {
 
 namespace {
-
-std::string fmt(const char* format, double a, double b = 0, double c = 0, double d = 0,
-                double e = 0) {
-  char s[320];
-  std::snprintf(s, sizeof s, format, a, b, c, d, e);
-  return s;
-}
 
 struct GrooveLoad {
   const char* tag;  ///< "1.5gpa"

@@ -17,6 +17,7 @@
 #include "../context.h"
 #include "../families.h"
 #include "bearing/presets.h"
+#include "check_util.h"
 #include "hertz_reference.h"
 
 namespace bearing::verify {
@@ -25,13 +26,6 @@ namespace {
 
 constexpr double kRadialLoad = 500.0;  // F_r of every load-distribution check [N]
 constexpr double kShaftRpm = 2000.0;   // inner-ring speed of the kinematics checks
-
-std::string fmt(const char* format, double a, double b = 0, double c = 0, double d = 0,
-                double e = 0) {
-  char s[320];
-  std::snprintf(s, sizeof s, format, a, b, c, d, e);
-  return s;
-}
 
 Check row(std::string id, ReferenceKind kind, std::string compares, std::string quantity,
           std::string unit, Tolerance tol, std::vector<std::string> catches) {
