@@ -46,7 +46,9 @@ Check order_check(Race race) {
                          "table lie between 1.90 and 2.00");
   c.level = Level::full;
   c.cost = 240;
-  c.catches = {"pitch-diameter-x1.01", "fe-mesh-halved"};
+  // Not fe-mesh-halved: at half the resolution (N_b 2, 3, 4, 6) the order is still 1.88-1.89
+  // (measured); an order does not see the resolution, the level-0/2 rows of hertz_fe.cc do.
+  c.catches = {"pitch-diameter-x1.01"};
   c.measure = [race, name](const Context& ctx) {
     const RaceContact rc = ctx.race_contact(ctx.bearing("6308"), race, HertzMethod::exact);
     std::vector<double> inverse_cells, b_error, k_error;
