@@ -35,6 +35,12 @@ std::string deviation_text(const CheckResult& r) {
   return buf;
 }
 
+std::string level_text(const RunInfo& info) {
+  if (info.only.empty()) return info.level;
+  return info.level + (info.command == "mutate" ? " (mutations matching " : " (checks matching ") +
+         info.only + ")";
+}
+
 std::string seconds_text(double s) {
   char buf[32];
   if (s < 1.0)

@@ -27,7 +27,7 @@ void title_page(std::ostringstream& h, const Report& report) {
   };
   row("commit", i.commit);
   row("date (UTC)", i.date);
-  row("level", i.level + (i.only.empty() ? "" : " (only " + i.only + ")"));
+  row("level", level_text(i));
   row("machine", i.machine);
   row("compiler", i.compiler);
   for (const auto& [name, version] : i.libraries) row(name, version);

@@ -20,7 +20,7 @@ void title_page(std::ostringstream& md, const Report& report) {
   md << "# bearing-verify: verification report\n\n";
   md << "| | |\n|---|---|\n";
   md << "| commit | " << cell(i.commit) << " |\n| date (UTC) | " << i.date << " |\n";
-  md << "| level | " << i.level << (i.only.empty() ? "" : " (only " + cell(i.only) + ")") << " |\n";
+  md << "| level | " << cell(level_text(i)) << " |\n";
   if (!i.planted.empty())
     md << "| **planted mutation** | **" << i.planted << "** (a deliberately broken run) |\n";
   md << "| machine | " << cell(i.machine) << " |\n| compiler | " << cell(i.compiler) << " |\n";
