@@ -26,7 +26,9 @@ Check synthetic(std::function<Outcome(const Context&)> measure, Tolerance t) {
   return c;
 }
 
-Context plain() { return Context(Level::quick, {}, nullptr, BEARING_SOURCE_DIR); }
+Context plain() {
+  return Context(Level::quick, {}, nullptr, BEARING_SOURCE_DIR);
+}
 
 TEST(CheckTable, IsWellFormedAndCoversEveryFamilyAndMutation) {
   const auto all = all_checks();  // throws on a duplicate id, unknown mutation, no justification
@@ -42,16 +44,23 @@ TEST(CheckTable, IsWellFormedAndCoversEveryFamilyAndMutation) {
 TEST(CheckTable, QuickLevelHasAtLeastSixtyChecks) {
   const auto all = all_checks();
   EXPECT_GE(select_checks(all, Level::quick, "").size(), 60u);
-  EXPECT_LE(select_checks(all, Level::quick, "").size(), select_checks(all, Level::full, "").size());
+  EXPECT_LE(select_checks(all, Level::quick, "").size(),
+            select_checks(all, Level::full, "").size());
 }
 
 TEST(RunCheck, JudgesRelativeAndAbsoluteTolerances) {
-  const Check rel = synthetic([](const Context&) { return Outcome{1.004, 1.0}; },
-                              relative(0.005, "test"));
+  const Check rel = synthetic(
+      [](const Context&) {
+        return Outcome{1.004, 1.0};
+      },
+      relative(0.005, "test"));
   EXPECT_EQ(run_check(rel, plain()).status, Status::pass);
   EXPECT_NEAR(run_check(rel, plain()).deviation, 0.004, 1e-12);
-  const Check abs = synthetic([](const Context&) { return Outcome{2.0, 1.0}; },
-                              absolute(0.5, "test"));
+  const Check abs = synthetic(
+      [](const Context&) {
+        return Outcome{2.0, 1.0};
+      },
+      absolute(0.5, "test"));
   const CheckResult r = run_check(abs, plain());
   EXPECT_EQ(r.status, Status::fail);
   EXPECT_EQ(r.verdict, "fail");
@@ -60,13 +69,13 @@ TEST(RunCheck, JudgesRelativeAndAbsoluteTolerances) {
 TEST(RunCheck, NaNAndErrorsFailAndSkipsAreSkips) {
   const Check nan = synthetic([](const Context&) { return Outcome{NAN, 1.0}; }, relative(1, "t"));
   EXPECT_EQ(run_check(nan, plain()).status, Status::fail);
-  const Check error = synthetic(
-      [](const Context&) -> Outcome { throw std::runtime_error("boom"); }, relative(1, "t"));
+  const Check error = synthetic([](const Context&) -> Outcome { throw std::runtime_error("boom"); },
+                                relative(1, "t"));
   const CheckResult e = run_check(error, plain());
   EXPECT_EQ(e.status, Status::fail);
   EXPECT_NE(e.detail.find("boom"), std::string::npos);
-  const Check skip = synthetic([](const Context&) -> Outcome { throw Skipped("no FE"); },
-                               relative(1, "t"));
+  const Check skip =
+      synthetic([](const Context&) -> Outcome { throw Skipped("no FE"); }, relative(1, "t"));
   EXPECT_EQ(run_check(skip, plain()).status, Status::skipped);
 }
 
@@ -87,8 +96,9 @@ TEST(Report, AFailedCheckIsARedRowAndTheBannerSaysSo) {
   report.results.push_back(run_check(c, plain()));
   const std::string html = report_html(report, "/nonexistent");
   EXPECT_NE(html.find("<tr class=\"fail\" id=\"test.synthetic\">"), std::string::npos);
-  EXPECT_NE(html.find("1 of 1 checks FAILED"), std::string::npos);
+  EXPECT_NE(html.find("1 of 1 checks FAILED."), std::string::npos);
   EXPECT_NE(report_markdown(report).find("**FAIL**"), std::string::npos);
+  EXPECT_NE(report_markdown(report).find("1 of 1 checks FAILED."), std::string::npos);
   EXPECT_EQ(report_json(report)["totals"]["failed"], 1);
 }
 

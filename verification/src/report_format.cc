@@ -35,6 +35,15 @@ std::string deviation_text(const CheckResult& r) {
   return buf;
 }
 
+std::string verdict_text(const Report& r) {
+  const std::string n = std::to_string(r.results.size());
+  if (r.failed() > 0) return std::to_string(r.failed()) + " of " + n + " checks FAILED.";
+  if (r.skipped() > 0)
+    return "No check failed: " + std::to_string(r.passed()) + " passed, " +
+           std::to_string(r.skipped()) + " skipped (each skipped row says why).";
+  return "Every check passed (" + n + " checks).";
+}
+
 std::string level_text(const RunInfo& info) {
   if (info.only.empty()) return info.level;
   return info.level + (info.command == "mutate" ? " (mutations matching " : " (checks matching ") +

@@ -13,6 +13,8 @@ std::string with_unit(double value, const std::string& unit);
 std::string tolerance_text(const Check& c);
 /// The deviation in the tolerance's terms: "0.12 %" or "0.003 dB".
 std::string deviation_text(const CheckResult& r);
+/// The one-line verdict at the top of a report.
+std::string verdict_text(const Report& report);
 /// The level and the --only filter as the title page shows them.
 std::string level_text(const RunInfo& info);
 /// "1.2 s", "85 ms".

@@ -16,11 +16,11 @@ void title_page(std::ostringstream& h, const Report& report) {
   if (!i.planted.empty())
     h << "<p class=\"banner planted\">Planted mutation: " << escape_html(i.planted)
       << " — this run was deliberately broken to show what a caught bug looks like.</p>\n";
-  h << (report.failed() == 0
-            ? "<p class=\"banner ok\">Every check passed (" + std::to_string(report.passed()) +
-                  " passed, " + std::to_string(report.skipped()) + " skipped).</p>\n"
-            : "<p class=\"banner bad\">" + std::to_string(report.failed()) + " of " +
-                  std::to_string(report.results.size()) + " checks FAILED.</p>\n");
+  h << "<p class=\"banner "
+    << (report.failed()    ? "bad"
+        : report.skipped() ? "planted"
+                           : "ok")
+    << "\">" << escape_html(verdict_text(report)) << "</p>\n";
   h << "<div class=\"scroll\"><table><tbody>\n";
   auto row = [&](const std::string& k, const std::string& v) {
     h << "<tr><th>" << escape_html(k) << "</th><td>" << escape_html(v) << "</td></tr>\n";

@@ -38,9 +38,7 @@ void summary(std::ostringstream& md, const Report& report) {
     md << "| " << f.title << " | " << f.passed << " | " << f.failed << " | " << f.skipped << " |\n";
   md << "| **all** | **" << report.passed() << "** | **" << report.failed() << "** | **"
      << report.skipped() << "** |\n\n";
-  md << (report.failed() == 0
-             ? "**Verdict: every check passed.**\n\n"
-             : "**Verdict: " + std::to_string(report.failed()) + " check(s) FAILED.**\n\n");
+  md << "**Verdict: " << verdict_text(report) << "**\n\n";
 }
 
 void mutations(std::ostringstream& md, const Report& report) {
