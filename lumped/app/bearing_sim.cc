@@ -155,14 +155,14 @@ int main(int argc, char** argv) {
                  "static.{deflection,ball_angles,ball_loads,q_max}");
 
   auto* run = app.add_subcommand(
-      "run",
-      "Simulate a case (model.kind " + bearing::names_of(bearing::kModelKinds, " | ") +
-          ") and write DIR/response.csv (t, "
-          "then x,y,vx,vy,ax,ay [,z,vz,az] [,Q1..QZ] [,r1..rZ,vr1..vrZ]), DIR/spectrum.csv "
-          "(one-sided amplitude spectra after the transient), "
-          "DIR/summary.json (channels.<name>.{rms,ptp,kurtosis,crest}, peaks.<name>[] with "
-          "frequency, "
-          "amplitude, label) and DIR/case.toml (the fully resolved case); prints the summary");
+      "run", "Simulate a case (model.kind " + bearing::names_of(bearing::kModelKinds, " | ") +
+                 ") and write DIR/response.csv (t, "
+                 "then x,y,vx,vy,ax,ay [,z,vz,az] [,Q1..QZ] [,r1..rZ,vr1..vrZ]), DIR/spectrum.csv "
+                 "(one-sided amplitude spectra after the transient), "
+                 "DIR/summary.json (channels.<name>.{rms,ptp,kurtosis,crest}, peaks.<name>[] with "
+                 "frequency, "
+                 "amplitude, label, label_error) and DIR/case.toml (the fully resolved case); "
+                 "prints the summary");
   add_case_options(run, case_path, sets);
   run->add_option("--out", out_dir, "Folder for the result files (created if missing)")->required();
   run->add_flag("--json", json, "Print summary.json instead of the readable summary");

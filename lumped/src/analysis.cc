@@ -7,7 +7,9 @@ namespace bearing {
 RunSummary analyse(const Response& resp, const BearingFrequencies& f,
                    const AnalysisSettings& settings) {
   RunSummary s;
-  const auto names = bearing_frequency_names(f.shaft, f.ftf, f.bpfo, f.bpfi, f.bsf);
+  // Every harmonic up to the band (Nyquist), so 8×BPFO is not left to 5×BPFI nearby.
+  const auto names =
+      bearing_frequency_names_up_to(0.5 * resp.rate, f.shaft, f.ftf, f.bpfo, f.bpfi, f.bsf);
   std::unique_ptr<SpectrumPlan> plan;  // one window and FFT table for all channels
   for (const Channel& channel : resp.channels) {
     ChannelSummary ch;

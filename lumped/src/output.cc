@@ -238,7 +238,10 @@ nlohmann::json summary_json(const Case& c, const SimulationResult& r, const RunS
     if (ch.group == ChannelGroup::ball) continue;
     json peaks = json::array();
     for (const auto& p : ch.peaks)
-      peaks.push_back({{"frequency", p.frequency}, {"amplitude", p.amplitude}, {"label", p.label}});
+      peaks.push_back({{"frequency", p.frequency},
+                       {"amplitude", p.amplitude},
+                       {"label", p.label},
+                       {"label_error", p.label_error}});
     j["peaks"][ch.name] = peaks;
   }
   if (r.quasi_static) {
@@ -268,6 +271,7 @@ nlohmann::json summary_json(const Case& c, const SimulationResult& r, const RunS
                 {"channels", "see channels.<name>.unit (kurtosis and crest: 1)"},
                 {"peaks.frequency", "Hz"},
                 {"peaks.amplitude", "unit of the channel"},
+                {"peaks.label_error", "Hz"},
                 {"case.speed", "rad/s"},
                 {"case.load", "N"},
                 {"case.duration", "s"},

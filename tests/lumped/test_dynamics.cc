@@ -58,6 +58,41 @@ TEST(Dynamics, PerfectBearingVibratesAtBpfo) {
   EXPECT_TRUE(has_label(s, "y", "3xBPFO"));
 }
 
+// Issue 17's healthy 6308 (clearance 10 um, conformities 0.52/0.53, 3000 rpm, 300 N): every line
+// of the vertical acceleration is a BPFO harmonic, and each must be named so — 8×BPFO = 1228.8 Hz
+// used to be called 5xBPFI (1232 Hz, within 2 %), 12×BPFO left unnamed — with the match error
+// within the 1 Hz bin. No inner-race name may appear on a healthy bearing.
+TEST(Dynamics, PeaksOfAHealthyBearingAreNamedAsBpfoHarmonics) {
+  Case c = default_case({{"bearing.clearance", "\"10 um\""},
+                         {"bearing.inner_conformity", "0.52"},
+                         {"bearing.outer_conformity", "0.53"},
+                         {"operation.speed", "\"3000 rpm\""},
+                         {"operation.load", "[\"0 N\", \"-300 N\"]"}});
+  const SimulationResult r = simulate(c);
+  const RunSummary s = summarize(c, r);
+  const double bin = c.solver.output_rate / static_cast<double>(r.response.steady("ay").size());
+  bool named_8x = false;
+  for (const auto& ch : s.channels) {
+    if (ch.name != "ay" && ch.name != "y") continue;
+    ASSERT_FALSE(ch.peaks.empty());
+    for (const Peak& p : ch.peaks) {
+      const double k = std::round(p.frequency / r.frequencies.bpfo);
+      ASSERT_NEAR(p.frequency, k * r.frequencies.bpfo, bin) << ch.name << " line " << p.frequency;
+      EXPECT_EQ(p.label, k == 1 ? std::string("BPFO") : std::to_string(int(k)) + "xBPFO")
+          << ch.name << " " << p.frequency << " Hz";
+      EXPECT_LE(std::abs(p.label_error), bin);
+      EXPECT_DOUBLE_EQ(p.label_error, p.frequency - k * r.frequencies.bpfo);
+      named_8x = named_8x || p.label == "8xBPFO";
+    }
+  }
+  EXPECT_TRUE(named_8x);
+  // The default case (healthy too): nothing is named after the inner race.
+  const Case d = default_case();
+  const RunSummary sd = summarize(d, simulate(d));
+  for (const auto& ch : sd.channels)
+    for (const Peak& p : ch.peaks) EXPECT_EQ(p.label.find("BPFI"), std::string::npos) << ch.name;
+}
+
 // The ring on its loaded contacts is a spring-mass system whose stiffness varies as the balls
 // pass (varying compliance). Acceleration weights high frequencies, so its largest peak sits at
 // this contact resonance, not at BPFO: within the band of natural frequencies sqrt(k_yy/m) that

@@ -483,40 +483,54 @@ TEST(SignalPeaks, HannRefinementIsWithinItsBias) {
   }
 }
 
-TEST(SignalPeaks, LabelToleranceEdgeIsInclusive) {
-  // Tolerance max(r·f, 1.5·resolution) with powers of two, so the edge is exact in floating
-  // point: f = 512 Hz, r = 1/32 → 16 Hz; f = 8 Hz → 1.5 Hz from the resolution term.
+TEST(SignalPeaks, LabelToleranceIsOneBinInclusiveAndTheErrorIsReported) {
+  // Resolution 1 Hz, a line on bin 512: names within one bin (inclusive) label it, farther ones
+  // do not; label_error = peak − name.
   const Spectrum s = synthetic(1024, {{512, 1.0}});
-  const auto label = [&s](double named) {
-    const std::vector<Peak> p = find_peaks(s, {{"X", named}}, 10, 1e-3, 1.0 / 32);
-    return p.at(0).label;
+  const auto peak = [&s](double named, double bins = 1.0) {
+    return find_peaks(s, {{"X", named}}, 10, 1e-3, bins).at(0);
   };
-  EXPECT_EQ(label(528.0), "X");
-  EXPECT_EQ(label(496.0), "X");
-  EXPECT_EQ(label(528.0 + 1e-9), "");
-  EXPECT_EQ(label(496.0 - 1e-9), "");
-
-  const Spectrum low = synthetic(64, {{8, 1.0}});
-  const auto low_label = [&low](double named) {
-    return find_peaks(low, {{"Y", named}}, 10, 1e-3, 1.0 / 32).at(0).label;
-  };
-  EXPECT_EQ(low_label(9.5), "Y");
-  EXPECT_EQ(low_label(6.5), "Y");
-  EXPECT_EQ(low_label(9.5 + 1e-9), "");
+  EXPECT_EQ(peak(513.0).label, "X");
+  EXPECT_EQ(peak(511.0).label, "X");
+  EXPECT_DOUBLE_EQ(peak(511.0).label_error, 1.0);
+  EXPECT_DOUBLE_EQ(peak(512.25).label_error, -0.25);
+  EXPECT_EQ(peak(513.0 + 1e-9).label, "");
+  EXPECT_EQ(peak(511.0 - 1e-9).label, "");
+  EXPECT_EQ(peak(513.0 + 1e-9).label_error, 0.0);
+  EXPECT_EQ(peak(514.0, 2.0).label, "X");
+  EXPECT_THROW(find_peaks(s, {}, 10, 1e-3, -1.0), InputError);
 }
 
-TEST(SignalPeaks, NearestNameWinsAndTiesGoToTheEarlierName) {
+TEST(SignalPeaks, NearestNameWinsAndTiesGoToTheLowerHarmonicThenTheEarlierName) {
   const Spectrum s = synthetic(1024, {{500, 1.0}});
   const auto label = [&s](const std::vector<NamedFrequency>& names) {
     return find_peaks(s, names).at(0).label;
   };
-  EXPECT_EQ(label({{"far", 503.0}, {"near", 497.5}}), "near");
-  EXPECT_EQ(label({{"A", 495.0}, {"B", 505.0}}), "A");
-  EXPECT_EQ(label({{"B", 505.0}, {"A", 495.0}}), "B");
-  // The same tie from bearing_frequency_names: 2×FTF = fr at 10 Hz resolves to "fr".
+  EXPECT_EQ(label({{"far", 500.8}, {"near", 499.5}}), "near");
+  EXPECT_EQ(label({{"A", 499.5}, {"B", 500.5}}), "A");
+  EXPECT_EQ(label({{"B", 500.5}, {"A", 499.5}}), "B");
+  // The same line named twice (8×FTF = BPFO of a bearing with Z = 8 and no slip): the lower
+  // harmonic wins wherever it is listed.
+  EXPECT_EQ(label({{"8xFTF", 500.0, 8}, {"BPFO", 500.0 * (1 + 1e-15), 1}}), "BPFO");
+  EXPECT_EQ(label({{"BPFO", 500.0, 1}, {"8xFTF", 500.0, 8}}), "BPFO");
+  // From bearing_frequency_names: 2×FTF = fr at 10 Hz resolves to "fr".
   const Spectrum low = synthetic(64, {{10, 1.0}});
   EXPECT_EQ(find_peaks(low, bearing_frequency_names(10, 5, 0, 0, 0)).at(0).label, "fr");
   EXPECT_EQ(label({}), "");
+}
+
+TEST(SignalPeaks, NamesUpToTheBandCoverEveryHarmonicBelowIt) {
+  const auto names = bearing_frequency_names_up_to(1000, 50, 0, 153.6, 0, 0);
+  int fr = 0, bpfo = 0;
+  for (const auto& n : names) {
+    EXPECT_LE(n.frequency, 1000.0) << n.label;
+    (n.label.find("fr") != std::string::npos ? fr : bpfo)++;
+  }
+  EXPECT_EQ(fr, 20);   // 50 … 1000 Hz
+  EXPECT_EQ(bpfo, 6);  // 153.6 … 921.6 Hz
+  EXPECT_EQ(names.back().label, "6xBPFO");
+  EXPECT_EQ(names.back().harmonic, 6);
+  EXPECT_THROW(bearing_frequency_names_up_to(0, 50, 0, 153.6, 0, 0), InputError);
 }
 
 TEST(SignalPeaks, OrdersBySizeBreaksTiesByFrequencyAndThresholds) {

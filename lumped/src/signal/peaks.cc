@@ -16,14 +16,52 @@ namespace bearing {
 
 namespace {
 
-void add_harmonics(std::vector<NamedFrequency>& names, const char* label, double f,
-                   int max_harmonic) {
+void check_frequency(const char* label, double f) {
   if (!(std::isfinite(f) && f >= 0))
     throw InputError(std::string("bearing frequency ") + label + " = " + format_number(f) +
                      " Hz: must be finite and not negative");
+}
+
+std::string harmonic_name(int h, const char* label) {
+  return (h == 1 ? std::string() : std::to_string(h) + "x") + label;
+}
+
+// How many harmonics of f a family gets: max_harmonic, or those up to max_frequency.
+struct HarmonicRange {
+  int max_harmonic = 0;      ///< > 0: this many
+  double max_frequency = 0;  ///< else: every k·f ≤ max_frequency, at most kMaxPerFamily
+  int count(double f) const {
+    constexpr double kMaxPerFamily = 4096;
+    if (max_harmonic > 0) return max_harmonic;
+    return static_cast<int>(std::min(std::floor(max_frequency / f), kMaxPerFamily));
+  }
+};
+
+void add_harmonics(std::vector<NamedFrequency>& names, const char* label, double f,
+                   HarmonicRange range) {
+  check_frequency(label, f);
   if (f == 0) return;  // e.g. a shaft at rest: no line to name
-  for (int h = 1; h <= max_harmonic; ++h)
-    names.push_back({(h == 1 ? std::string() : std::to_string(h) + "x") + label, h * f});
+  for (int h = 1; h <= range.count(f); ++h) names.push_back({harmonic_name(h, label), h * f, h});
+}
+
+std::vector<NamedFrequency> names_of(double shaft, double ftf, double bpfo, double bpfi, double bsf,
+                                     HarmonicRange range) {
+  std::vector<NamedFrequency> names;
+  add_harmonics(names, "fr", shaft, range);
+  add_harmonics(names, "FTF", ftf, range);
+  add_harmonics(names, "BPFO", bpfo, range);
+  add_harmonics(names, "BPFI", bpfi, range);
+  add_harmonics(names, "BSF", bsf, range);
+  // The inner race turns with the shaft, so its lines come with shaft-rate sidebands
+  // k·BPFI ± f_r (e.g. inner-race waviness under a fixed load zone). Listed after the plain
+  // harmonics: a tie goes to the simpler name.
+  if (shaft > 0 && bpfi > 0)
+    for (int k = 1; k <= range.count(bpfi); ++k) {
+      const std::string base = harmonic_name(k, "BPFI");
+      if (k * bpfi - shaft > 0) names.push_back({base + "-fr", k * bpfi - shaft, k});
+      names.push_back({base + "+fr", k * bpfi + shaft, k});
+    }
+  return names;
 }
 
 // Offset δ ∈ [−½, ½] of the vertex of the parabola through (−1, a), (0, b), (1, c), for b a local
@@ -37,16 +75,20 @@ double parabola_vertex(double a, double b, double c) {
   return std::clamp(0.5 * (a - c) / curvature, -0.5, 0.5);
 }
 
-// The label of the named frequency nearest to f within `tolerance` [Hz], else "". Equal distances
-// keep the earlier name.
-std::string nearest_label(double f, double tolerance, const std::vector<NamedFrequency>& names) {
+// The named frequency nearest to f within `tolerance` [Hz], else nullptr. Distances equal to
+// `tie` [Hz] go to the lower harmonic number, then keep the earlier name.
+const NamedFrequency* nearest_name(double f, double tolerance, double tie,
+                                   const std::vector<NamedFrequency>& names) {
   const NamedFrequency* best = nullptr;
   double best_distance = std::numeric_limits<double>::infinity();
   for (const NamedFrequency& name : names) {
     const double d = std::abs(name.frequency - f);
-    if (d <= tolerance && d < best_distance) best = &name, best_distance = d;
+    if (d > tolerance) continue;
+    const bool tied = std::abs(d - best_distance) <= tie;
+    if ((!tied && d < best_distance) || (tied && best && name.harmonic < best->harmonic))
+      best = &name, best_distance = d;
   }
-  return best ? best->label : std::string();
+  return best;
 }
 
 }  // namespace
@@ -56,27 +98,20 @@ std::vector<NamedFrequency> bearing_frequency_names(double shaft, double ftf, do
   if (max_harmonic < 1)
     throw InputError("bearing frequency names: max_harmonic = " + std::to_string(max_harmonic) +
                      ": must be at least 1");
-  std::vector<NamedFrequency> names;
-  names.reserve(5 * static_cast<std::size_t>(max_harmonic));
-  add_harmonics(names, "fr", shaft, max_harmonic);
-  add_harmonics(names, "FTF", ftf, max_harmonic);
-  add_harmonics(names, "BPFO", bpfo, max_harmonic);
-  add_harmonics(names, "BPFI", bpfi, max_harmonic);
-  add_harmonics(names, "BSF", bsf, max_harmonic);
-  // The inner race turns with the shaft, so its lines come with shaft-rate sidebands
-  // k·BPFI ± f_r (e.g. inner-race waviness under a fixed load zone). Listed after the plain
-  // harmonics: a tie goes to the simpler name.
-  if (shaft > 0 && bpfi > 0)
-    for (int k = 1; k <= max_harmonic; ++k) {
-      const std::string base = (k == 1 ? std::string() : std::to_string(k) + "x") + "BPFI";
-      if (k * bpfi - shaft > 0) names.push_back({base + "-fr", k * bpfi - shaft});
-      names.push_back({base + "+fr", k * bpfi + shaft});
-    }
-  return names;
+  return names_of(shaft, ftf, bpfo, bpfi, bsf, HarmonicRange{max_harmonic, 0});
+}
+
+std::vector<NamedFrequency> bearing_frequency_names_up_to(double max_frequency, double shaft,
+                                                          double ftf, double bpfo, double bpfi,
+                                                          double bsf) {
+  if (!(std::isfinite(max_frequency) && max_frequency > 0))
+    throw InputError("bearing frequency names: band up to " + format_number(max_frequency) +
+                     " Hz: must be positive and finite");
+  return names_of(shaft, ftf, bpfo, bpfi, bsf, HarmonicRange{0, max_frequency});
 }
 
 std::vector<Peak> find_peaks(const Spectrum& spectrum, const std::vector<NamedFrequency>& names,
-                             int max_peaks, double relative_threshold, double relative_tolerance) {
+                             int max_peaks, double relative_threshold, double tolerance_bins) {
   const std::vector<double>& a = spectrum.amplitude;
   if (spectrum.frequency.size() != a.size())
     throw InputError("find peaks: the spectrum has " + std::to_string(spectrum.frequency.size()) +
@@ -90,8 +125,8 @@ std::vector<Peak> find_peaks(const Spectrum& spectrum, const std::vector<NamedFr
   if (!(relative_threshold >= 0 && relative_threshold <= 1))
     throw InputError("find peaks: relative_threshold = " + format_number(relative_threshold) +
                      ": must lie in [0, 1]");
-  if (!(std::isfinite(relative_tolerance) && relative_tolerance >= 0))
-    throw InputError("find peaks: relative_tolerance = " + format_number(relative_tolerance) +
+  if (!(std::isfinite(tolerance_bins) && tolerance_bins >= 0))
+    throw InputError("find peaks: tolerance_bins = " + format_number(tolerance_bins) +
                      ": must be finite and not negative");
 
   const std::size_t m = a.size();
@@ -122,8 +157,9 @@ std::vector<Peak> find_peaks(const Spectrum& spectrum, const std::vector<NamedFr
     Peak p;
     p.frequency = spectrum.frequency[k] + delta * spectrum.resolution;
     p.amplitude = a[k];
-    const double tolerance = std::max(relative_tolerance * p.frequency, 1.5 * spectrum.resolution);
-    p.label = nearest_label(p.frequency, tolerance, names);
+    const NamedFrequency* name = nearest_name(p.frequency, tolerance_bins * spectrum.resolution,
+                                              1e-9 * spectrum.resolution, names);
+    if (name) p.label = name->label, p.label_error = p.frequency - name->frequency;
     peaks.push_back(std::move(p));
   }
   return peaks;

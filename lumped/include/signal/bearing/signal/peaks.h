@@ -13,6 +13,7 @@ namespace bearing {
 struct NamedFrequency {
   std::string label;
   double frequency = 0;  ///< [Hz]
+  int harmonic = 1;      ///< k of k·f (sidebands: of their carrier): a tie goes to the lower k
 };
 
 /// The bearing frequencies and their harmonics 1 … max_harmonic, in this order: "fr", "2xfr", …,
@@ -25,11 +26,20 @@ struct NamedFrequency {
 std::vector<NamedFrequency> bearing_frequency_names(double shaft, double ftf, double bpfo,
                                                     double bpfi, double bsf, int max_harmonic = 5);
 
+/// The same families with every harmonic up to `max_frequency` [Hz] (the analysis band, e.g. the
+/// spectrum's Nyquist frequency), at most 4096 per family, so that a line like 8×BPFO is named
+/// as such instead of being left to a lower-order name nearby. Throws as above, and for a
+/// max_frequency that is not positive and finite.
+std::vector<NamedFrequency> bearing_frequency_names_up_to(double max_frequency, double shaft,
+                                                          double ftf, double bpfo, double bpfi,
+                                                          double bsf);
+
 /// A spectral peak and the named frequency it was matched to.
 struct Peak {
-  double frequency = 0;  ///< refined peak frequency [Hz]
-  double amplitude = 0;  ///< amplitude of the largest bin [unit of the spectrum]
-  std::string label;     ///< nearest named frequency within tolerance, else "" (empty)
+  double frequency = 0;    ///< refined peak frequency [Hz]
+  double amplitude = 0;    ///< amplitude of the largest bin [unit of the spectrum]
+  std::string label;       ///< nearest named frequency within tolerance, else "" (empty)
+  double label_error = 0;  ///< frequency − the named frequency [Hz] (0 when unlabelled)
 };
 
 /// The largest local maxima of `spectrum`, largest first (equal amplitudes: lower frequency first),
@@ -45,13 +55,17 @@ struct Peak {
 /// Window::flattop (−1.42 dB hann, −3.9 dB rectangular).
 ///
 /// Label: the named frequency nearest to the refined peak frequency f, if it is within
-/// max(relative_tolerance × f, 1.5 × resolution) [Hz] (inclusive); names at the same distance go
-/// to the earlier one in `names` (for bearing_frequency_names: fr before FTF, BPFO, BPFI, BSF).
+/// tolerance_bins × resolution [Hz] (inclusive; default one bin: the refined frequency of a line
+/// is within 0.2 bin of it for every window, so a line's own name is always nearer than that),
+/// else none — a peak near no name stays unlabelled rather than taking a distant one. Names at
+/// the same distance (to 1e-9 bin: 8×FTF and BPFO of the same bearing) go to the lower harmonic
+/// number, then to the earlier one in `names` (for bearing_frequency_names: fr before FTF,
+/// BPFO, BPFI, BSF). label_error = f − the name's frequency.
 /// Throws InputError if the spectrum's frequency and amplitude differ in length or its resolution
-/// is not positive, max_peaks < 0, relative_threshold is outside [0, 1] or relative_tolerance < 0.
-/// O(M log M) for M bins.
+/// is not positive, max_peaks < 0, relative_threshold is outside [0, 1] or tolerance_bins < 0.
+/// O(M log M + P·N) for M bins, P peaks and N names.
 std::vector<Peak> find_peaks(const Spectrum& spectrum, const std::vector<NamedFrequency>& names,
                              int max_peaks = 10, double relative_threshold = 1e-3,
-                             double relative_tolerance = 0.02);
+                             double tolerance_bins = 1.0);
 
 }  // namespace bearing
