@@ -12,6 +12,7 @@
 
 #include "bearing/constants.h"
 #include "bearing/errors.h"
+#include "bearing/signal/envelope.h"
 #include "bearing/signal/peaks.h"
 #include "bearing/signal/spectrum.h"
 #include "bearing/signal/statistics.h"
@@ -606,3 +607,47 @@ TEST(SignalPeaks, LabelsInnerRaceShaftSidebands) {
   EXPECT_EQ(label_of(4 * fr), "4xfr");
   for (const auto& n : names) EXPECT_GT(n.frequency, 0.0) << n.label;
 }
+
+namespace bearing {
+namespace {
+
+// Envelope analysis: an amplitude-modulated carrier (1 + m cos ω_m t) cos ω_c t, both on bins,
+// band [f_c − 2 f_m, f_c + 2 f_m]: the envelope is 1 + m cos ω_m t exactly, its spectrum a line
+// of amplitude m at f_m; a tone outside the band leaves no trace.
+TEST(SignalEnvelope, AmplitudeModulatedCarrierGivesItsModulation) {
+  const double fs = 20000, n = 20000;  // 1 Hz bins
+  const double fc = 3000, fm = 105, m = 0.4;
+  std::vector<double> x(static_cast<std::size_t>(n));
+  for (std::size_t i = 0; i < x.size(); ++i) {
+    const double t = static_cast<double>(i) / fs;
+    x[i] = (1 + m * std::cos(two_pi * fm * t)) * std::cos(two_pi * fc * t) +
+           0.7 * std::sin(two_pi * 500 * t);  // out of band
+  }
+  const FrequencyBand band{fc - 2 * fm, fc + 2 * fm};
+  const std::vector<double> e = band_envelope(x, fs, band);
+  ASSERT_EQ(e.size(), x.size());
+  double worst = 0;
+  for (std::size_t i = 0; i < e.size(); ++i) {
+    const double t = static_cast<double>(i) / fs;
+    worst = std::max(worst, std::abs(e[i] - (1 + m * std::cos(two_pi * fm * t))));
+  }
+  EXPECT_LT(worst, 1e-11);
+  const Spectrum s = envelope_spectrum(x, fs, band, Window::hann);
+  const std::vector<Peak> p = find_peaks(s, {{"fm", fm}}, 1);
+  ASSERT_EQ(p.size(), 1u);
+  EXPECT_EQ(p[0].label, "fm");
+  EXPECT_NEAR(p[0].amplitude, m, 1e-9);
+}
+
+TEST(SignalEnvelope, RejectsABandOutsideZeroToNyquist) {
+  const std::vector<double> x(100, 1.0);
+  EXPECT_THROW(band_envelope(x, 1000, {200, 100}), InputError);
+  EXPECT_THROW(band_envelope(x, 1000, {-1, 100}), InputError);
+  EXPECT_THROW(band_envelope(x, 1000, {100, 600}), InputError);
+  EXPECT_THROW(band_envelope({1.0}, 1000, {100, 200}), InputError);
+  EXPECT_THROW(band_envelope(x, 0, {100, 200}), InputError);
+  EXPECT_NO_THROW(band_envelope(x, 1000, {0, 500}));
+}
+
+}  // namespace
+}  // namespace bearing
