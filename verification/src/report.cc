@@ -88,6 +88,8 @@ int Report::skipped() const {
 void write_report(const Report& report, const std::string& dir, const std::string& plot_script) {
   const fs::path out(dir);
   const fs::path figures = out / "figures";
+  // A report folder used before holds only this report: no stale page, data or figure.
+  fs::remove_all(figures);
   fs::create_directories(figures);
   for (const char* name : {"report.html", "report.md", "report.json"}) fs::remove(out / name);
   write_figures(report, figures.string(), plot_script);
