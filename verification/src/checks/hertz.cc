@@ -131,6 +131,23 @@ Check semi_axes(const std::string& name) {
   return c;
 }
 
+// The toolkit's K by `method` against the check's exact K on the race where they differ most;
+// `describe` writes each race's line of the detail.
+template <typename Describe>
+Outcome worst_race_k(const Context& ctx, const std::string& name, HertzMethod method,
+                     Describe describe) {
+  Outcome o{0, 1, "", {}};
+  double worst = -1;
+  for (Race race : {Race::inner, Race::outer}) {
+    const RaceContact rc = ctx.race_contact(ctx.bearing(name), race, method);
+    const auto ref = exact_hertz(preset(name), race);
+    o.detail += std::string(to_string(race)) + describe(rc, ref);
+    const double dev = std::abs(rc.K / ref.K - 1);
+    if (dev > worst) worst = dev, o.value = rc.K, o.reference = ref.K;
+  }
+  return o;
+}
+
 // Hamrock–Brewe: κ ≈ 1.0339 (R_y/R_x)^0.636, E ≈ 1.0003 + 0.5968 R_x/R_y,
 // K ≈ 1.5277 + 0.6023 ln(R_y/R_x). K_contact ∝ κ E^{1/2} K(e)^{-3/2}, so its relative error is at
 // most |Δκ/κ| + ½|ΔE/E| + 1.5|ΔK/K|. For the presets' grooves (F = 0.887–0.958, R_y/R_x = 17–46)
@@ -154,22 +171,11 @@ Check hamrock_brewe(const std::string& name) {
       "4.3 %");
   c.catches = {"contact-constant-x1.03"};
   c.measure = [name](const Context& ctx) {
-    Outcome o{0, 1, "", {}};
-    double worst = -1;
-    for (Race race : {Race::inner, Race::outer}) {
-      const RaceContact rc = ctx.race_contact(ctx.bearing(name), race, HertzMethod::hamrock_brewe);
-      const auto ref = exact_hertz(preset(name), race);
-      const double dev = std::abs(rc.K / ref.K - 1);
-      o.detail += std::string(to_string(race)) + fmt(": K %+.3f %%, kappa %+.3f %%; ",
-                                                     100 * (rc.K / ref.K - 1),
-                                                     100 * (rc.shape.ellipticity / ref.kappa - 1));
-      if (dev > worst) {
-        worst = dev;
-        o.value = rc.K;
-        o.reference = ref.K;
-      }
-    }
-    return o;
+    return worst_race_k(ctx, name, HertzMethod::hamrock_brewe,
+                        [](const RaceContact& rc, const reference::HertzContact& ref) {
+                          return fmt(": K %+.3f %%, kappa %+.3f %%; ", 100 * (rc.K / ref.K - 1),
+                                     100 * (rc.shape.ellipticity / ref.kappa - 1));
+                        });
   };
   return c;
 }
@@ -193,21 +199,11 @@ Check harris_table(const std::string& name) {
       "presets' range); K ~ delta*^-3/2: 1.5 x 3e-4");
   c.catches = {"contact-constant-x1.03"};
   c.measure = [name](const Context& ctx) {
-    Outcome o{0, 1, "", {}};
-    double worst = -1;
-    for (Race race : {Race::inner, Race::outer}) {
-      const RaceContact rc = ctx.race_contact(ctx.bearing(name), race, HertzMethod::harris_table);
-      const auto ref = exact_hertz(preset(name), race);
-      const double dev = std::abs(rc.K / ref.K - 1);
-      o.detail += std::string(to_string(race)) +
-                  fmt(": F = %.5f, K %+.4f %%; ", ref.f_rho, 100 * (rc.K / ref.K - 1));
-      if (dev > worst) {
-        worst = dev;
-        o.value = rc.K;
-        o.reference = ref.K;
-      }
-    }
-    return o;
+    return worst_race_k(ctx, name, HertzMethod::harris_table,
+                        [](const RaceContact& rc, const reference::HertzContact& ref) {
+                          return fmt(": F = %.5f, K %+.4f %%; ", ref.f_rho,
+                                     100 * (rc.K / ref.K - 1));
+                        });
   };
   return c;
 }
