@@ -24,6 +24,7 @@ ModelInputs model_inputs(const Case& c) {
   in.inner_waviness.harmonics = c.excitation.inner_waviness;
   in.outer_waviness.harmonics = c.excitation.outer_waviness;
   in.ball_size_errors = c.excitation.ball_size_errors;
+  in.defects = c.excitation.defects;
   in.waviness_stiffness = c.model.waviness_stiffness;
   in.cage_slip = c.cage.slip;
   in.traction = make_traction_curve(c.cage.friction, c.cage.slide_speed);

@@ -224,6 +224,32 @@ std::vector<Key> model_keys() {
   };
 }
 
+std::vector<Key> defect_keys() {
+  Key entries = described("defects", Kind::table_array, D::dimensionless,
+                          "[[defects]] entries: local defects (spalls) on a race or a ball; "
+                          "dynamic model kinds (2dof, 3dof, balls)");
+  entries.read = read_defect;
+  entries.after = check_defect_entries;
+  entries.write_table = write_defects;
+  entries.written = [](const Case& c) { return !c.excitation.defects.empty(); };
+  const auto entry = [](const char* leaf, Kind kind, Dimension dim, const char* help) {
+    return described(std::string("defects.") + leaf, kind, dim, help);
+  };
+  return {
+      entries,
+      entry("location", Kind::choice, D::dimensionless, "outer | inner | ball (required)"),
+      entry("position", Kind::quantity, D::angle,
+            "outer: centre angle in the housing from +x; inner: on the ring at t = 0 (required); "
+            "ball: angle on the ball from its outer-race contact at t = 0 (default 90 deg)"),
+      entry("ball", Kind::integer, D::dimensionless, "ball defects: which ball, 0 … Z-1"),
+      entry("width", Kind::quantity, D::length,
+            "along the rolling direction, in (0, D] (required)"),
+      entry("depth", Kind::quantity, D::length, "in (0, D/4] (required)"),
+      entry("profile", Kind::choice, D::dimensionless,
+            "rectangular (sharp edges, default) | smooth (half-sine)"),
+  };
+}
+
 // A table one model kind owns (model_registry.h); an error with any other kind, which would
 // ignore it.
 Key owned_table(const std::string& name, const std::string& help) {
@@ -403,7 +429,7 @@ std::vector<Key> all_keys() {
   std::vector<Key> out;
   for (auto part :
        {bearing_keys, material_keys, rotor_keys, operation_keys, waviness_keys, ball_error_keys,
-        model_keys, cage_keys, ball_keys, solver_keys, output_keys, acoustics_keys})
+        model_keys, defect_keys, cage_keys, ball_keys, solver_keys, output_keys, acoustics_keys})
     for (Key& k : part()) out.push_back(std::move(k));
   return out;
 }

@@ -1,10 +1,13 @@
 #include "case_rules.h"
 
 #include <cmath>
+
+#include "bearing/constants.h"
 #include <string>
 #include <vector>
 
 #include "bearing/calibration.h"
+#include "bearing/models/model_registry.h"
 #include "bearing/presets.h"
 #include "key_builders.h"
 
@@ -123,6 +126,66 @@ void write_ball_errors(std::ostream& o, const Case& c) {
   for (std::size_t j = 0; j < e.ball_size_errors.size(); ++j)
     o << (j ? ", " : "") << num17(-e.ball_size_errors[j]);
   o << "]\n";
+}
+
+void read_defect(TableReader& r, Case& c, const ReadContext&) {
+  const auto location = r.text("location");
+  const auto width = r.quantity("width"), depth = r.quantity("depth");
+  if (!location || !width || !depth)
+    throw InputError(r.shown() +
+                     ": each [[defects]] entry needs location (\"outer\", \"inner\" or \"ball\"), "
+                     "width and depth");
+  LocalDefect d;
+  d.location = parse_named(kDefectLocations, *location, r.full("location"), "defect location");
+  d.width = *width;
+  d.depth = *depth;
+  if (const auto profile = r.text("profile"))
+    d.profile = parse_named(kDefectProfiles, *profile, r.full("profile"), "defect profile");
+  const auto position = r.quantity("position");
+  const auto ball = r.integer("ball");
+  if (d.location == DefectLocation::ball) {
+    if (!ball)
+      throw InputError(r.full("ball") + " is missing: a ball defect names its ball (0 … " +
+                       std::to_string(c.bearing.balls - 1) + ")");
+    if (*ball < 0 || *ball >= c.bearing.balls)
+      throw InputError(r.full("ball") + " = " + std::to_string(*ball) + ": must lie in [0, " +
+                       std::to_string(c.bearing.balls - 1) + "] (bearing.balls = " +
+                       std::to_string(c.bearing.balls) + ")");
+    d.ball = static_cast<int>(*ball);
+    d.position = position.value_or(0.5 * pi);  // between its contacts at t = 0
+  } else {
+    if (ball)
+      throw InputError(r.full("ball") + " = " + std::to_string(*ball) +
+                       ": only a ball defect (location = \"ball\") names a ball");
+    if (!position)
+      throw InputError(r.full("position") + " is missing: the angle of the defect's centre (" +
+                       (d.location == DefectLocation::outer
+                            ? "in the housing, from +x toward +y; the load zone is where the load "
+                              "points"
+                            : "on the inner ring at t = 0, from +x toward +y") +
+                       "), e.g. position = \"-90 deg\"");
+    d.position = *position;
+  }
+  c.excitation.defects.push_back(d);
+}
+
+void check_defect_entries(Case& c) {
+  const std::vector<LocalDefect>& defects = c.excitation.defects;
+  check_defects(defects, c.bearing);
+  check_defects_supported(c.model.kind, defects);
+}
+
+void write_defects(std::ostream& o, const Case& c) {
+  bool first = true;
+  for (const LocalDefect& d : c.excitation.defects) {
+    o << (first ? "" : "\n") << "[[defects]]\nlocation = " << quoted(name_of(kDefectLocations, d.location))
+      << "\n";
+    if (d.location == DefectLocation::ball) o << "ball = " << d.ball << "\n";
+    o << "position = " << quantity_text(d.position, Dimension::angle) << "\nwidth = " << num17(d.width)
+      << "\ndepth = " << num17(d.depth) << "\nprofile = " << quoted(name_of(kDefectProfiles, d.profile))
+      << "\n";
+    first = false;
+  }
 }
 
 void read_calibration_file(TableReader& r, Case& c, const ReadContext& context) {

@@ -1,7 +1,7 @@
 #pragma once
 // Private to the case schema: the tables whose keys need more than one value each — the bearing
-// preset, waviness entries (or a CSV table), ball-size errors (given or drawn), the calibration
-// file, and the rules that tie the [solver] and [acoustics] keys together.
+// preset, waviness entries (or a CSV table), ball-size errors (given or drawn), local defects, the
+// calibration file, and the rules that tie the [solver] and [acoustics] keys together.
 
 #include <ostream>
 #include <string>
@@ -21,6 +21,12 @@ void write_waviness(std::ostream& o, const Case& c);
 /// [ball_errors]: values per ball, or a band drawn with a seed.
 void read_ball_errors(TableReader& r, Case& c, const ReadContext& context);
 void write_ball_errors(std::ostream& o, const Case& c);
+
+/// One [[defects]] entry: location, position, ball, width, depth, profile; and their rules once
+/// all are read (check_defects, a model kind that integrates in time).
+void read_defect(TableReader& r, Case& c, const ReadContext& context);
+void check_defect_entries(Case& c);
+void write_defects(std::ostream& o, const Case& c);
 
 /// model.calibration: read and checked against the bearing now, so a calibration for another
 /// bearing never reaches a model.

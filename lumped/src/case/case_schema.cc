@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <sstream>
+#include <string>
 
 namespace bearing::case_schema {
 
@@ -16,7 +17,20 @@ bool directly_under(const std::string& name, const std::string& table) {
 }
 
 bool top_level(const Key& k) {
-  return k.kind == Kind::table && k.name.find('.') == std::string::npos;
+  return (k.kind == Kind::table || k.kind == Kind::table_array) &&
+         k.name.find('.') == std::string::npos;
+}
+
+// A top-level array of tables ([[defects]]): the row reads one entry; its rules run on them all.
+void read_entries(const toml::table& doc, const Key& row, Case& c, const ReadContext& context) {
+  if (const toml::array* entries = top_table_array(doc, row.name))
+    for (std::size_t i = 0; i < entries->size(); ++i) {
+      TableReader r(entries->get(i)->as_table(), row.name + "[" + std::to_string(i) + "]",
+                    row.name);
+      row.read(r, c, context);
+      r.finish();
+    }
+  if (row.after) row.after(c);
 }
 
 // Reads one table: its keys in schema order (sub-tables recursively), the table's own reading of
@@ -88,6 +102,10 @@ Case resolve(const toml::table& doc, const std::string& source, const ReadContex
   c.source = source;
   for (const Key& t : keys()) {
     if (!top_level(t)) continue;
+    if (t.kind == Kind::table_array) {
+      read_entries(doc, t, c, context);
+      continue;
+    }
     TableReader r(top_table(doc, t.name), t.name);
     read_table(r, t, c, context);
   }

@@ -261,4 +261,14 @@ const toml::table* top_table(const toml::table& doc, const std::string& name) {
   return n->as_table();
 }
 
+const toml::array* top_table_array(const toml::table& doc, const std::string& name) {
+  const toml::node* n = doc.get(name);
+  if (!n) return nullptr;
+  const toml::array* a = n->as_array();
+  if (!a || !a->is_array_of_tables())
+    throw InputError(name + " = " + shown_value(*n) + ": expected entries [[" + name + "]] with " +
+                     keys_of_table(name) + ", got " + type_name(*n));
+  return a;
+}
+
 }  // namespace bearing::case_schema

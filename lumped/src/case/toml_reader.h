@@ -42,6 +42,8 @@ class TableReader {
   bool has(const std::string& key) const { return table_ && table_->get(key); }
   std::string full(const std::string& key) const { return shown_ + "." + key; }
   const std::string& schema() const { return schema_; }
+  /// The table as shown in messages ("defects[2]").
+  const std::string& shown() const { return shown_; }
 
   std::optional<double> quantity(const std::string& key);
   std::optional<long long> integer(const std::string& key);
@@ -69,5 +71,9 @@ class TableReader {
 
 /// The top-level table `name` of `doc`, or nullptr; InputError if it is not a table.
 const toml::table* top_table(const toml::table& doc, const std::string& name);
+
+/// The top-level array of tables `name` ([[name]] entries) of `doc`, or nullptr; InputError if it
+/// is something else.
+const toml::array* top_table_array(const toml::table& doc, const std::string& name);
 
 }  // namespace bearing::case_schema

@@ -58,6 +58,13 @@ double checked_cage_speed(const ModelInputs& in) {
   return (1.0 - in.cage_slip) * wc;
 }
 
+// The contact angle of the kinematics: the loaded one of the axial static state with an axial
+// load, else the free one (the registry's angle for this kind).
+double kinematic_angle(const ModelInputs& in) {
+  detail::validate_common_inputs(in);  // also when evaluated before checked_cage_speed
+  return in.axial_load != 0.0 ? solve_axial_preload(in).contact_angle : in.bearing.contact_angle;
+}
+
 // One ball's two contacts.
 struct BallContacts {
   double delta_i, delta_o;  // approaches [m], signed
@@ -69,7 +76,7 @@ struct BallContacts {
 class BallDofs final : public BallDofModel {
  public:
   explicit BallDofs(const ModelInputs& in)
-      : set_(in, checked_cage_speed(in)),
+      : set_(in, checked_cage_speed(in), kinematic_angle(in)),
         axial_(in.axial_load != 0.0),
         ring_(axial_ ? 3 : 2),
         balls_(in.bearing.balls),

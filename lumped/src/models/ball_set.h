@@ -21,8 +21,10 @@
 #include "bearing/contact.h"
 #include "bearing/excitation.h"
 #include "bearing/hertz.h"
+#include "bearing/local_defect.h"
 #include "bearing/models/model_inputs.h"
 #include "bearing/solvers/mechanical_system.h"
+#include "defect_excitation.h"
 #include "frame_workspace.h"
 #include "max_balls.h"
 #include "model_input_checks.h"
@@ -74,13 +76,16 @@ struct BallRates {
 /// Geometry, excitation and contact constants of the ball set, evaluated per instant.
 class BallSet {
  public:
-  /// `cage_speed` ω_c [rad/s]; the inputs must have passed validate_common_inputs.
-  BallSet(const ModelInputs& in, double cage_speed)
+  /// `cage_speed` ω_c [rad/s] and `contact_angle` [rad] (the model's kinematics: a ball defect
+  /// turns at the rolling spin they give); the inputs must have passed validate_common_inputs.
+  BallSet(const ModelInputs& in, double cage_speed, double contact_angle)
       : balls_(in.bearing.balls),
         cage_speed_(cage_speed),
         inner_speed_(in.inner_speed),
-        // Only the inner-race waviness and the unbalance turn with the shaft.
-        needs_shaft_(!in.inner_waviness.empty() || in.unbalance != 0.0),
+        defects_(in, cage_speed, contact_angle),
+        // Only the inner-race waviness and defects and the unbalance turn with the shaft.
+        needs_shaft_(!in.inner_waviness.empty() || in.unbalance != 0.0 ||
+                     defects_.turns_with_shaft()),
         K_(in.contact.K),
         exponent_(in.contact.exponent),
         cage_phase_(in.cage_phase),
@@ -141,6 +146,13 @@ class BallSet {
       br.stiffness_rate[j] = 0.0;
       br.outer_stiffness[j] = outer_K_;
       br.outer_stiffness_rate[j] = 0.0;
+      if (!defects_.empty()) {
+        DefectDrop di, d_o;
+        defects_.at_ball(j, theta, inner_speed_ * t, t, di, d_o);
+        br.excitation_rate[j] -= di.rate + d_o.rate;
+        br.outer_profile[j] -= d_o.drop;
+        br.outer_profile_rate[j] -= d_o.rate;
+      }
       if (!tvds()) continue;
       const RaceStiffness &ri = inner_stiffness_, &ro = outer_stiffness_;
       const double ci = ri.varies ? ri.compliance(i.curv) : ri.k0;
@@ -210,6 +222,7 @@ class BallSet {
     for (int j = 0; j < Z; ++j) fr.excitation[j] = -size_error_[j];
     double curv_i[kMaxBalls], curv_o[kMaxBalls];
     add_waviness(fr, fr.excitation, fr.excitation, curv_i, curv_o);
+    defects_.apply(t, fr, fr.excitation, fr.excitation);
 
     if (!tvds()) {
       std::fill(fr.stiffness, fr.stiffness + Z, K_);
@@ -230,6 +243,7 @@ class BallSet {
       fr.inner_excitation[j] = fr.outer_excitation[j] = -0.5 * size_error_[j];
     double curv_i[kMaxBalls], curv_o[kMaxBalls];
     add_waviness(fr, fr.inner_excitation, fr.outer_excitation, curv_i, curv_o);
+    defects_.apply(t, fr, fr.inner_excitation, fr.outer_excitation);
     if (!tvds()) {
       std::fill(fr.inner_stiffness, fr.inner_stiffness + Z, inner_K_);
       std::fill(fr.outer_stiffness, fr.outer_stiffness + Z, outer_K_);
@@ -289,6 +303,7 @@ class BallSet {
   int balls_;
   double cage_speed_;
   double inner_speed_;
+  DefectExcitation defects_;
   bool needs_shaft_;
   double K_;
   double exponent_;

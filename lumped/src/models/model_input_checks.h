@@ -10,6 +10,7 @@
 #include "bearing/errors.h"
 #include "bearing/excitation.h"
 #include "bearing/limits.h"
+#include "bearing/local_defect.h"
 #include "bearing/models/model_inputs.h"
 #include "bearing/units.h"
 #include "max_balls.h"
@@ -45,6 +46,7 @@ inline void validate_common_inputs(const ModelInputs& in) {
   check_waviness(in.inner_waviness.harmonics, in.bearing, "waviness.inner");
   check_waviness(in.outer_waviness.harmonics, in.bearing, "waviness.outer");
   check_ball_size_errors(in.ball_size_errors, in.bearing);
+  check_defects(in.defects, in.bearing);
 }
 
 /// Checks of the contact law that TVDS (model.waviness_stiffness) needs: the Hertz exponent 3/2

@@ -4,6 +4,9 @@
 
 #include <algorithm>
 #include <stdexcept>
+#include <string>
+
+#include "bearing/errors.h"
 
 #include "bearing/models/ball_dofs.h"
 #include "bearing/models/three_dof.h"
@@ -63,10 +66,23 @@ bool ModelDescriptor::owns(const std::string& name) const {
   return std::find(tables.begin(), tables.end(), name) != tables.end();
 }
 
+void check_defects_supported(ModelKind kind, const std::vector<LocalDefect>& defects) {
+  if (defects.empty() || model_descriptor(kind).dynamic) return;
+  std::string dynamic;
+  for (const ModelDescriptor& d : model_registry())
+    if (d.dynamic) dynamic += std::string(dynamic.empty() ? "" : ", ") + name_of(kModelKinds, d.kind);
+  throw InputError("[[defects]]: model.kind = \"" + std::string(name_of(kModelKinds, kind)) +
+                   "\" does not integrate in time, and a spall's impacts last a fraction of a "
+                   "millisecond between its output instants; use a model that does (" +
+                   dynamic + ")");
+}
+
 std::unique_ptr<ModelRun> make_run(ModelKind kind, const ModelInputs& inputs,
                                    const SolverSettings& solver) {
   const ModelDescriptor& d = model_descriptor(kind);
-  if (d.dynamic) return make_dynamic_run(d.dynamic(inputs), inputs, solver);
+  check_defects_supported(kind, inputs.defects);
+  if (d.dynamic)
+    return make_dynamic_run(d.dynamic(inputs), inputs, solver, d.contact_angle(inputs));
   return d.run(inputs, solver);
 }
 

@@ -48,7 +48,7 @@ double checked_cage_speed(const ModelInputs& in) {
 class QuasiStatic final : public QuasiStaticModel {
  public:
   explicit QuasiStatic(const ModelInputs& in)
-      : set_(in, checked_cage_speed(in)),
+      : set_(in, checked_cage_speed(in), in.bearing.contact_angle),
         gap_(in.bearing.ball_gap()),
         inner_speed_(in.inner_speed),
         load_(in.load.x(), in.load.y() - (in.gravity ? in.mass * standard_gravity : 0.0)),

@@ -27,7 +27,7 @@ double checked_cage_speed(const ModelInputs& in) {
 class TwoDofModel final : public BearingModel {
  public:
   explicit TwoDofModel(const ModelInputs& in)
-      : set_(in, checked_cage_speed(in)),
+      : set_(in, checked_cage_speed(in), in.bearing.contact_angle),
         mass_(in.mass),
         damping_(in.damping),
         gap_(in.bearing.ball_gap()),

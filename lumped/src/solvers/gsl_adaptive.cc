@@ -253,6 +253,7 @@ IntegrationStats integrate_gsl(const std::string& method, const gsl_odeiv2_step_
   double t = t0;
   double h = settings.dt;
   while (t < t_end) {
+    if (settings.max_step > 0) h = std::min(h, settings.max_step);
     if (stats.steps > 0) {
       y_before.swap(y_start);
       a_before.swap(a_start);

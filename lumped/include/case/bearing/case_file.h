@@ -18,6 +18,7 @@
 #include "bearing/calibration.h"
 #include "bearing/contact.h"
 #include "bearing/excitation.h"
+#include "bearing/local_defect.h"
 #include "bearing/models/model_kind.h"
 #include "bearing/signal/spectrum.h"
 #include "bearing/solvers/integrator.h"
@@ -42,13 +43,14 @@ struct Operation {
   bool gravity = false;    ///< add the rotor weight −m g to F_y
 };
 
-/// Waviness and ball-size errors, resolved (tables read, band drawn).
+/// Waviness, ball-size errors and local defects, resolved (tables read, band drawn).
 struct Excitations {
   std::vector<WavinessHarmonic> inner_waviness;
   std::vector<WavinessHarmonic> outer_waviness;
   std::vector<double> ball_size_errors;  ///< ΔD_j = D − D_j [m], empty or one per ball
   double ball_error_band = 0.0;          ///< band the errors were drawn from [m] (0: given/none)
   std::uint64_t ball_error_seed = 0;     ///< seed of the draw
+  std::vector<LocalDefect> defects;      ///< [[defects]]: spalls (dynamic model kinds only)
 };
 
 /// The cage and the traction at the ball contacts (model.kind = "balls"; seed 004). Seed 004

@@ -9,6 +9,7 @@
 #include "bearing/bearing.h"
 #include "bearing/contact.h"
 #include "bearing/excitation.h"
+#include "bearing/local_defect.h"
 #include "bearing/traction.h"
 
 namespace bearing {
@@ -35,6 +36,7 @@ struct ModelInputs {
   Waviness outer_waviness;               ///< on the outer race (φ = θ_j)
   std::vector<double> ball_size_errors;  ///< ΔD_j [m], empty or Z entries
   bool waviness_stiffness = false;       ///< TVDS: K varies with the waviness curvature (seed 002)
+  std::vector<LocalDefect> defects;      ///< spalls on the races and balls (local_defect.h)
 
   // The ball-DOF model (model.kind = "balls", seed 004); unused by the others.
   double cage_slip = 0.0;     ///< s_c in [0, 1): the cage turns at ω_ca = (1 − s_c) ω_c [-]

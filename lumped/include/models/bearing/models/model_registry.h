@@ -66,9 +66,18 @@ const ModelDescriptor& model_descriptor(ModelKind kind);
 std::unique_ptr<ModelRun> make_run(ModelKind kind, const ModelInputs& inputs,
                                    const SolverSettings& solver);
 
-/// A dynamic model through the [solver] integrator (dynamic_run.cc).
+/// Local defects need a kind that integrates in time (a dynamic one): the impacts live between
+/// the output instants a quasi-static run would sample. Throws InputError naming [[defects]] and
+/// the kind otherwise.
+void check_defects_supported(ModelKind kind, const std::vector<LocalDefect>& defects);
+
+/// A dynamic model through the [solver] integrator (dynamic_run.cc); `contact_angle` [rad] the
+/// kind's kinematic angle (ModelDescriptor::contact_angle), which the defects' transit times use.
+/// Throws InputError naming solver.dt for a fixed step that would jump over a local defect, or
+/// that RK4 cannot run stably.
 std::unique_ptr<ModelRun> make_dynamic_run(std::unique_ptr<BearingModel> model,
-                                           const ModelInputs& inputs, const SolverSettings& solver);
+                                           const ModelInputs& inputs, const SolverSettings& solver,
+                                           double contact_angle);
 /// The quasi-static model followed through the output times (quasi_static_run.cc).
 std::unique_ptr<ModelRun> make_quasi_static_run(const ModelInputs& inputs,
                                                 const SolverSettings& solver);

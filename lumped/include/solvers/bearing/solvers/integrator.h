@@ -44,6 +44,10 @@ struct IntegratorSettings {
   /// Blow-up bound on |q_i| [m]; exceeded → SolverError. Cyclic DOFs (MechanicalSystem::cyclic)
   /// are exempt: they must only stay finite.
   double max_displacement = 1e-3;
+  /// The largest step the adaptive methods (rkf45, rk8pd, bdf) take [s]; 0: no limit. A run with
+  /// local defects sets it so that no step jumps over one (the error control sees only the step's
+  /// ends and nodes, and would not notice a defect crossed between them).
+  double max_step = 0.0;
 };
 
 /// Called at each output time with the state there and the acceleration a = f/M.
