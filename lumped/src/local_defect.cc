@@ -27,14 +27,17 @@ struct Pivot {
   double drop(double phi) const {
     const double a = r_s * std::sin(phi);
     if (a >= r_p) return depth;  // the ball reaches the floor
-    const double s = sigma_p * (r_p - std::sqrt(r_p * r_p - a * a)) + sigma_s * r_s * (1 - std::cos(phi));
-    return std::min(std::max(s, 0.0), depth);
+    return std::min(std::max(sag(a, phi), 0.0), depth);
+  }
+  // Without cancellation: r − √(r² − a²) = a²/(r + √(r² − a²)), 1 − cos φ = 2 sin²(φ/2).
+  double sag(double a, double phi) const {
+    const double half = std::sin(0.5 * phi);
+    return sigma_p * a * a / (r_p + std::sqrt(r_p * r_p - a * a)) + sigma_s * 2 * r_s * half * half;
   }
   double slope(double phi) const {
     const double a = r_s * std::sin(phi);
     if (a >= r_p) return 0.0;
-    const double root = std::sqrt(r_p * r_p - a * a);
-    const double s = sigma_p * (r_p - root) + sigma_s * r_s * (1 - std::cos(phi));
+    const double root = std::sqrt(r_p * r_p - a * a), s = sag(a, phi);
     if (s <= 0 || s >= depth) return 0.0;
     return sigma_p * a * r_s * std::cos(phi) / root + sigma_s * r_s * std::sin(phi);
   }
@@ -60,15 +63,15 @@ void check_defects(const std::vector<LocalDefect>& defects, const Bearing& b) {
                        ": must lie in (0, D = " + format_quantity(D, "mm", Dimension::length) +
                        "] (a spall longer than the ball is a damaged band, not a local defect)");
     if (!(d.depth > 0 && d.depth <= 0.25 * D))
-      throw InputError(key + "depth = " + format_quantity(d.depth, "mm", Dimension::length) +
-                       ": must lie in (0, D/4 = " +
-                       format_quantity(0.25 * D, "mm", Dimension::length) + "]");
+      throw InputError(
+          key + "depth = " + format_quantity(d.depth, "mm", Dimension::length) +
+          ": must lie in (0, D/4 = " + format_quantity(0.25 * D, "mm", Dimension::length) + "]");
     if (!std::isfinite(d.position))
       throw InputError(key + "position = " + format_number(d.position) + " rad: must be finite");
     if (d.location == DefectLocation::ball && !(d.ball >= 0 && d.ball < b.balls))
       throw InputError(key + "ball = " + std::to_string(d.ball) + ": must lie in [0, " +
-                       std::to_string(b.balls - 1) + "] (bearing.balls = " +
-                       std::to_string(b.balls) + ")");
+                       std::to_string(b.balls - 1) +
+                       "] (bearing.balls = " + std::to_string(b.balls) + ")");
   }
 }
 
@@ -93,7 +96,8 @@ DefectPath::DefectPath(const Bearing& b, const LocalDefect& d, Race contact)
     pivot_radius_ = race_radius(b, contact), pivot_sign_ = sign_of(contact);
   } else {
     const Race race = d.location == DefectLocation::inner ? Race::inner : Race::outer;
-    if (race != contact) throw std::logic_error("DefectPath: a race defect seen from the other race");
+    if (race != contact)
+      throw std::logic_error("DefectPath: a race defect seen from the other race");
     surface_ = race_radius(b, race), surface_sign_ = sign_of(race);
     pivot_radius_ = R, pivot_sign_ = 1.0;
   }

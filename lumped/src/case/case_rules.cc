@@ -2,9 +2,9 @@
 
 #include <cmath>
 
-#include "bearing/constants.h"
 #include <string>
 #include <vector>
+#include "bearing/constants.h"
 
 #include "bearing/calibration.h"
 #include "bearing/models/model_registry.h"
@@ -149,8 +149,8 @@ void read_defect(TableReader& r, Case& c, const ReadContext&) {
                        std::to_string(c.bearing.balls - 1) + ")");
     if (*ball < 0 || *ball >= c.bearing.balls)
       throw InputError(r.full("ball") + " = " + std::to_string(*ball) + ": must lie in [0, " +
-                       std::to_string(c.bearing.balls - 1) + "] (bearing.balls = " +
-                       std::to_string(c.bearing.balls) + ")");
+                       std::to_string(c.bearing.balls - 1) +
+                       "] (bearing.balls = " + std::to_string(c.bearing.balls) + ")");
     d.ball = static_cast<int>(*ball);
     d.position = position.value_or(0.5 * pi);  // between its contacts at t = 0
   } else {
@@ -178,12 +178,12 @@ void check_defect_entries(Case& c) {
 void write_defects(std::ostream& o, const Case& c) {
   bool first = true;
   for (const LocalDefect& d : c.excitation.defects) {
-    o << (first ? "" : "\n") << "[[defects]]\nlocation = " << quoted(name_of(kDefectLocations, d.location))
-      << "\n";
+    o << (first ? "" : "\n")
+      << "[[defects]]\nlocation = " << quoted(name_of(kDefectLocations, d.location)) << "\n";
     if (d.location == DefectLocation::ball) o << "ball = " << d.ball << "\n";
-    o << "position = " << quantity_text(d.position, Dimension::angle) << "\nwidth = " << num17(d.width)
-      << "\ndepth = " << num17(d.depth) << "\nprofile = " << quoted(name_of(kDefectProfiles, d.profile))
-      << "\n";
+    o << "position = " << quantity_text(d.position, Dimension::angle)
+      << "\nwidth = " << num17(d.width) << "\ndepth = " << num17(d.depth)
+      << "\nprofile = " << quoted(name_of(kDefectProfiles, d.profile)) << "\n";
     first = false;
   }
 }

@@ -39,16 +39,25 @@ class DefectExcitation {
     count_ = b.balls;
     for (const LocalDefect& d : in.defects) {
       if (d.location == DefectLocation::ball) {
-        BallDefect bd{d.ball, d.position, ball_spin_speed(b, cage_speed, contact_angle),
-                      DefectPath(b, d, Race::inner), DefectPath(b, d, Race::outer), 0.0};
+        BallDefect bd{d.ball,
+                      d.position,
+                      ball_spin_speed(b, cage_speed, contact_angle),
+                      DefectPath(b, d, Race::inner),
+                      DefectPath(b, d, Race::outer),
+                      0.0};
         bd.half_angle = 0.5 * d.width / bd.outer.surface_radius();
         balls_.push_back(bd);
         continue;
       }
       const bool inner = d.location == DefectLocation::inner;
-      RaceDefect rd{inner, DefectPath(b, d, inner ? Race::inner : Race::outer),
-                    std::cos(d.position), std::sin(d.position), d.position,
-                    inner ? cage_speed - in.inner_speed : cage_speed, 0.0, 0.0};
+      RaceDefect rd{inner,
+                    DefectPath(b, d, inner ? Race::inner : Race::outer),
+                    std::cos(d.position),
+                    std::sin(d.position),
+                    d.position,
+                    inner ? cage_speed - in.inner_speed : cage_speed,
+                    0.0,
+                    0.0};
       rd.half_angle = 0.5 * d.width / rd.path.surface_radius();
       rd.cos_half = std::cos(rd.half_angle);
       races_.push_back(rd);

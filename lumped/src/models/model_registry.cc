@@ -70,7 +70,8 @@ void check_defects_supported(ModelKind kind, const std::vector<LocalDefect>& def
   if (defects.empty() || model_descriptor(kind).dynamic) return;
   std::string dynamic;
   for (const ModelDescriptor& d : model_registry())
-    if (d.dynamic) dynamic += std::string(dynamic.empty() ? "" : ", ") + name_of(kModelKinds, d.kind);
+    if (d.dynamic)
+      dynamic += std::string(dynamic.empty() ? "" : ", ") + name_of(kModelKinds, d.kind);
   throw InputError("[[defects]]: model.kind = \"" + std::string(name_of(kModelKinds, kind)) +
                    "\" does not integrate in time, and a spall's impacts last a fraction of a "
                    "millisecond between its output instants; use a model that does (" +

@@ -43,10 +43,9 @@ namespace bearing {
 
 /// Where a spall is ([[defects]] location).
 enum class DefectLocation { outer, inner, ball };
-inline constexpr Named<DefectLocation> kDefectLocations[] = {
-    {DefectLocation::outer, "outer"},
-    {DefectLocation::inner, "inner"},
-    {DefectLocation::ball, "ball"}};
+inline constexpr Named<DefectLocation> kDefectLocations[] = {{DefectLocation::outer, "outer"},
+                                                             {DefectLocation::inner, "inner"},
+                                                             {DefectLocation::ball, "ball"}};
 
 /// The spall's edges ([[defects]] profile).
 enum class DefectProfile { rectangular, smooth };
