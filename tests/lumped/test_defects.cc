@@ -144,18 +144,32 @@ std::vector<double> approach_change(const Case& with, double t, const std::vecto
 // Where each ball meets a race defect, from the ball angles θ_j = φ₀ + 2πj/Z + ω_c t (MODEL.md
 // §1) with ω_c from kinematics.h, and how much it drops there (the pivot geometry, tested on its
 // own in test_local_defect.cc): at every instant of a few ball passes, every ball.
+// The crowded variant (12 balls of 8 mm on a 33 mm pitch circle, a 7 mm defect) has a defect
+// wider than half the balls' spacing on the inner race: two balls can be over it at once.
 TEST(DefectModels, EachBallDropsWhereTheKinematicsPutItOverARaceDefect) {
-  for (const char* where : {"outer", "inner"}) {
+  const std::vector<std::string> crowded{"bearing.balls=12", "bearing.ball_diameter=8 mm",
+                                         "bearing.pitch_diameter=33 mm"};
+  struct Variant {
+    const char* where;
+    const char* width;
+    std::vector<std::string> sets;
+  };
+  for (const Variant& variant :
+       {Variant{"outer", "0.8 mm", {}}, Variant{"inner", "0.8 mm", {}},
+        Variant{"inner", "7 mm", crowded}, Variant{"outer", "7 mm", crowded}}) {
+    const char* where = variant.where;
     const bool inner = std::string(where) == "inner";
     const Case c = cwru_6205(std::string("[[defects]]\nlocation = \"") + where +
-                             "\"\nposition = \"-80 deg\"\nwidth = \"0.8 mm\"\ndepth = \"20 um\"\n");
+                                 "\"\nposition = \"-80 deg\"\nwidth = \"" + variant.width +
+                                 "\"\ndepth = \"20 um\"\n",
+                             variant.sets);
     const Bearing& b = c.bearing;
     const double wi = c.operation.speed, wc = cage_speed(b, wi), Z = b.balls;
     const double rho = 0.5 * (inner ? b.inner_raceway_diameter() : b.outer_raceway_diameter());
     const LocalDefect& d = c.excitation.defects[0];
     const Race race = inner ? Race::inner : Race::outer;
     const std::vector<double> q{0, 0};
-    int hits = 0;
+    int hits = 0, together = 0;
     for (int k = 0; k < 4000; ++k) {
       const double t = 0.05 * k / 4000;
       const std::vector<double> change = approach_change(c, t, q);
@@ -166,12 +180,16 @@ TEST(DefectModels, EachBallDropsWhereTheKinematicsPutItOverARaceDefect) {
         EXPECT_NEAR(change[static_cast<std::size_t>(j)], -expected, 1e-13) << where << " t " << t;
         hits += expected > 0;
       }
+      together += std::count_if(change.begin(), change.end(), [](double x) { return x < 0; }) > 1;
     }
-    // The time over the defect is the crossing time per pass: passes × transit / sampling step.
+    EXPECT_EQ(together > 0, std::string(variant.width) == "7 mm" && inner) << where;
+    // The time spent over the defect is the crossing time per pass times the passes, to the
+    // sampling step per pass and the crossings the 50 ms window cuts at its ends.
     const BearingFrequencies f = bearing_frequencies(b, wi);
     const double passes = 0.05 * (inner ? f.bpfi : f.bpfo);
     const double transit = d.width / (two_pi * rho / Z * (inner ? f.bpfi : f.bpfo));
-    EXPECT_NEAR(hits * (0.05 / 4000), passes * transit, 2 * 0.05 / 4000 * (passes + 1)) << where;
+    EXPECT_NEAR(hits * (0.05 / 4000), passes * transit, 2 * transit + 0.05 / 4000 * (passes + 1))
+        << where;
   }
 }
 

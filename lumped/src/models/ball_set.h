@@ -83,9 +83,8 @@ class BallSet {
         cage_speed_(cage_speed),
         inner_speed_(in.inner_speed),
         defects_(in, cage_speed, contact_angle),
-        // Only the inner-race waviness and defects and the unbalance turn with the shaft.
-        needs_shaft_(!in.inner_waviness.empty() || in.unbalance != 0.0 ||
-                     defects_.turns_with_shaft()),
+        // Only the inner-race waviness and the unbalance turn with the shaft.
+        needs_shaft_(!in.inner_waviness.empty() || in.unbalance != 0.0),
         K_(in.contact.K),
         exponent_(in.contact.exponent),
         cage_phase_(in.cage_phase),

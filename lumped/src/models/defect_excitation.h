@@ -6,13 +6,16 @@
 // ball set's excitation (2-DOF, 3-DOF, ball DOFs) sees them. The contact constants K stay those
 // of the intact surfaces.
 //
-// Where the contact is on the defect (local_defect.h): race defects from the ball angle θ_j
-// relative to the defect's angle (housing-fixed φ_d for the outer race, φ_d + ω_i t for the inner
-// race); ball defects from the ball's rolling spin ψ = ψ₀ + ω_s t (kinematic, also in the
-// ball-DOF model, whose spin DOF stays cyclic: the defect turns at the rolling spin, not at the
-// DOF's, which departs from it by the traction's sliding). In the hot loop each race defect costs
-// one rotated phasor per ball (cos(θ_j − φ_d) against cos(w/2ρ) rejects the balls away from it);
-// only a ball over the defect takes an atan2.
+// Where the contact is on the defect (local_defect.h): race defects from the ball angles
+// θ_j = φ₀ + 2πj/Z + ω_c t relative to the defect's angle (housing-fixed φ_d for the outer race,
+// φ_d + ω_i t for the inner race); ball defects from the ball's rolling spin ψ = ψ₀ + ω_s t
+// (kinematic, also in the ball-DOF model, whose spin DOF stays cyclic: the defect turns at the
+// rolling spin, not at the DOF's, which departs from it by the traction's sliding).
+//
+// Cost: the balls are evenly spaced, so the ball nearest a race defect is found from one angle,
+// x = φ₀ − φ_d + (ω_c [− ω_i]) t: with k the integer nearest x/(2π/Z), the ball m − k (mod Z) is at
+// x − k·2π/Z + m·2π/Z from the defect, and only m = 0 (± 1 for a defect wider than half a ball
+// spacing) can be over it. A few flops per defect and instant, whatever Z.
 
 #include <cmath>
 #include <vector>
@@ -50,45 +53,35 @@ class DefectExcitation {
         continue;
       }
       const bool inner = d.location == DefectLocation::inner;
-      RaceDefect rd{inner,
-                    DefectPath(b, d, inner ? Race::inner : Race::outer),
-                    std::cos(d.position),
-                    std::sin(d.position),
-                    d.position,
-                    inner ? cage_speed - in.inner_speed : cage_speed,
-                    0.0,
-                    0.0};
+      RaceDefect rd{inner, DefectPath(b, d, inner ? Race::inner : Race::outer), d.position,
+                    in.cage_phase - d.position, inner ? cage_speed - in.inner_speed : cage_speed};
       rd.half_angle = 0.5 * d.width / rd.path.surface_radius();
-      rd.cos_half = std::cos(rd.half_angle);
+      rd.spacing = two_pi / b.balls;
+      rd.reach = static_cast<int>(std::ceil(rd.half_angle / rd.spacing - 0.5));
       races_.push_back(rd);
     }
   }
 
   bool empty() const { return races_.empty() && balls_.empty(); }
-  /// Whether a defect turns with the shaft (the ball set must then track the shaft angle).
-  bool turns_with_shaft() const {
-    for (const RaceDefect& d : races_)
-      if (d.inner) return true;
-    return false;
-  }
 
   /// Subtracts the drops at time t [s] from inner[j] and outer[j], the excitations of ball j's
   /// inner and outer contact [m] (one array for both: the ball's combined excitation), with the
   /// ball and shaft phasors of `fr` (BallFrame or RaceFrame).
   template <class Frame>
-  void apply(double t, const Frame& fr, double* inner, double* outer) const {
+  void apply(double t, const Frame& /*fr*/, double* inner, double* outer) const {
     for (const RaceDefect& d : races_) {
-      double cd = d.cos, sd = d.sin;  // the defect's direction now
-      if (d.inner) {
-        cd = d.cos * fr.cos_shaft - d.sin * fr.sin_shaft;
-        sd = d.sin * fr.cos_shaft + d.cos * fr.sin_shaft;
-      }
+      const double x = d.phase + d.relative_speed * t;
+      // k = round(x / spacing) by the 1.5·2^52 shifter (std::nearbyint is a libm call here)
+      constexpr double kShifter = 6755399441055744.0;
+      const double k = (x / d.spacing + kShifter) - kShifter;
+      const double r0 = x - k * d.spacing;
       double* e = d.inner ? inner : outer;
-      for (int j = 0; j < count_; ++j) {
-        const double c = fr.cos_theta[j] * cd + fr.sin_theta[j] * sd;  // cos(θ_j − φ)
-        if (c <= d.cos_half) continue;
-        const double s = fr.sin_theta[j] * cd - fr.cos_theta[j] * sd;
-        e[j] -= d.path.drop(d.path.surface_radius() * std::atan2(s, c) + 0.5 * d.path.width());
+      for (int m = -d.reach; m <= d.reach; ++m) {
+        const double r = r0 + m * d.spacing;
+        if (std::abs(r) >= d.half_angle) continue;
+        long long j = (static_cast<long long>(m) - static_cast<long long>(k)) % count_;
+        if (j < 0) j += count_;
+        e[j] -= d.path.drop(d.path.surface_radius() * r + 0.5 * d.path.width());
       }
     }
     for (const BallDefect& d : balls_) {
@@ -125,9 +118,11 @@ class DefectExcitation {
   struct RaceDefect {
     bool inner;
     DefectPath path;
-    double cos, sin, position;  // φ_d [rad]
-    double relative_speed;      // dΔ/dt of the ball relative to the defect [rad/s]
-    double half_angle, cos_half;
+    double position;        // φ_d [rad]
+    double phase;           // φ₀ − φ_d [rad]
+    double relative_speed;  // dx/dt: ω_c, or ω_c − ω_i on the inner race [rad/s]
+    double half_angle = 0, spacing = 0;
+    int reach = 0;  // the neighbours of the nearest ball that can be over the defect
   };
   struct BallDefect {
     int ball;
