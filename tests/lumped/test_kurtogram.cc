@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <complex>
 #include <limits>
 #include <string>
 #include <vector>
@@ -13,6 +14,7 @@
 #include "bearing/constants.h"
 #include "bearing/errors.h"
 #include "bearing/signal/envelope.h"
+#include "bearing/signal/fft.h"
 #include "bearing/signal/kurtogram.h"
 #include "bearing/signal/peaks.h"
 #include "synthetic_signals.h"
@@ -166,6 +168,33 @@ TEST(Kurtogram, RejectsShortRecordsNonFiniteSamplesAndBadBands) {
   EXPECT_THROW(spectral_kurtosis(tone(1, 1, 100), kFs, {0, 10001}), InputError);
   EXPECT_NO_THROW(fast_kurtogram(tone(1, 1, 2), kFs));  // shortest record: level 0 only
   EXPECT_EQ(fast_kurtogram(tone(1, 1, 2), kFs).map.size(), 1u);
+}
+
+// The complex DFT both ways against the direct sums, on a length with factors 2, 3, 5 and 7.
+TEST(ComplexFft, MatchesTheDirectDftBothWays) {
+  const std::size_t n = 210;
+  test::SplitMix64 g(3);
+  std::vector<std::complex<double>> x(n);
+  for (auto& v : x) v = {g.normal(), g.normal()};
+  std::vector<std::complex<double>> X = x, back;
+  ComplexFft fft(n);
+  fft.forward(X);
+  double worst = 0;
+  for (std::size_t k = 0; k < n; ++k) {
+    std::complex<double> direct = 0;
+    for (std::size_t j = 0; j < n; ++j)
+      direct += x[j] * std::polar(1.0, -two_pi * static_cast<double>((j * k) % n) / n);
+    worst = std::max(worst, std::abs(X[k] - direct));
+  }
+  EXPECT_LT(worst, 1e-12);
+  back = X;
+  fft.inverse(back);  // unscaled: N x
+  for (std::size_t j = 0; j < n; ++j) EXPECT_NEAR(std::abs(back[j] / double(n) - x[j]), 0, 1e-14);
+  EXPECT_EQ(fast_fft_length(211), 216u);
+  EXPECT_EQ(fast_fft_length(1), 1u);
+  EXPECT_THROW(ComplexFft(0), InputError);
+  EXPECT_THROW(ComplexFft(67), InputError);  // prime above 64
+  EXPECT_THROW(fft.forward(x = std::vector<std::complex<double>>(3)), InputError);
 }
 
 }  // namespace
