@@ -46,11 +46,18 @@ void check_band(FrequencyBand band, double rate) {
                      format_number(nyquist) + " Hz (the Nyquist frequency)");
 }
 
+void check_noise_floor(double noise_floor) {
+  if (!(std::isfinite(noise_floor) && noise_floor >= 0))
+    throw InputError("spectral kurtosis: noise floor = " + format_number(noise_floor) +
+                     ": must be finite and not negative (a share of the record's energy)");
+}
+
 // The one-sided DFT X_0 … X_{⌊N/2⌋} of the record, mean removed and Hann-windowed, and its energy
 // Σ_{k≥1} |X_k|²; the complex FFTs of the band lengths used so far.
 class BandKurtosis {
  public:
-  BandKurtosis(const std::vector<double>& x, double rate) : n_(x.size()), rate_(rate) {
+  BandKurtosis(const std::vector<double>& x, double rate, double noise_floor)
+      : n_(x.size()), rate_(rate), noise_floor_(noise_floor) {
     double mean = 0;
     for (double v : x) mean += v;
     mean /= static_cast<double>(n_);
@@ -66,20 +73,26 @@ class BandKurtosis {
 
   double resolution() const { return rate_ / static_cast<double>(n_); }
 
+  struct Result {
+    double spectral_kurtosis = 0;  // [-]
+    double energy_fraction = 0;    // of the record's (windowed, mean removed) energy [-]
+  };
+
   // SK of the bins in [low, high] (inclusive, 1e-9 bin of slack; never DC).
-  double operator()(FrequencyBand band) {
+  Result operator()(FrequencyBand band, std::size_t level_length = 0) {
     const double res = resolution();
     const double first = std::ceil(band.low / res - 1e-9);
     const double last = std::floor(band.high / res + 1e-9);
     const std::size_t k0 = first < 1 ? 1 : static_cast<std::size_t>(first);
     const std::size_t k1 = std::min(static_cast<std::size_t>(last), spectrum_.size() - 1);
-    if (k1 < k0) return 0;  // no bin inside the band
+    if (k1 < k0) return {};  // no bin inside the band
     const std::size_t m = k1 - k0 + 1;
     double band_energy = 0;
     for (std::size_t k = k0; k <= k1; ++k) band_energy += std::norm(spectrum_[k]);
-    if (!(band_energy > kSilentBand * energy_)) return 0;
-    // c on L ≥ 2M − 1 points: the band's bins shifted to baseband, zero padded.
-    const std::size_t length = fast_fft_length(2 * m - 1);
+    if (!(band_energy > kSilentBand * energy_)) return {0, energy_ > 0 ? band_energy / energy_ : 0};
+    // c on L ≥ 2M − 1 points (the level's common length if long enough): the band's bins shifted
+    // to baseband, zero padded, transformed back.
+    const std::size_t length = std::max(fast_fft_length(2 * m - 1), level_length);
     auto [it, added] = transforms_.try_emplace(length, length);
     scratch_.assign(length, 0.0);
     for (std::size_t i = 0; i < m; ++i) scratch_[i] = spectrum_[k0 + i];
@@ -94,12 +107,18 @@ class BandKurtosis {
     }
     p2 /= static_cast<double>(length);
     p4 /= static_cast<double>(length);
-    return kHannKurtosisCorrection * p4 / (p2 * p2) - 2;
+    const double sk = kHannKurtosisCorrection * p4 / (p2 * p2) - 2;
+    // The floor's share of the band: ν E over the ⌊N/2⌋ bins 1 … ⌊N/2⌋, M of them here.
+    const double floor =
+        noise_floor_ * energy_ * static_cast<double>(m) / static_cast<double>(spectrum_.size() - 1);
+    const double masked = band_energy / (band_energy + floor);
+    return {sk * masked * masked, band_energy / energy_};
   }
 
  private:
   std::size_t n_;
   double rate_;
+  double noise_floor_;
   std::vector<std::complex<double>> spectrum_;
   double energy_ = 0;
   std::map<std::size_t, ComplexFft> transforms_;
@@ -108,21 +127,25 @@ class BandKurtosis {
 
 }  // namespace
 
-double spectral_kurtosis(const std::vector<double>& x, double sample_rate, FrequencyBand band) {
+double spectral_kurtosis(const std::vector<double>& x, double sample_rate, FrequencyBand band,
+                         double noise_floor) {
   check_record(x, sample_rate);
   check_band(band, sample_rate);
-  BandKurtosis sk(x, sample_rate);
-  return sk(band);
+  check_noise_floor(noise_floor);
+  BandKurtosis sk(x, sample_rate, noise_floor);
+  return sk(band).spectral_kurtosis;
 }
 
-Kurtogram fast_kurtogram(const std::vector<double>& x, double sample_rate, double min_bandwidth) {
+Kurtogram fast_kurtogram(const std::vector<double>& x, double sample_rate,
+                         const KurtogramSettings& settings) {
   check_record(x, sample_rate);
-  if (!(std::isfinite(min_bandwidth) && min_bandwidth >= 0))
-    throw InputError("kurtogram: minimum band width = " + format_number(min_bandwidth) +
+  if (!(std::isfinite(settings.min_bandwidth) && settings.min_bandwidth >= 0))
+    throw InputError("kurtogram: minimum band width = " + format_number(settings.min_bandwidth) +
                      " Hz: must be finite and not negative");
-  BandKurtosis sk(x, sample_rate);
+  check_noise_floor(settings.noise_floor);
+  BandKurtosis sk(x, sample_rate, settings.noise_floor);
   const double nyquist = 0.5 * sample_rate;
-  const double narrowest = std::max(min_bandwidth, kKurtogramMinBins * sk.resolution());
+  const double narrowest = std::max(settings.min_bandwidth, kKurtogramMinBins * sk.resolution());
   // Band counts 1, 2, 3, 4, 6, 8, 12, …: the binary level 2^j, then (j ≥ 1) the third level
   // 3·2^(j−1), while the bands stay wide enough; the whole band always.
   std::vector<int> levels = {1};
@@ -133,13 +156,18 @@ Kurtogram fast_kurtogram(const std::vector<double>& x, double sample_rate, doubl
   Kurtogram k;
   for (int bands : levels) {
     const double width = nyquist / bands;
+    // One transform length for the level (its bands differ by a bin or two): one FFT table.
+    const auto widest = static_cast<std::size_t>(std::ceil(width / sk.resolution())) + 2;
+    const std::size_t level_length = fast_fft_length(2 * widest - 1);
     for (int i = 0; i < bands; ++i) {
       KurtogramBand b;
       b.level = std::log2(static_cast<double>(bands));
       b.bands = bands;
       b.index = i;
       b.band = {i * width, i + 1 == bands ? nyquist : (i + 1) * width};
-      b.spectral_kurtosis = sk(b.band);
+      const BandKurtosis::Result r = sk(b.band, level_length);
+      b.spectral_kurtosis = r.spectral_kurtosis;
+      b.energy_fraction = r.energy_fraction;
       if (k.map.empty() || b.spectral_kurtosis > k.best.spectral_kurtosis) k.best = b;
       k.map.push_back(b);
     }
