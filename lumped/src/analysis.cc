@@ -34,6 +34,7 @@ RunSummary analyse(const Response& resp, const BearingFrequencies& f,
     s.channels.push_back(std::move(ch));
   }
   s.envelopes = analyse_envelopes(resp, f, settings.envelope, settings.window, settings.peaks);
+  if (!s.envelopes.empty()) s.diagnosis = diagnose(s.envelopes, f);
   return s;
 }
 

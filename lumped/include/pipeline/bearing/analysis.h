@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "bearing/diagnosis.h"
 #include "bearing/envelope_analysis.h"
 #include "bearing/kinematics.h"
 #include "bearing/noise.h"
@@ -37,11 +38,13 @@ struct RunSummary {
   std::vector<std::string> spectrum_channels;  ///< channels with a spectrum (the ring's)
   std::vector<Spectrum> spectra;               ///< one per spectrum channel
   std::vector<EnvelopeSummary> envelopes;      ///< one per ring acceleration, if asked for
+  std::optional<Diagnosis> diagnosis;          ///< diagnose(envelopes), with envelopes only
   std::optional<BearingNoise> noise;           ///< sound at the microphones ([acoustics] only)
 };
 
 /// Statistics of every channel, and spectra and peaks (labelled with `frequencies`) of the ring's
-/// channels, over the post-transient window; with settings.envelope, analyse_envelopes().
+/// channels, over the post-transient window; with settings.envelope, analyse_envelopes() and
+/// diagnose() (default thresholds).
 /// Leaves `noise` empty.
 RunSummary analyse(const Response& response, const BearingFrequencies& frequencies,
                    const AnalysisSettings& settings);
