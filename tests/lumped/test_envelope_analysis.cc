@@ -2,13 +2,19 @@
 // family (an impact train at BPFO → outer; at BPFI, modulated at the shaft rate → inner; at
 // 2×BSF, modulated at the cage rate → ball), steady bearing lines are not (→ none); the default
 // case's healthy bearing, with and without waviness, is not diagnosed; output.envelope_band reads,
-// checks and round-trips.
+// checks, round-trips and drives `bearing-sim run`'s envelope.csv and summary blocks.
 
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
 #include <string>
 #include <vector>
+
+#include <nlohmann/json.hpp>
 
 #include "bearing/case_file.h"
 #include "bearing/constants.h"
@@ -21,6 +27,7 @@
 namespace bearing {
 namespace {
 
+namespace fs = std::filesystem;
 using test::ImpactTrain;
 
 constexpr double kFs = 20000;      // [Hz]
@@ -282,6 +289,105 @@ TEST(EnvelopeBandKey, ReadsChecksAndRoundTripsExactly) {
   expect_error({{"output.envelope_band", "[1, 2, 3]"}}, "or a band [low, high]");
   expect_error({{"output.envelope_band", "2000"}}, "output.envelope_band = 2000");
   expect_error({{"output.envelope_band", "[\"2 kHz\", \"8 m\"]"}}, "output.envelope_band[1]");
+}
+
+// ----------------------------------------------------------------------------------------------
+// bearing-sim run
+
+std::string read(const fs::path& p) {
+  std::ifstream f(p, std::ios::binary);
+  std::stringstream s;
+  s << f.rdbuf();
+  return s.str();
+}
+
+int sim(const std::string& args, std::string* out = nullptr) {
+  const fs::path o = fs::path(::testing::TempDir()) / "envelope_cli.stdout.txt";
+  const std::string cmd = std::string(BEARING_SIM) + " " + args + " >" + o.string() + " 2>&1";
+  const int status = std::system(cmd.c_str());
+  if (out) *out = read(o);
+  return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+}
+
+fs::path fresh_dir(const std::string& name) {
+  const fs::path d = fs::path(::testing::TempDir()) / name;
+  fs::remove_all(d);
+  return d;
+}
+
+const std::string kShort = " --set solver.duration=0.3 --set solver.transient=0.1 --quiet";
+
+TEST(EnvelopeCli, AutoWritesEnvelopeCsvAndTheSummaryBlocks) {
+  const fs::path d = fresh_dir("run_envelope");
+  std::string out;
+  ASSERT_EQ(sim("run --out " + d.string() + kShort + " --set output.envelope_band=auto", &out), 0)
+      << out;
+  const std::string csv = read(d / "envelope.csv");
+  EXPECT_EQ(csv.substr(0, csv.find('\n')), "frequency,env_ax,env_ay");
+  // 0.2 s analysed at 20 kHz: 4000 samples, bins 0 … 2000 at 5 Hz, plus the header.
+  EXPECT_EQ(std::count(csv.begin(), csv.end(), '\n'), 2002);
+  EXPECT_EQ(csv.find("nan"), std::string::npos);
+
+  const auto j = nlohmann::json::parse(read(d / "summary.json"));
+  for (const char* ch : {"ax", "ay"}) {
+    const auto& e = j["envelope"][ch];
+    ASSERT_EQ(e["band"].size(), 2u) << ch;
+    EXPECT_LT(e["band"][0].get<double>(), e["band"][1].get<double>());
+    EXPECT_EQ(e["band_source"], "auto");
+    EXPECT_TRUE(e["spectral_kurtosis"].is_number());
+    EXPECT_FALSE(e["kurtogram"].empty());
+    ASSERT_FALSE(e["peaks"].empty());
+    for (const char* k : {"frequency", "amplitude", "label_error"})
+      EXPECT_TRUE(e["peaks"][0][k].is_number()) << k;
+    EXPECT_TRUE(e["peaks"][0]["label"].is_string());
+  }
+  const auto& g = j["diagnosis"];
+  EXPECT_EQ(g["family"], "none");
+  EXPECT_TRUE(g["channel"] == "ax" || g["channel"] == "ay");
+  EXPECT_TRUE(g["evidence"].is_array());
+  EXPECT_TRUE(g["reason"].is_string());
+  EXPECT_EQ(j["units"]["envelope.*.band"], "Hz");
+  EXPECT_NE(out.find("Envelope spectra"), std::string::npos) << out;
+  EXPECT_NE(out.find("Diagnosis: none — not impulsive"), std::string::npos) << out;
+  EXPECT_NE(read(d / "case.toml").find("envelope_band = \"auto\""), std::string::npos);
+
+  // The resolved case repeats the envelope analysis; a run without it removes envelope.csv and
+  // writes no envelope or diagnosis block.
+  const fs::path again = fresh_dir("run_envelope_again");
+  ASSERT_EQ(sim("run " + (d / "case.toml").string() + " --out " + again.string() + " --quiet"), 0);
+  EXPECT_EQ(read(again / "envelope.csv"), csv);
+  ASSERT_EQ(sim("run --out " + d.string() + kShort), 0);
+  EXPECT_FALSE(fs::exists(d / "envelope.csv"));
+  const auto plain = nlohmann::json::parse(read(d / "summary.json"));
+  EXPECT_FALSE(plain.contains("envelope"));
+  EXPECT_FALSE(plain.contains("diagnosis"));
+}
+
+TEST(EnvelopeCli, GivenBandAndBadBands) {
+  const fs::path d = fresh_dir("run_envelope_given");
+  std::string out;
+  ASSERT_EQ(sim("run --out " + d.string() + kShort +
+                    " --set 'output.envelope_band=[\"2 kHz\",\"8 kHz\"]'",
+                &out),
+            0)
+      << out;
+  const auto j = nlohmann::json::parse(read(d / "summary.json"));
+  EXPECT_EQ(j["envelope"]["ay"]["band"][0], 2000.0);
+  EXPECT_EQ(j["envelope"]["ay"]["band"][1], 8000.0);
+  EXPECT_EQ(j["envelope"]["ay"]["band_source"], "given");
+  EXPECT_FALSE(j["envelope"]["ay"].contains("kurtogram"));
+  EXPECT_NE(read(d / "case.toml").find("envelope_band = [2000.0, 8000.0]"), std::string::npos);
+  const fs::path bad = fresh_dir("run_envelope_bad");
+  EXPECT_EQ(sim("run --out " + bad.string() + kShort +
+                    " --set 'output.envelope_band=[\"2 kHz\",\"20 kHz\"]'",
+                &out),
+            2);
+  EXPECT_NE(out.find("output.envelope_band = [2000 Hz, 20000 Hz]: allowed 0 <= low < high <= "
+                     "10000 Hz"),
+            std::string::npos)
+      << out;
+  EXPECT_FALSE(fs::exists(bad / "summary.json"));
+  EXPECT_EQ(sim("run --out " + bad.string() + kShort + " --set output.envelope_band=automatic"), 2);
 }
 
 }  // namespace
