@@ -18,6 +18,7 @@
 #include "bearing/decimal.h"
 #include "bearing/errors.h"
 #include "bearing/json_helpers.h"
+#include "envelope_report.h"
 
 namespace bearing {
 
@@ -136,6 +137,17 @@ void write_spectrum_csv(const fs::path& path, const RunSummary& s) {
       path, "frequency", s.spectra.empty() ? none : s.spectra.front().frequency,
       s.spectrum_channels, [&](std::size_t i, std::size_t b) { return s.spectra[i].amplitude[b]; },
       [&](std::size_t i, std::size_t) { return "spectrum of " + s.spectrum_channels[i]; });
+}
+
+// envelope.csv: frequency, then env_<channel> per ring acceleration (the envelope spectra) [unit of
+// the channel].
+void write_envelope_csv(const fs::path& path, const RunSummary& s) {
+  std::vector<std::string> names;
+  for (const EnvelopeSummary& e : s.envelopes) names.push_back("env_" + e.channel);
+  write_table(
+      path, "frequency", s.envelopes.front().spectrum.frequency, names,
+      [&](std::size_t i, std::size_t b) { return s.envelopes[i].spectrum.amplitude[b]; },
+      [&](std::size_t i, std::size_t) { return "envelope spectrum of " + s.envelopes[i].channel; });
 }
 
 // pressure.csv: t over the analysis window, then p1…pM (one column per microphone) [Pa].
@@ -290,6 +302,11 @@ nlohmann::json summary_json(const Case& c, const SimulationResult& r, const RunS
     j["units"]["cage.ball_inertia"] = "kg m^2";
     j["units"]["cage.ball_damping"] = "N s/m";
   }
+  if (!s.envelopes.empty()) {
+    j["envelope"] = envelope_json(s.envelopes);
+    add_envelope_units(j["units"]);
+  }
+  if (s.diagnosis) j["diagnosis"] = diagnosis_json(*s.diagnosis);
   if (s.noise) {
     j["acoustics"] = acoustics_json(c, *s.noise);
     j["units"]["acoustics.microphones.spl_*"] = "dB re 20 uPa (null: source \"none\", or silent)";
@@ -344,6 +361,7 @@ std::string summary_text(const Case& c, const SimulationResult& r, const RunSumm
     }
     o << "\n";
   }
+  o << envelope_text(s);
   if (r.quasi_static)
     std::snprintf(buf, sizeof buf,
                   "Solver: quasi-static Newton, %ld instants, %ld iterations, %ld fallbacks, "
@@ -398,6 +416,7 @@ void write_run(const std::string& dir, const Case& c, const SimulationResult& r,
   if (ec) throw InputError("--out " + dir + ": cannot create the folder (" + ec.message() + ")");
   std::vector<std::string> names = {"response.csv", "spectrum.csv", "summary.json", "case.toml"};
   if (s.noise) names.push_back("pressure.csv");
+  if (!s.envelopes.empty()) names.push_back("envelope.csv");
   std::vector<fs::path> temporary;
   for (const auto& name : names) temporary.push_back(fs::path(dir) / ("." + name + ".partial"));
   try {
@@ -406,11 +425,13 @@ void write_run(const std::string& dir, const Case& c, const SimulationResult& r,
     write_text(temporary[2], summary);
     write_text(temporary[3], resolved);
     if (s.noise) write_pressure_csv(temporary[4], *s.noise);
+    if (!s.envelopes.empty()) write_envelope_csv(temporary.back(), s);
     // The previous run's files are removed first: renaming onto an existing file makes ext4 write
     // the new file's blocks out at once (its auto_da_alloc safeguard), ~3 ms here.
-    // A pressure.csv left by an earlier run with acoustics would not belong to this one.
+    // A pressure.csv or envelope.csv left by an earlier run would not belong to this one.
     for (std::size_t i = 0; i < names.size(); ++i) fs::remove(fs::path(dir) / names[i]);
     if (!s.noise) fs::remove(fs::path(dir) / "pressure.csv");
+    if (s.envelopes.empty()) fs::remove(fs::path(dir) / "envelope.csv");
     for (std::size_t i = 0; i < names.size(); ++i)
       fs::rename(temporary[i], fs::path(dir) / names[i]);
   } catch (const fs::filesystem_error& e) {

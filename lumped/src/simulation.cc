@@ -48,6 +48,7 @@ RunSettings run_settings(const Case& c) {
   s.output.ball_dynamics = c.output.ball_dynamics;
   s.analysis.window = c.output.window;
   s.analysis.peaks = c.output.peaks;
+  s.analysis.envelope = c.output.envelope_band;
   s.acoustics = c.acoustics;
   return s;
 }

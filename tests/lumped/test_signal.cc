@@ -16,6 +16,7 @@
 #include "bearing/signal/peaks.h"
 #include "bearing/signal/spectrum.h"
 #include "bearing/signal/statistics.h"
+#include "synthetic_signals.h"
 
 namespace bearing {
 namespace {
@@ -23,26 +24,7 @@ namespace {
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 constexpr double kInf = std::numeric_limits<double>::infinity();
 
-// A fixed-seed generator of our own (std:: distributions differ between standard libraries).
-class SplitMix64 {
- public:
-  explicit SplitMix64(std::uint64_t seed) : state_(seed) {}
-  std::uint64_t next() {
-    std::uint64_t z = (state_ += 0x9E3779B97F4A7C15ull);
-    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
-    z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
-    return z ^ (z >> 31);
-  }
-  double uniform() { return (static_cast<double>(next() >> 11) + 0.5) * 0x1.0p-53; }  // (0, 1)
-  // Box–Muller; the second variate is dropped to keep it short.
-  double normal() {
-    const double u1 = uniform(), u2 = uniform();
-    return std::sqrt(-2.0 * std::log(u1)) * std::cos(two_pi * u2);
-  }
-
- private:
-  std::uint64_t state_;
-};
+using test::SplitMix64;  // a fixed-seed generator of our own (synthetic_signals.h)
 
 // A sin(2π (cycles / n) j + phase) + offset, j = 0 … n−1, with the phase reduced exactly in
 // integers so large j loses no accuracy when cycles is an integer.

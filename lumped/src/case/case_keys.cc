@@ -357,6 +357,13 @@ std::vector<Key> output_keys() {
           "need model.kind = \"balls\" (the case has \"" +
           std::string(name_of(kModelKinds, c.model.kind)) + "\")");
   };
+  Key envelope = described(
+      "output.envelope_band", Kind::vector2, D::frequency,
+      "\"none\" (default) | \"auto\" (fast kurtogram) | [low, high], e.g. [\"2 kHz\", \"8 kHz\"]: "
+      "envelope spectra of the accelerations and a diagnosis");
+  envelope.read = read_envelope_band;
+  envelope.check = check_envelope_band;
+  envelope.write = write_envelope_band;
   return {
       table("output", "what run writes"),
       boolean(
@@ -378,6 +385,7 @@ std::vector<Key> output_keys() {
           "output.peaks", "peaks listed per channel (default 10)",
           [](auto& c) -> auto& { return c.output.peaks; },
           within(0, 1000, false, false, "allowed 0 to 1000")),
+      envelope,
   };
 }
 

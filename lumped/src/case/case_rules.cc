@@ -211,6 +211,48 @@ void read_calibration_file(TableReader& r, Case& c, const ReadContext& context) 
   }
 }
 
+void read_envelope_band(TableReader& r, Case& c, const ReadContext&) {
+  const toml::node* n = r.node("envelope_band");
+  if (!n) return;
+  const std::string key = r.full("envelope_band");
+  const auto bad = [&] {
+    return InputError(key + " = " + shown_value(*n) +
+                      ": expected \"none\", \"auto\" (the band of largest spectral kurtosis) or "
+                      "a band [low, high], e.g. [\"2 kHz\", \"8 kHz\"]");
+  };
+  EnvelopeBandSetting& e = c.output.envelope_band;
+  if (const auto* word = n->as_string()) {
+    // "none" or "auto"; "given" is what summary.json calls a band given here as [low, high].
+    const auto source = find_named(kEnvelopeBandSources, word->get());
+    if (!source || *source == EnvelopeBandSource::given) throw bad();
+    e = {*source, {}};
+    return;
+  }
+  const toml::array* band = n->as_array();
+  if (!band || band->size() != 2) throw bad();
+  e.source = EnvelopeBandSource::given;
+  e.band.low = read_quantity(*band->get(0), key + "[0] (low)", Dimension::frequency);
+  e.band.high = read_quantity(*band->get(1), key + "[1] (high)", Dimension::frequency);
+}
+
+void check_envelope_band(const Case& c) {
+  const EnvelopeBandSetting& e = c.output.envelope_band;
+  if (e.source != EnvelopeBandSource::given) return;
+  const double nyquist = 0.5 * c.solver.output_rate;
+  if (!(e.band.low >= 0 && e.band.low < e.band.high && e.band.high <= nyquist))
+    throw InputError("output.envelope_band = [" + fmt_si(e.band.low, Dimension::frequency) + ", " +
+                     fmt_si(e.band.high, Dimension::frequency) + "]: allowed 0 <= low < high <= " +
+                     fmt_si(nyquist, Dimension::frequency) + " (solver.output_rate / 2)");
+}
+
+void write_envelope_band(std::ostream& o, const Case& c) {
+  const EnvelopeBandSetting& e = c.output.envelope_band;
+  if (e.source == EnvelopeBandSource::automatic)
+    o << "envelope_band = " << quoted(name_of(kEnvelopeBandSources, e.source)) << "\n";
+  if (e.source == EnvelopeBandSource::given)
+    o << "envelope_band = [" << num17(e.band.low) << ", " << num17(e.band.high) << "]\n";
+}
+
 void check_solver_times(Case& c) {
   const SolverOptions& s = c.solver;
   require(s.transient >= 0 && s.transient < s.duration, "solver.transient", s.transient,

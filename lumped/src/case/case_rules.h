@@ -1,7 +1,8 @@
 #pragma once
 // Private to the case schema: the tables whose keys need more than one value each — the bearing
 // preset, waviness entries (or a CSV table), ball-size errors (given or drawn), local defects, the
-// calibration file, and the rules that tie the [solver] and [acoustics] keys together.
+// calibration file, the envelope band (a word or two frequencies), and the rules that tie the
+// [solver] and [acoustics] keys together.
 
 #include <ostream>
 #include <string>
@@ -31,6 +32,12 @@ void write_defects(std::ostream& o, const Case& c);
 /// model.calibration: read and checked against the bearing now, so a calibration for another
 /// bearing never reaches a model.
 void read_calibration_file(TableReader& r, Case& c, const ReadContext& context);
+
+/// output.envelope_band: "none" (the default; not written), "auto", or [low, high] [Hz], within
+/// 0 <= low < high <= solver.output_rate / 2.
+void read_envelope_band(TableReader& r, Case& c, const ReadContext& context);
+void check_envelope_band(const Case& c);
+void write_envelope_band(std::ostream& o, const Case& c);
 
 /// solver.transient against solver.duration, and the number of output samples.
 void check_solver_times(Case& c);

@@ -53,6 +53,8 @@ class TableReader {
   std::optional<std::vector<double>> list(const std::string& key);
   /// An array of [r, angle] pairs: a length and an angle each.
   std::optional<std::vector<Microphone>> points(const std::string& key);
+  /// The node of `key` as written (nullptr if absent), for a key whose row reads it itself.
+  const toml::node* node(const std::string& key) { return get(key); }
   const toml::table* subtable(const std::string& key);
   const toml::array* table_array(const std::string& key);
   /// Throws for the first key of the table that no read asked for.

@@ -1,5 +1,5 @@
 // Real DFT both ways: GSL's mixed-radix FFT, or Bluestein's algorithm for lengths with a large
-// prime factor.
+// prime factor; complex DFT of fast lengths: GSL's mixed-radix FFT.
 
 #include "bearing/signal/fft.h"
 
@@ -214,6 +214,57 @@ std::vector<double> RealFft::inverse(const std::vector<std::complex<double>>& X)
     throw InputError("FFT: " + std::to_string(X.size()) + " bins given to an inverse of " +
                      std::to_string(n_) + " points (needs " + std::to_string(n_ / 2 + 1) + ")");
   return tables_->inverse(X);
+}
+
+std::size_t fast_fft_length(std::size_t n) {
+  return n <= 1 ? 1 : smooth_length(n);
+}
+
+class ComplexFft::Tables {
+ public:
+  explicit Tables(std::size_t n)
+      : table_(gsl_fft_complex_wavetable_alloc(n)), work_(gsl_fft_complex_workspace_alloc(n)) {
+    if (!table_ || !work_) no_tables(n);
+  }
+  // std::complex<double> is laid out as double[2] (the standard guarantees it): GSL's packed
+  // complex array.
+  void transform(std::vector<std::complex<double>>& x, gsl_fft_direction sign) {
+    if (gsl_fft_complex_transform(reinterpret_cast<double*>(x.data()), 1, x.size(), table_.get(),
+                                  work_.get(), sign) != 0)
+      throw SolverError("FFT: GSL complex transform failed for " + std::to_string(x.size()) +
+                        " points");
+  }
+
+ private:
+  std::unique_ptr<gsl_fft_complex_wavetable, ComplexTableFree> table_;
+  std::unique_ptr<gsl_fft_complex_workspace, ComplexWorkFree> work_;
+};
+
+ComplexFft::ComplexFft(std::size_t n) : n_(n) {
+  if (n < 1) throw InputError("complex FFT: 0 points given; at least 1 is needed");
+  if (largest_prime_factor(n) > kLargestMixedRadixFactor)
+    throw InputError("complex FFT: " + std::to_string(n) + " points has the prime factor " +
+                     std::to_string(largest_prime_factor(n)) + "; allowed: factors up to " +
+                     std::to_string(kLargestMixedRadixFactor) + " (see fast_fft_length)");
+  tables_ = std::make_unique<Tables>(n);
+}
+
+ComplexFft::~ComplexFft() = default;
+ComplexFft::ComplexFft(ComplexFft&&) noexcept = default;
+ComplexFft& ComplexFft::operator=(ComplexFft&&) noexcept = default;
+
+void ComplexFft::forward(std::vector<std::complex<double>>& x) {
+  if (x.size() != n_)
+    throw InputError("complex FFT: " + std::to_string(x.size()) +
+                     " values given to a transform of " + std::to_string(n_));
+  tables_->transform(x, gsl_fft_forward);
+}
+
+void ComplexFft::inverse(std::vector<std::complex<double>>& x) {
+  if (x.size() != n_)
+    throw InputError("complex FFT: " + std::to_string(x.size()) +
+                     " values given to a transform of " + std::to_string(n_));
+  tables_->transform(x, gsl_fft_backward);  // GSL's backward: unscaled, e^{+2πi kn/N}
 }
 
 }  // namespace bearing

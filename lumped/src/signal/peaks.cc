@@ -44,8 +44,25 @@ void add_harmonics(std::vector<NamedFrequency>& names, const char* label, double
   for (int h = 1; h <= range.count(f); ++h) names.push_back({harmonic_name(h, label), h * f, h});
 }
 
+// The sidebands k·f_c ± m·f_m, m = first … last, of the harmonics k = step, 2·step, … of f_c in
+// `range`: "2xBPFI-fr", "BPFI+2fr", "4xBSF-FTF", …; a lower sideband only where it is above 0.
+// Listed by m, then k (the first sidebands before the second); `harmonic` is the carrier's k.
+void add_sidebands(std::vector<NamedFrequency>& names, const char* carrier, double fc,
+                   const char* modulation, double fm, int first, int last, HarmonicRange range,
+                   int step = 1) {
+  if (!(fc > 0 && fm > 0)) return;
+  for (int m = first; m <= last; ++m) {
+    const std::string offset = (m == 1 ? std::string() : std::to_string(m)) + modulation;
+    for (int k = step; k <= range.count(fc); k += step) {
+      const std::string base = harmonic_name(k, carrier);
+      if (k * fc - m * fm > 0) names.push_back({base + "-" + offset, k * fc - m * fm, k});
+      names.push_back({base + "+" + offset, k * fc + m * fm, k});
+    }
+  }
+}
+
 std::vector<NamedFrequency> names_of(double shaft, double ftf, double bpfo, double bpfi, double bsf,
-                                     HarmonicRange range) {
+                                     HarmonicRange range, bool faults = false) {
   std::vector<NamedFrequency> names;
   add_harmonics(names, "fr", shaft, range);
   add_harmonics(names, "FTF", ftf, range);
@@ -55,12 +72,13 @@ std::vector<NamedFrequency> names_of(double shaft, double ftf, double bpfo, doub
   // The inner race turns with the shaft, so its lines come with shaft-rate sidebands
   // k·BPFI ± f_r (e.g. inner-race waviness under a fixed load zone). Listed after the plain
   // harmonics: a tie goes to the simpler name.
-  if (shaft > 0 && bpfi > 0)
-    for (int k = 1; k <= range.count(bpfi); ++k) {
-      const std::string base = harmonic_name(k, "BPFI");
-      if (k * bpfi - shaft > 0) names.push_back({base + "-fr", k * bpfi - shaft, k});
-      names.push_back({base + "+fr", k * bpfi + shaft, k});
-    }
+  add_sidebands(names, "BPFI", bpfi, "fr", shaft, 1, 1, range);
+  if (!faults) return names;
+  // A local fault's lines (the envelope's): an inner-race defect turns through the load zone once
+  // per shaft turn, k·BPFI ± 2f_r too; a ball defect strikes both races, twice per spin (2k·BSF),
+  // and is carried through the load zone by the cage (± m·FTF).
+  add_sidebands(names, "BPFI", bpfi, "fr", shaft, 2, 2, range);
+  add_sidebands(names, "BSF", bsf, "FTF", ftf, 1, 2, range, 2);
   return names;
 }
 
@@ -108,6 +126,15 @@ std::vector<NamedFrequency> bearing_frequency_names_up_to(double max_frequency, 
     throw InputError("bearing frequency names: band up to " + format_number(max_frequency) +
                      " Hz: must be positive and finite");
   return names_of(shaft, ftf, bpfo, bpfi, bsf, HarmonicRange{0, max_frequency});
+}
+
+std::vector<NamedFrequency> fault_frequency_names_up_to(double max_frequency, double shaft,
+                                                        double ftf, double bpfo, double bpfi,
+                                                        double bsf) {
+  if (!(std::isfinite(max_frequency) && max_frequency > 0))
+    throw InputError("fault frequency names: band up to " + format_number(max_frequency) +
+                     " Hz: must be positive and finite");
+  return names_of(shaft, ftf, bpfo, bpfi, bsf, HarmonicRange{0, max_frequency}, true);
 }
 
 std::vector<Peak> find_peaks(const Spectrum& spectrum, const std::vector<NamedFrequency>& names,

@@ -20,6 +20,7 @@
 #include "bearing/excitation.h"
 #include "bearing/local_defect.h"
 #include "bearing/models/model_kind.h"
+#include "bearing/signal/envelope.h"
 #include "bearing/signal/spectrum.h"
 #include "bearing/solvers/integrator.h"
 #include "bearing/units.h"
@@ -96,6 +97,9 @@ struct OutputOptions {
   bool ball_dynamics = false;
   Window window = Window::hann;  ///< spectrum window
   int peaks = 10;                ///< spectrum peaks listed per channel in summary.json
+  /// envelope spectra of the ring accelerations and a diagnosis: none (default), a given band
+  /// [Hz] or the fast kurtogram's (envelope.csv, summary.json envelope and diagnosis)
+  EnvelopeBandSetting envelope_band;
 };
 
 struct Case {

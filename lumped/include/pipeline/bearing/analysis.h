@@ -1,11 +1,14 @@
 #pragma once
 // The post-processing of a run's response: statistics of every channel over the analysis window,
-// and spectra with named peaks of the ring's channels.
+// spectra with named peaks of the ring's channels, and (asked for) the envelope analysis of its
+// accelerations.
 
 #include <optional>
 #include <string>
 #include <vector>
 
+#include "bearing/diagnosis.h"
+#include "bearing/envelope_analysis.h"
 #include "bearing/kinematics.h"
 #include "bearing/noise.h"
 #include "bearing/response.h"
@@ -15,10 +18,11 @@
 
 namespace bearing {
 
-/// How a response is analysed ([output] window and peaks).
+/// How a response is analysed ([output] window, peaks and envelope_band).
 struct AnalysisSettings {
-  Window window = Window::hann;  ///< spectrum window
-  int peaks = 10;                ///< peaks listed per ring channel
+  Window window = Window::hann;  ///< spectrum window (the envelope spectra's too)
+  int peaks = 10;                ///< peaks listed per ring channel and per envelope spectrum
+  EnvelopeBandSetting envelope;  ///< envelope analysis of the accelerations: none by default
 };
 
 struct ChannelSummary {
@@ -33,11 +37,15 @@ struct RunSummary {
   std::vector<ChannelSummary> channels;        ///< in response order
   std::vector<std::string> spectrum_channels;  ///< channels with a spectrum (the ring's)
   std::vector<Spectrum> spectra;               ///< one per spectrum channel
+  std::vector<EnvelopeSummary> envelopes;      ///< one per ring acceleration, if asked for
+  std::optional<Diagnosis> diagnosis;          ///< diagnose(envelopes), with envelopes only
   std::optional<BearingNoise> noise;           ///< sound at the microphones ([acoustics] only)
 };
 
 /// Statistics of every channel, and spectra and peaks (labelled with `frequencies`) of the ring's
-/// channels, over the post-transient window. Leaves `noise` empty.
+/// channels, over the post-transient window; with settings.envelope, analyse_envelopes() and
+/// diagnose() (default thresholds).
+/// Leaves `noise` empty.
 RunSummary analyse(const Response& response, const BearingFrequencies& frequencies,
                    const AnalysisSettings& settings);
 

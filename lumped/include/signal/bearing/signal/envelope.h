@@ -6,6 +6,7 @@
 
 #include <vector>
 
+#include "bearing/choice.h"
 #include "bearing/signal/spectrum.h"
 
 namespace bearing {
@@ -14,6 +15,26 @@ namespace bearing {
 struct FrequencyBand {
   double low = 0;   ///< [Hz], ≥ 0
   double high = 0;  ///< [Hz], > low and ≤ the Nyquist frequency
+};
+
+/// Where the band of an envelope analysis comes from (the case key output.envelope_band).
+enum class EnvelopeBandSource {
+  none,       ///< no envelope analysis
+  given,      ///< a band the user gave
+  automatic,  ///< the band of largest spectral kurtosis (fast_kurtogram(), kurtogram.h)
+};
+
+/// As the case file and summary.json write them: "none", "given" (summary.json only: a case file
+/// gives the band itself), "auto".
+inline constexpr Named<EnvelopeBandSource> kEnvelopeBandSources[] = {
+    {EnvelopeBandSource::none, "none"},
+    {EnvelopeBandSource::given, "given"},
+    {EnvelopeBandSource::automatic, "auto"}};
+
+/// The envelope analysis asked for: none, a given band, or the kurtogram's.
+struct EnvelopeBandSetting {
+  EnvelopeBandSource source = EnvelopeBandSource::none;
+  FrequencyBand band;  ///< [Hz], when source is given
 };
 
 /// The Hilbert envelope |x_b + i H(x_b)| of x band-passed to `band`, sampled like x [unit of x].

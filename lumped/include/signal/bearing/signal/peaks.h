@@ -34,6 +34,20 @@ std::vector<NamedFrequency> bearing_frequency_names_up_to(double max_frequency, 
                                                           double ftf, double bpfo, double bpfi,
                                                           double bsf);
 
+/// bearing_frequency_names_up_to()'s names, then the other lines of local faults, for labelling
+/// envelope spectra: the inner race's second shaft sidebands "BPFI-2fr", "BPFI+2fr",
+/// "2xBPFI-2fr", … (k·BPFI ± 2f_r: a defect on the turning race passes through the load zone once
+/// a shaft turn), then the ball's cage sidebands "2xBSF-FTF", "2xBSF+FTF", "4xBSF-FTF", …,
+/// "2xBSF-2FTF", … (2k·BSF ± m·FTF, m = 1, 2: a ball defect strikes both races once a spin each and
+/// is carried through the load zone by the cage). Same order rule (the simpler names first: a tie
+/// goes to them) and harmonic numbers (a sideband has its carrier's k); k·BSF itself is among the
+/// plain harmonics. Harmonics k·f ≤ max_frequency [Hz], at most 4096 per family; the frequencies
+/// are those of bearing_frequency_names (cage slip included if they include it). Throws as
+/// bearing_frequency_names_up_to().
+std::vector<NamedFrequency> fault_frequency_names_up_to(double max_frequency, double shaft,
+                                                        double ftf, double bpfo, double bpfi,
+                                                        double bsf);
+
 /// A spectral peak and the named frequency it was matched to.
 struct Peak {
   double frequency = 0;    ///< refined peak frequency [Hz]

@@ -1,0 +1,64 @@
+// The envelope stage of a run's analysis: band, spectral kurtosis, envelope spectrum, named peaks.
+
+#include "bearing/envelope_analysis.h"
+
+#include <algorithm>
+#include <cstdio>
+
+#include "bearing/errors.h"
+
+namespace bearing {
+
+std::string band_text(const FrequencyBand& band) {
+  const bool khz = band.high >= 1000;
+  const double unit = khz ? 1e3 : 1.0;
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "%.3g–%.3g %s", band.low / unit, band.high / unit,
+                khz ? "kHz" : "Hz");
+  return buf;
+}
+
+double envelope_min_bandwidth(const BearingFrequencies& f) {
+  return 3 * std::max({f.bpfo, f.bpfi, 2 * f.bsf});
+}
+
+EnvelopeSummary analyse_envelope(const std::string& channel, const std::string& unit,
+                                 const std::vector<double>& x, double sample_rate,
+                                 const BearingFrequencies& f, const EnvelopeBandSetting& setting,
+                                 Window window, int max_peaks) {
+  if (setting.source == EnvelopeBandSource::none)
+    throw InputError("envelope analysis of " + channel + ": no band asked for (source none)");
+  EnvelopeSummary e;
+  e.channel = channel;
+  e.unit = unit;
+  e.source = setting.source;
+  if (setting.source == EnvelopeBandSource::automatic) {
+    Kurtogram k = fast_kurtogram(x, sample_rate, {envelope_min_bandwidth(f), kEnvelopeNoiseFloor});
+    e.band = k.best.band;
+    e.spectral_kurtosis = k.best.spectral_kurtosis;
+    e.kurtogram = std::move(k.map);
+  } else {
+    e.band = setting.band;
+    e.spectral_kurtosis = spectral_kurtosis(x, sample_rate, e.band, kEnvelopeNoiseFloor);
+  }
+  e.spectrum = envelope_spectrum(x, sample_rate, e.band, window);
+  const auto names =
+      fault_frequency_names_up_to(0.5 * sample_rate, f.shaft, f.ftf, f.bpfo, f.bpfi, f.bsf);
+  e.peaks = find_peaks(e.spectrum, names, max_peaks);
+  return e;
+}
+
+std::vector<EnvelopeSummary> analyse_envelopes(const Response& response,
+                                               const BearingFrequencies& f,
+                                               const EnvelopeBandSetting& setting, Window window,
+                                               int max_peaks) {
+  std::vector<EnvelopeSummary> out;
+  if (setting.source == EnvelopeBandSource::none) return out;
+  for (const Channel& ch : response.channels)
+    if (ch.group == ChannelGroup::ring && ch.derivative == 2)
+      out.push_back(analyse_envelope(ch.name, ch.unit, response.steady(ch.name), response.rate, f,
+                                     setting, window, max_peaks));
+  return out;
+}
+
+}  // namespace bearing
