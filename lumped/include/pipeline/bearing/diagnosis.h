@@ -48,9 +48,11 @@ struct DiagnosisSettings {
   /// impulsive [-]. 5 is a train of ringing impacts each decaying within a seventh of the period
   /// (SK = (T/τ) coth(T/τ) − 2 = 5 at T/τ ≈ 7), far above stationary noise (0 ± 3/√M, M ≥ 64
   /// bins) and twice the healthy default 6308 (2.3: the light-load 2-DOF response's own rattle
-  /// at BPFO, with or without 0.5 µm of outer-race waviness). Not yet set against simulated
-  /// spalls; rings rattling under a light load pass it without one: the inner-race waviness of
-  /// examples/seed002_tvds (SK 8.4) and seed003_measured (5.3), the ball-DOF seed004_6304 (5.3).
+  /// at BPFO, with or without 0.5 µm of outer-race waviness). Simulated 0.533 mm spalls on the
+  /// CWRU-like 6205 reach 9.3 (outer), 27 (inner), 27 (ball): tests/lumped/test_fault_diagnosis.cc.
+  /// Rings rattling over waviness under a light load pass it without a spall: the inner-race
+  /// waviness of examples/seed002_tvds (SK 8.4) and seed003_measured (5.3), the ball-DOF
+  /// seed004_6304 (5.3).
   double min_spectral_kurtosis = 5;
   /// Least share of the leading family in the amplitude of all fault-family lines among the
   /// envelope's listed peaks [-]: below it two families compete and none is named.
