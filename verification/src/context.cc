@@ -117,7 +117,8 @@ ModelInputs Context::perturbed(ModelInputs in) const {
 void Context::perturb_model(ModelInputs& in) const {
   read(kContact | kMass | kCageSlip | (in.damping != 0 || in.axial_damping != 0 ? kDamping : 0u) |
        (in.waviness_stiffness ? kTvds : 0u) |
-       (in.inner_waviness.empty() && in.outer_waviness.empty() ? 0u : kWaviness));
+       (in.inner_waviness.empty() && in.outer_waviness.empty() ? 0u : kWaviness) |
+       (in.defects.empty() ? 0u : kDefect));
   perturb(in.contact, perturbation_);
   in.mass *= perturbation_.mass;
   in.axial_mass *= perturbation_.mass;
@@ -128,6 +129,7 @@ void Context::perturb_model(ModelInputs& in) const {
     turn_over(in.outer_waviness);
   }
   in.cage_slip += perturbation_.cage_slip;
+  for (LocalDefect& d : in.defects) d.width *= perturbation_.defect_width;
 }
 
 SimulationResult Context::simulate(ModelKind kind, const ModelInputs& in,

@@ -15,6 +15,7 @@ std::vector<Check> hertz_groove_checks();          ///< checks/hertz_groove.cc: 
 std::vector<Check> static_load_checks();  ///< checks/static_load.cc: kinematics, load distribution
 std::vector<Check> dynamics_checks();     ///< checks/dynamics.cc: conservation, limits, orders
 std::vector<Check> dynamics_spectra_checks();  ///< checks/dynamics_spectra.cc: lines, reductions
+std::vector<Check> fault_checks();             ///< checks/faults.cc: spalls, envelope lines
 std::vector<Check> acoustics_checks();         ///< checks/acoustics.cc: sources vs closed forms
 std::vector<Check> acoustics_paper_checks();   ///< checks/acoustics_paper.cc: seed 000's forms
 std::vector<Check> acoustics_decay_checks();   ///< checks/acoustics_decay.cc: 1/r, 1/√r decay

@@ -39,6 +39,8 @@ const std::vector<Mutation>& mutations() {
       {"fe-mesh-halved",
        "the FE meshes at half the resolution (cells across the contact / per radius)",
        with([](Perturbation& p) { p.fe_cells = 0.5; })},
+      {"spall-width-x0.8", "every local defect 20 % narrower than the case says",
+       with([](Perturbation& p) { p.defect_width = 0.8; })},
   };
   return table;
 }

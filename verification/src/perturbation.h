@@ -19,6 +19,7 @@ enum Knob : unsigned {
   kSoundSpeed = 1u << 7,  ///< sound_speed
   kMicrophone = 1u << 8,  ///< microphone_distance
   kFeCells = 1u << 9,     ///< fe_cells
+  kDefect = 1u << 10,     ///< defect_width
 };
 
 struct Perturbation {
@@ -33,6 +34,7 @@ struct Perturbation {
   double sound_speed = 1.0;          ///< × c₀ in the lumped acoustics [-]
   double microphone_distance = 1.0;  ///< × every lumped microphone's distance [-]
   double fe_cells = 1.0;             ///< × cells across the FE contact patch / per radius [-]
+  double defect_width = 1.0;         ///< × the width of every local defect the models see [-]
 
   /// The knobs this perturbation turns away from the identity.
   unsigned changed() const {
@@ -47,6 +49,7 @@ struct Perturbation {
     if (sound_speed != 1.0) k |= kSoundSpeed;
     if (microphone_distance != 1.0) k |= kMicrophone;
     if (fe_cells != 1.0) k |= kFeCells;
+    if (defect_width != 1.0) k |= kDefect;
     return k;
   }
 };
