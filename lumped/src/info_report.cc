@@ -6,6 +6,7 @@
 
 #include "bearing/constants.h"
 #include "bearing/json_helpers.h"
+#include "bearing/local_defect.h"
 #include "bearing/presets.h"
 #include "bearing/units.h"
 
@@ -20,6 +21,18 @@ InfoReport compute_info(const Case& c) {
   o.exponent = r.contact.exponent;
   r.static_load =
       solve_static_load(c.bearing.balls, r.contact.K, c.bearing.ball_gap(), c.operation.load, o);
+  const Bearing& b = c.bearing;
+  const double wc = cage_speed(b, c.operation.speed);
+  for (const LocalDefect& d : c.excitation.defects) {
+    DefectInfo info;
+    if (d.location != DefectLocation::outer)
+      info.inner_drop = DefectPath(b, d, Race::inner).max_drop();
+    if (d.location != DefectLocation::inner)
+      info.outer_drop = DefectPath(b, d, Race::outer).max_drop();
+    info.crossing = defect_transit_time(d, b, c.operation.speed, wc, b.contact_angle);
+    info.max_step = info.crossing / kStepsPerDefectCrossing;
+    r.defects.push_back(info);
+  }
   return r;
 }
 
@@ -56,6 +69,18 @@ nlohmann::json info_json(const InfoReport& r) {
                  {"ball_angles", s.ball_angles},
                  {"ball_loads", s.ball_loads},
                  {"q_max", s.q_max}};
+  for (std::size_t i = 0; i < r.defects.size(); ++i) {
+    const LocalDefect& d = r.input.excitation.defects[i];
+    const DefectInfo& info = r.defects[i];
+    const auto finite_or_null = [](double v) { return std::isfinite(v) ? json(v) : json(nullptr); };
+    j["defects"].push_back({{"location", name_of(kDefectLocations, d.location)},
+                            {"width", d.width},
+                            {"depth", d.depth},
+                            {"inner_drop", info.inner_drop},
+                            {"outer_drop", info.outer_drop},
+                            {"crossing", finite_or_null(info.crossing)},
+                            {"max_step", finite_or_null(info.max_step)}});
+  }
   // K is in N/m^n with the exponent n beside it (1.5 for the Hertz methods).
   const std::string k_unit = cal ? "N/m^exponent" : "N/m^1.5";
   j["units"] = {
@@ -63,6 +88,13 @@ nlohmann::json info_json(const InfoReport& r) {
       {"contact.*.sum_rho", "1/m"},  {"contact.*.K", k_unit},    {"contact.K", k_unit},
       {"contact.*.exponent", "1"},   {"contact.exponent", "1"},  {"static.deflection", "m"},
       {"static.ball_angles", "rad"}, {"static.ball_loads", "N"}, {"static.q_max", "N"}};
+  if (!r.defects.empty()) {
+    for (const char* k :
+         {"defects.width", "defects.depth", "defects.inner_drop", "defects.outer_drop"})
+      j["units"][k] = "m";
+    j["units"]["defects.crossing"] = "s";
+    j["units"]["defects.max_step"] = "s";
+  }
   if (cal) {
     j["units"]["contact.calibration.load_range"] = "N";
     j["units"]["contact.calibration.series_fit_residual"] = "1";
@@ -124,6 +156,33 @@ std::string calibrated_law_text(const ContactCalibration& cal, const ContactCons
       << num(cc.series_fit_residual, 3) << "\n";
   o << "  K and n are the FE constants; curvatures, F(rho), ellipticity, delta* and the contact "
        "ellipse are the exact Hertz solution's\n";
+  return o.str();
+}
+
+}  // namespace
+
+namespace {
+
+// The defects as the contacts see them, and the step they ask for.
+std::string defects_text(const InfoReport& r) {
+  if (r.defects.empty()) return "";
+  std::ostringstream o;
+  o << "\nLocal defects (drop: the largest extra clearance a contact gains over the defect)\n";
+  for (std::size_t i = 0; i < r.defects.size(); ++i) {
+    const LocalDefect& d = r.input.excitation.defects[i];
+    const DefectInfo& info = r.defects[i];
+    o << "  " << i << ": " << name_of(kDefectLocations, d.location);
+    if (d.location == DefectLocation::ball) o << " (ball " << d.ball << ")";
+    o << ", " << num(d.width * 1e3) << " mm wide, " << num(d.depth * 1e3) << " mm deep, "
+      << name_of(kDefectProfiles, d.profile) << ": drop";
+    if (d.location != DefectLocation::outer) o << " " << num(info.inner_drop * 1e6) << " um inner";
+    if (d.location == DefectLocation::ball) o << ",";
+    if (d.location != DefectLocation::inner) o << " " << num(info.outer_drop * 1e6) << " um outer";
+    if (std::isfinite(info.crossing))
+      o << "; crossed in " << num(info.crossing * 1e6)
+        << " us: solver.dt <= " << num(info.max_step * 1e6) << " us";
+    o << "\n";
+  }
   return o.str();
 }
 
@@ -199,6 +258,7 @@ std::string info_text(const InfoReport& r) {
         << rpad(fixed(s.ball_angles[j] * 180.0 / pi, 1), 14)
         << rpad(fixed(s.ball_approach[j] * 1e6, 4), 16) << rpad(num(s.ball_loads[j]), 14) << "\n";
   }
+  o << defects_text(r);
   return o.str();
 }
 

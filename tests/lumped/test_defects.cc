@@ -15,6 +15,7 @@
 #include "bearing/case_file.h"
 #include "bearing/constants.h"
 #include "bearing/errors.h"
+#include "bearing/info_report.h"
 #include "bearing/kinematics.h"
 #include "bearing/local_defect.h"
 #include "bearing/models/ball_dofs.h"
@@ -127,6 +128,32 @@ TEST(DefectCase, BadEntriesAreErrorsNamingTheField) {
             std::string::npos);
   EXPECT_NE(error_of("[defects]\nlocation = \"outer\"\n").find("expected entries [[defects]]"),
             std::string::npos);
+}
+
+// `info` shows each defect's drop and crossing: the geometry's own numbers, and the crossing from
+// the ball-pass frequency (a ball covers one spacing 2πρ/Z per pass).
+TEST(DefectCase, InfoShowsTheDropAndTheStepItAsksFor) {
+  const Case c = cwru_6205(std::string(kOuterSpall) +
+                           "[[defects]]\nlocation = \"ball\"\nball = 1\nwidth = \"1 mm\"\n"
+                           "depth = \"5 um\"\n");
+  const InfoReport r = compute_info(c);
+  ASSERT_EQ(r.defects.size(), 2u);
+  const Bearing& b = c.bearing;
+  const double ro = 0.5 * b.outer_raceway_diameter();
+  EXPECT_EQ(r.defects[0].inner_drop, 0.0);
+  EXPECT_DOUBLE_EQ(r.defects[0].outer_drop,
+                   defect_max_drop(b.ball_diameter, Race::outer, ro, 0.53e-3, 0.28e-3));
+  const double bpfo = bearing_frequencies(b, c.operation.speed).bpfo;
+  EXPECT_NEAR(r.defects[0].crossing, 0.53e-3 / (two_pi * ro / b.balls * bpfo), 1e-15);
+  EXPECT_DOUBLE_EQ(r.defects[0].max_step, r.defects[0].crossing / 10);
+  EXPECT_EQ(r.defects[1].inner_drop, 5e-6);  // a 1 mm slot on the ball: floored at its depth
+  EXPECT_EQ(r.defects[1].outer_drop, 5e-6);
+  const nlohmann::json j = info_json(r);
+  EXPECT_EQ(j["defects"][1]["location"], "ball");
+  EXPECT_EQ(j["units"]["defects.crossing"], "s");
+  EXPECT_NE(info_text(r).find("0: outer, 0.53 mm wide, 0.28 mm deep, rectangular: drop 7.3"),
+            std::string::npos)
+      << info_text(r);
 }
 
 // The change of each ball's approach that the defects make, at time t and ring position q.

@@ -46,12 +46,6 @@ void check_explicit_step(const SolverSettings& s, const BearingModel& model,
                    " us, or solver.method = \"newmark\" (stable at any step)");
 }
 
-// Steps across the quickest defect crossing: its entry and exit shape the impact, and a step that
-// jumps over them would miss it or catch it at a random fraction. At ten steps per crossing the
-// response's RMS is within 0.2 % of a step twelve times finer (the 0.53 mm outer spall of the
-// CWRU-like 6205: test DefectRuns.TheLargestAllowedStepResolvesTheImpacts).
-constexpr double kStepsPerTransit = 10;
-
 // The quickest crossing of a defect by a contact [s] and the defect's index (infinite: none).
 std::pair<double, std::size_t> quickest_transit(const ModelInputs& in, double cage_speed,
                                                 double contact_angle) {
@@ -68,14 +62,15 @@ std::pair<double, std::size_t> quickest_transit(const ModelInputs& in, double ca
 void check_defect_step(const SolverSettings& s, const ModelInputs& in, double transit,
                        std::size_t index) {
   const bool fixed = s.method == IntegratorMethod::rk4 || s.method == IntegratorMethod::newmark;
-  if (!fixed || s.dt <= transit / kStepsPerTransit) return;
+  if (!fixed || s.dt <= transit / kStepsPerDefectCrossing) return;
   const LocalDefect& d = in.defects[index];
   throw InputError(
       "solver.dt = " + g3(s.dt * 1e6) + " us: a step must not jump over a defect: " + "defects[" +
       std::to_string(index) + "] (" + name_of(kDefectLocations, d.location) + ", " +
       g3(d.width * 1e3) + " mm wide) is crossed in " + g3(transit * 1e6) +
-      " us at this speed, and " + "resolving its entry and exit takes " + g3(kStepsPerTransit) +
-      " steps: use solver.dt <= " + g3(transit / kStepsPerTransit * 1e6) + " us");
+      " us at this speed, and " + "resolving its entry and exit takes " +
+      g3(kStepsPerDefectCrossing) +
+      " steps: use solver.dt <= " + g3(transit / kStepsPerDefectCrossing * 1e6) + " us");
 }
 
 class DynamicRun final : public ModelRun {
@@ -98,7 +93,7 @@ class DynamicRun final : public ModelRun {
     settings.atol = s.tolerance * scale;
     settings.max_displacement = s.max_displacement;
     const auto [transit, defect] = quickest_transit(in, model_->cage_speed(), contact_angle);
-    if (std::isfinite(transit)) settings.max_step = transit / kStepsPerTransit;
+    if (std::isfinite(transit)) settings.max_step = transit / kStepsPerDefectCrossing;
     integrator_ = make_integrator(settings);
     check_defect_step(s, in, transit, defect);
     check_explicit_step(s, *model_, q0_, v0_);

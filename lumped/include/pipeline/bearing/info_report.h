@@ -3,6 +3,7 @@
 // constants, bearing frequencies and the static load distribution — as text and as JSON.
 
 #include <string>
+#include <vector>
 
 #include <nlohmann/json.hpp>
 
@@ -13,11 +14,20 @@
 
 namespace bearing {
 
+/// One local defect as the contacts see it (pure-rolling kinematics at the free contact angle).
+struct DefectInfo {
+  double inner_drop = 0;  ///< largest extra clearance at the inner contact [m] (0: none there)
+  double outer_drop = 0;  ///< at the outer contact [m]
+  double crossing = 0;    ///< time a contact takes to cross it [s] (infinite at rest)
+  double max_step = 0;    ///< the largest fixed step a run accepts [s] (crossing / 10)
+};
+
 struct InfoReport {
   Case input;
   ContactConstants contact;
   BearingFrequencies frequencies;
   StaticLoadResult static_load;
+  std::vector<DefectInfo> defects;  ///< one per [[defects]] entry
 };
 
 /// Computes everything `info` shows. Throws InputError / SolverError.
@@ -27,8 +37,9 @@ InfoReport compute_info(const Case& c);
 /// contact.{inner,outer}.{sum_rho [1/m], f_rho, ellipticity, delta_star, K [N/m^n], exponent n},
 /// contact.K, contact.exponent, static.{deflection [m, m], ball_loads [N], q_max [N]}; plus
 /// contact.method, static.ball_angles [rad] and a `units` object; for a calibrated law
-/// contact.calibration (calibration_json, json_helpers.h). Throws SolverError if any value is not
-/// finite.
+/// contact.calibration (calibration_json, json_helpers.h); with [[defects]], defects[] with
+/// location, width, depth [m], inner_drop, outer_drop [m], crossing, max_step [s] (null at rest).
+/// Throws SolverError if any value is not finite.
 nlohmann::json info_json(const InfoReport& report);
 
 /// Human-readable report with units.
