@@ -221,7 +221,7 @@ class BallSet {
     for (int j = 0; j < Z; ++j) fr.excitation[j] = -size_error_[j];
     double curv_i[kMaxBalls], curv_o[kMaxBalls];
     add_waviness(fr, fr.excitation, fr.excitation, curv_i, curv_o);
-    defects_.apply(t, fr, fr.excitation, fr.excitation);
+    defects_.apply(t, fr.excitation, fr.excitation);
 
     if (!tvds()) {
       std::fill(fr.stiffness, fr.stiffness + Z, K_);
@@ -242,7 +242,7 @@ class BallSet {
       fr.inner_excitation[j] = fr.outer_excitation[j] = -0.5 * size_error_[j];
     double curv_i[kMaxBalls], curv_o[kMaxBalls];
     add_waviness(fr, fr.inner_excitation, fr.outer_excitation, curv_i, curv_o);
-    defects_.apply(t, fr, fr.inner_excitation, fr.outer_excitation);
+    defects_.apply(t, fr.inner_excitation, fr.outer_excitation);
     if (!tvds()) {
       std::fill(fr.inner_stiffness, fr.inner_stiffness + Z, inner_K_);
       std::fill(fr.outer_stiffness, fr.outer_stiffness + Z, outer_K_);

@@ -65,10 +65,8 @@ class DefectExcitation {
   bool empty() const { return races_.empty() && balls_.empty(); }
 
   /// Subtracts the drops at time t [s] from inner[j] and outer[j], the excitations of ball j's
-  /// inner and outer contact [m] (one array for both: the ball's combined excitation), with the
-  /// ball and shaft phasors of `fr` (BallFrame or RaceFrame).
-  template <class Frame>
-  void apply(double t, const Frame& /*fr*/, double* inner, double* outer) const {
+  /// inner and outer contact [m] (one array for both: the ball's combined excitation).
+  void apply(double t, double* inner, double* outer) const {
     for (const RaceDefect& d : races_) {
       const double x = d.phase + d.relative_speed * t;
       // k = round(x / spacing) by the 1.5·2^52 shifter (std::nearbyint is a libm call here)
