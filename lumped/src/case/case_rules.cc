@@ -1,6 +1,8 @@
 #include "case_rules.h"
 
+#include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include <string>
 #include <vector>
@@ -147,11 +149,9 @@ void read_defect(TableReader& r, Case& c, const ReadContext&) {
     if (!ball)
       throw InputError(r.full("ball") + " is missing: a ball defect names its ball (0 … " +
                        std::to_string(c.bearing.balls - 1) + ")");
-    if (*ball < 0 || *ball >= c.bearing.balls)
-      throw InputError(r.full("ball") + " = " + std::to_string(*ball) + ": must lie in [0, " +
-                       std::to_string(c.bearing.balls - 1) +
-                       "] (bearing.balls = " + std::to_string(c.bearing.balls) + ")");
-    d.ball = static_cast<int>(*ball);
+    // the range is check_defects's, once every entry is read
+    d.ball = static_cast<int>(std::clamp<long long>(*ball, std::numeric_limits<int>::min(),
+                                                    std::numeric_limits<int>::max()));
     d.position = position.value_or(0.5 * pi);  // between its contacts at t = 0
   } else {
     if (ball)
