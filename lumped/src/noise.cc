@@ -19,7 +19,6 @@ namespace bearing {
 
 namespace {
 
-
 std::string microphone_key(std::size_t i) {
   return "acoustics.microphones[" + std::to_string(i) + "]";
 }
@@ -87,14 +86,16 @@ BearingNoise radiate(const Response& response, const AcousticsOptions& ac, const
   std::unique_ptr<RadialSeriesSource> ball;
   std::optional<PeriodicInterpolator> interpolator;  // the balls' delays, one table for all
   const int Z = bearing.balls;
-  std::vector<std::vector<double>> radial, radial_velocity;
+  std::vector<std::vector<double>> radial;
+  std::vector<FilteredRecord> filtered;  // each ball's, for every microphone
   if (balls_on) {
     ball = make_series_source(source_model_name(ac.ball_source), 0.5 * bearing.ball_diameter, air,
                               "acoustics.ball_source");
     interpolator.emplace();
     for (int j = 0; j < Z; ++j) {
       radial.push_back(response.steady("r" + std::to_string(j + 1)));
-      radial_velocity.push_back(window_and_next(response, "vr" + std::to_string(j + 1)));
+      filtered.push_back(
+          filter_moving(*ball, window_and_next(response, "vr" + std::to_string(j + 1)), rate, fft));
     }
   }
 
@@ -126,8 +127,8 @@ BearingNoise radiate(const Response& response, const AcousticsOptions& ac, const
       double nearest = std::numeric_limits<double>::infinity();
       const double a = ball->radius();
       for (int j = 0; j < Z; ++j) {
-        const SourcePath path = ball_path(lv.position, 0.5 * bearing.pitch_diameter,
-                                          2 * pi * j / Z, cage_speed, out.time, radial[j]);
+        const SourcePath path = ball_path(lv.position, 0.5 * bearing.pitch_diameter, 2 * pi * j / Z,
+                                          cage_speed, out.time, radial[j]);
         const auto closest = std::min_element(path.distance.begin(), path.distance.end());
         if (*closest <= a) {
           const auto k = static_cast<std::size_t>(closest - path.distance.begin());
@@ -140,7 +141,7 @@ BearingNoise radiate(const Response& response, const AcousticsOptions& ac, const
                            mm(ball_annulus(bearing).y()));
         }
         nearest = std::min(nearest, *closest - a);
-        each.push_back(radiate_moving(*ball, radial_velocity[j], rate, path, fft, *interpolator));
+        each.push_back(pressure_from(*ball, filtered[j], rate, path, *interpolator));
       }
       p_balls = sum_pressures(each, summation);
       lv.p_rms_balls = root_mean_square(p_balls);

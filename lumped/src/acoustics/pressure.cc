@@ -8,6 +8,7 @@
 #include <cmath>
 #include <complex>
 #include <cstdlib>
+#include <stdexcept>
 #include <string>
 
 #include "bearing/constants.h"
@@ -152,8 +153,29 @@ std::vector<double> radiate_moving(const RadialSeriesSource& source,
                                    const std::vector<double>& velocity, double rate,
                                    const SourcePath& path, RealFft& fft,
                                    const PeriodicInterpolator& at) {
+  return pressure_from(source, filter_moving(source, velocity, rate, fft), rate, path, at);
+}
+
+FilteredRecord filter_moving(const RadialSeriesSource& source, const std::vector<double>& velocity,
+                             double rate, RealFft& fft) {
   check_record(velocity, rate, fft);
-  const std::size_t n = fft.size();
+  const Detrended d = detrend(velocity, rate, fft);
+  FilteredRecord out;
+  for (std::size_t m = 0; m < source.powers().size(); ++m) {
+    out.terms.push_back(
+        filter(d.spectrum, rate, fft, [&](double omega) { return source.factor(m, omega); }));
+    out.ramp.push_back(d.slope * source.ramp_factor(m));
+  }
+  return out;
+}
+
+std::vector<double> pressure_from(const RadialSeriesSource& source, const FilteredRecord& record,
+                                  double rate, const SourcePath& path,
+                                  const PeriodicInterpolator& at) {
+  const std::vector<int> powers = source.powers();
+  if (powers.empty() || record.terms.size() != powers.size() || record.ramp.size() != powers.size())
+    throw std::logic_error("pressure_from: a record filtered for another source");
+  const std::size_t n = record.terms.front().size();
   if (path.distance.size() != n || path.cos_angle.size() != n)
     throw InputError("sound pressure: the source path has " + std::to_string(path.distance.size()) +
                      " distances and " + std::to_string(path.cos_angle.size()) +
@@ -167,16 +189,7 @@ std::vector<double> radiate_moving(const RadialSeriesSource& source,
                        std::string(source.name()) + " of radius " + format_number(a) +
                        " m: it must lie outside the body");
 
-  const Detrended d = detrend(velocity, rate, fft);
-  const std::vector<int> powers = source.powers();
-  std::vector<std::vector<double>> q;
-  std::vector<double> ramp;
-  for (std::size_t m = 0; m < powers.size(); ++m) {
-    q.push_back(
-        filter(d.spectrum, rate, fft, [&](double omega) { return source.factor(m, omega); }));
-    ramp.push_back(d.slope * source.ramp_factor(m));
-  }
-
+  const std::vector<std::vector<double>>& q = record.terms;
   const bool breathing = source.pattern() == Pattern::breathing;
   const double samples_per_metre = source.delayed() ? rate / source.air().sound_speed : 0.0;
   std::vector<double> p(n);
@@ -190,7 +203,8 @@ std::vector<double> radiate_moving(const RadialSeriesSource& source,
     for (std::size_t m = 0; m < powers.size(); ++m) {
       double weight = 1;  // (a/r)^m, m a small whole number
       for (int e = 0; e < powers[m]; ++e) weight *= a / r;
-      sum += weight * ((on_sample ? q[m][i] : PeriodicInterpolator::apply(taps, q[m])) + ramp[m]);
+      sum += weight *
+             ((on_sample ? q[m][i] : PeriodicInterpolator::apply(taps, q[m])) + record.ramp[m]);
     }
     p[i] = (breathing ? 1.0 : path.cos_angle[i]) * sum;
   }

@@ -93,6 +93,27 @@ std::vector<double> radiate_moving(const RadialSeriesSource& source,
                                    const SourcePath& path, RealFft& fft,
                                    const PeriodicInterpolator& interpolator);
 
+/// The part of radiate_moving that does not depend on where the point is: the velocity record
+/// filtered once per term of the source's series, q_m = F⁻¹[F_m(ω) U(ω)], and each term's ramp
+/// pressure β ramp_factor(m). One per ball serves every microphone.
+struct FilteredRecord {
+  std::vector<std::vector<double>> terms;  ///< q_m(t_n), n = 0 … N−1 [Pa at r = a]
+  std::vector<double> ramp;                ///< β ramp_factor(m) [Pa]
+};
+
+/// The filtered record of `velocity` (N + 1 samples at `rate`, as radiate_fixed). Throws as
+/// radiate_fixed for a bad record.
+FilteredRecord filter_moving(const RadialSeriesSource& source, const std::vector<double>& velocity,
+                             double rate, RealFft& fft);
+
+/// radiate_moving from a filtered record of `source`: p_n = Θ_n Σ_m (a/r_n)^m [q_m(t_n − τ_n) +
+/// ramp_m]. Throws InputError if the path does not have N entries or the point is inside the
+/// body at some sample. radiate_moving(…) == pressure_from(source, filter_moving(…), rate, …)
+/// exactly.
+std::vector<double> pressure_from(const RadialSeriesSource& source, const FilteredRecord& record,
+                                  double rate, const SourcePath& path,
+                                  const PeriodicInterpolator& interpolator);
+
 /// The same with an interpolator of its own (for one-off calls).
 std::vector<double> radiate_moving(const RadialSeriesSource& source,
                                    const std::vector<double>& velocity, double rate,
