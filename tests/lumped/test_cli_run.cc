@@ -14,31 +14,15 @@
 
 #include "bearing/presets.h"
 #include "calibration_files.h"
+#include "cli_helpers.h"
 
 namespace {
 
 namespace fs = std::filesystem;
-
-std::string read(const fs::path& p) {
-  std::ifstream f(p, std::ios::binary);
-  std::stringstream s;
-  s << f.rdbuf();
-  return s.str();
-}
-
-int sim(const std::string& args) {
-  const std::string cmd = std::string(BEARING_SIM) + " " + args + " >/dev/null 2>&1";
-  const int status = std::system(cmd.c_str());
-  return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-}
-
-fs::path fresh_dir(const std::string& name) {
-  const fs::path d = fs::path(::testing::TempDir()) / name;
-  fs::remove_all(d);
-  return d;
-}
-
-const std::string kShort = " --set solver.duration=0.3 --set solver.transient=0.1 --quiet";
+using bearing::test::fresh_dir;
+using bearing::test::kShort;
+using bearing::test::read;
+using bearing::test::sim;
 
 TEST(CliRun, WritesTheFourFilesWithTheDocumentedKeys) {
   const fs::path d = fresh_dir("run_default");

@@ -22,13 +22,18 @@
 #include "bearing/errors.h"
 #include "bearing/kinematics.h"
 #include "bearing/simulation.h"
+#include "cli_helpers.h"
 #include "synthetic_signals.h"
 
 namespace bearing {
 namespace {
 
 namespace fs = std::filesystem;
+using test::fresh_dir;
 using test::ImpactTrain;
+using test::kShort;
+using test::read;
+using test::sim;
 
 constexpr double kFs = 20000;      // [Hz]
 constexpr std::size_t kN = 20000;  // 1 s: 1 Hz bins
@@ -293,29 +298,6 @@ TEST(EnvelopeBandKey, ReadsChecksAndRoundTripsExactly) {
 
 // ----------------------------------------------------------------------------------------------
 // bearing-sim run
-
-std::string read(const fs::path& p) {
-  std::ifstream f(p, std::ios::binary);
-  std::stringstream s;
-  s << f.rdbuf();
-  return s.str();
-}
-
-int sim(const std::string& args, std::string* out = nullptr) {
-  const fs::path o = fs::path(::testing::TempDir()) / "envelope_cli.stdout.txt";
-  const std::string cmd = std::string(BEARING_SIM) + " " + args + " >" + o.string() + " 2>&1";
-  const int status = std::system(cmd.c_str());
-  if (out) *out = read(o);
-  return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-}
-
-fs::path fresh_dir(const std::string& name) {
-  const fs::path d = fs::path(::testing::TempDir()) / name;
-  fs::remove_all(d);
-  return d;
-}
-
-const std::string kShort = " --set solver.duration=0.3 --set solver.transient=0.1 --quiet";
 
 TEST(EnvelopeCli, AutoWritesEnvelopeCsvAndTheSummaryBlocks) {
   const fs::path d = fresh_dir("run_envelope");
