@@ -66,6 +66,13 @@ double expected_line(DefectLocation where) {
   return 2 * b.pitch_diameter / b.ball_diameter * (1 + g) * k.cage;
 }
 
+// The names of the expected line and its second and third harmonics.
+std::vector<std::string> line_names(DefectLocation where) {
+  if (where == DefectLocation::ball) return {"2xBSF", "4xBSF", "6xBSF"};
+  const std::string f = where == DefectLocation::outer ? "BPFO" : "BPFI";
+  return {f, "2x" + f, "3x" + f};
+}
+
 Outcome spall_line(const Context& ctx, DefectLocation where) {
   const double expected = expected_line(where);
   RunSpec s;
@@ -103,7 +110,9 @@ Outcome spall_line(const Context& ctx, DefectLocation where) {
                       false,
                       false,
                       {sp},
-                      {{expected, "expected"}, {2 * expected, "2x"}, {3 * expected, "3x"}}}};
+                      {{expected, line_names(where)[0]},
+                       {2 * expected, line_names(where)[1]},
+                       {3 * expected, line_names(where)[2]}}}};
   return o;
 }
 
@@ -147,13 +156,14 @@ std::vector<Check> fault_checks() {
       "or FTF sidebands, >= 24 bins away) shift it through the Hann sidelobes by < 1e-3 bin; "
       "bound 0.02 Hz, a twentieth of the 0.27 Hz a 1 % error of d_m makes";
   const auto line = [&](DefectLocation where, const char* name, const char* what) {
+    const std::string on = where == DefectLocation::ball ? "ball 0" : std::string(name) + " race";
     return Check{std::string("dynamics.spall-envelope-line.") + name + ".6205",
                  "dynamics",
                  ReferenceKind::closed_form,
                  std::string("value: frequency of the strongest envelope line near ") + what +
                      " of ay, 2-DOF 6205 at 1797 rpm under 500 N with a 0.533 mm spall on the " +
-                     name + " (RK4 5 us, 2 s at 48 kHz, band by the kurtogram); reference: " +
-                     what + " of the preset geometry (textbook kinematics written here)",
+                     on + " (RK4 5 us, 2 s at 48 kHz, band by the kurtogram); reference: " + what +
+                     " of the preset geometry (textbook kinematics written here)",
                  std::string(what) + " line",
                  "Hz",
                  absolute(0.02, line_why),
@@ -173,7 +183,7 @@ std::vector<Check> fault_checks() {
        "m",
        relative(1e-9,
                 "the construction is exact to the bisection's 1e-16 m; the model's drop is the "
-                "closed form of the same geometry, rounding only (7.3 um)"),
+                "closed form of the same geometry, rounding only (7.4 um)"),
        Level::quick,
        0.01,
        {"spall-width-x0.8", "pitch-diameter-x1.01"},
