@@ -11,6 +11,7 @@ ModelInputs model_inputs(const Case& c) {
   ModelInputs in;
   in.bearing = c.bearing;
   in.hertz_method = hertz_shape_method(c.model);
+  in.contact_loop = c.solver.contact_loop;
   in.contact = contact_constants(c);
   in.inner_speed = c.operation.speed;
   in.load = c.operation.load;

@@ -342,6 +342,9 @@ std::vector<Key> solver_keys() {
           "blow-up bound on the ring displacement (default 1 mm)",
           [](auto& c) -> auto& { return c.solver.max_displacement; },
           limits::solver_max_displacement),
+      choice(
+          "solver.contact_loop", "simd | scalar: per-ball contact loop (same results)",
+          kContactLoops, "contact loop", [](auto& c) -> auto& { return c.solver.contact_loop; }),
   };
 }
 

@@ -24,6 +24,7 @@
 #include "bearing/local_defect.h"
 #include "bearing/models/model_inputs.h"
 #include "bearing/solvers/mechanical_system.h"
+#include "contact_kernels.h"
 #include "defect_excitation.h"
 #include "frame_workspace.h"
 #include "max_balls.h"
@@ -88,14 +89,15 @@ class BallSet {
         K_(in.contact.K),
         exponent_(in.contact.exponent),
         cage_phase_(in.cage_phase),
+        kernels_(contact_kernels(in.contact_loop)),
         inner_K_(in.contact.inner.K),
         outer_K_(in.contact.outer.K),
         outer_exponent_(in.contact.outer.exponent),
         inner_waviness_(in.inner_waviness),
         outer_waviness_(in.outer_waviness) {
     const int Z = balls_;
-    base_cos_.resize(Z);
-    base_sin_.resize(Z);
+    base_cos_.assign(padded_balls(Z), 0.0);  // read by the kernels in whole vectors
+    base_sin_.assign(padded_balls(Z), 0.0);
     for (int j = 0; j < Z; ++j) {
       base_cos_[j] = std::cos(in.cage_phase + two_pi * j / Z);
       base_sin_[j] = std::sin(in.cage_phase + two_pi * j / Z);
@@ -120,10 +122,14 @@ class BallSet {
   }
 
   int balls() const { return balls_; }
+  /// The per-ball kernels (contact_kernels.h) of the case's contact loop.
+  const ContactKernels& kernels() const { return kernels_; }
   double cage_speed() const { return cage_speed_; }
   double K() const { return K_; }
   double exponent() const { return exponent_; }
   bool tvds() const { return inner_stiffness_.varies || outer_stiffness_.varies; }
+  /// Whether e_j or K_j depend on t (waviness on a race, or a local defect).
+  bool excitation_varies() const { return !inner_.empty() || !outer_.empty() || !defects_.empty(); }
   /// Load–deflection exponent n_o of a ball on the outer race [-].
   double outer_exponent() const { return outer_exponent_; }
   /// ΔD_j = D − D_j [m].
@@ -173,7 +179,11 @@ class BallSet {
     assert(dynamic_cast<FrameWorkspace<Frame>*>(&workspace));
     auto& w = static_cast<FrameWorkspace<Frame>&>(workspace);
     if (w.t != t) {
-      evaluate(t, w.frame);
+      // Without waviness and defects e_j and K_j do not depend on t: only the angles move.
+      if (std::isnan(w.t) || excitation_varies())
+        evaluate(t, w.frame);
+      else
+        angles(t, w.frame);
       w.t = t;
     }
     return w.frame;
@@ -265,10 +275,8 @@ class BallSet {
     const Phasor shaft = needs_shaft_ ? phasor(inner_speed_ * t) : Phasor{1.0, 0.0};
     fr.cos_shaft = shaft.c;
     fr.sin_shaft = shaft.s;
-    for (int j = 0; j < balls_; ++j) {
-      fr.cos_theta[j] = base_cos_[j] * cc - base_sin_[j] * sc;
-      fr.sin_theta[j] = base_sin_[j] * cc + base_cos_[j] * sc;
-    }
+    static_assert(kMaxBalls % kKernelPad == 0, "the frame's arrays hold whole vectors");
+    kernels_.rotate(base_cos_.data(), base_sin_.data(), cc, sc, balls_, fr.cos_theta, fr.sin_theta);
   }
 
   // Adds each race's waviness at the balls of `fr` (angles set) to `inner` and `outer` (one array
@@ -307,6 +315,7 @@ class BallSet {
   double K_;
   double exponent_;
   double cage_phase_;
+  ContactKernels kernels_;
   double inner_K_;
   double outer_K_;
   double outer_exponent_;

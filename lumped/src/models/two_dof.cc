@@ -57,13 +57,18 @@ class TwoDofModel final : public BearingModel {
     double fx = load_x_ + unbalance_force_ * fr.cos_shaft - damping_ * v[0];
     double fy = load_y_ + unbalance_force_ * fr.sin_shaft - damping_ * v[1];
     const int Z = set_.balls();
-    for (int j = 0; j < Z; ++j) {
-      const double c = fr.cos_theta[j], s = fr.sin_theta[j];
-      const double delta = x * c + y * s - gap_ + fr.excitation[j];
-      if (delta <= 0) continue;
-      const double Q = detail::contact_load(fr.stiffness[j], n, delta);
-      fx -= Q * c;
-      fy -= Q * s;
+    if (n == 1.5) {
+      set_.kernels().radial(fr.cos_theta, fr.sin_theta, fr.excitation, fr.stiffness, Z, x, y, gap_,
+                            &fx, &fy);
+    } else {
+      for (int j = 0; j < Z; ++j) {
+        const double c = fr.cos_theta[j], s = fr.sin_theta[j];
+        const double delta = x * c + y * s - gap_ + fr.excitation[j];
+        if (delta <= 0) continue;
+        const double Q = detail::contact_load(fr.stiffness[j], n, delta);
+        fx -= Q * c;
+        fy -= Q * s;
+      }
     }
     f[0] = fx;
     f[1] = fy;

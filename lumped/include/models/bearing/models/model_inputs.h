@@ -8,6 +8,7 @@
 
 #include "bearing/bearing.h"
 #include "bearing/contact.h"
+#include "bearing/contact_loop.h"
 #include "bearing/excitation.h"
 #include "bearing/local_defect.h"
 #include "bearing/traction.h"
@@ -19,6 +20,7 @@ struct ModelInputs {
   ContactConstants contact;  ///< constants per race and in series (the case's contact law)
   /// TVDS: the Hertz method of the curvature–compliance table (exact for an FE-calibrated law)
   HertzMethod hertz_method = HertzMethod::exact;
+  ContactLoop contact_loop = ContactLoop::simd;  ///< per-ball loop: SIMD or scalar (same bits)
 
   double inner_speed = 0.0;                        ///< ω_i [rad/s], outer ring fixed
   double cage_phase = 0.0;                         ///< φ₀, angle of ball 0 at t = 0 [rad]

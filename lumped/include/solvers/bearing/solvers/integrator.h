@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "bearing/choice.h"
+#include "bearing/contact_loop.h"
 #include "bearing/solvers/mechanical_system.h"
 
 namespace bearing {
@@ -34,6 +35,7 @@ struct SolverSettings {
   double tolerance = 1e-6;
   double output_rate = 20000.0;    ///< samples per second written [Hz]
   double max_displacement = 1e-3;  ///< blow-up bound on the ring displacement [m]
+  ContactLoop contact_loop = ContactLoop::simd;  ///< the models' per-ball loop (same bits)
 };
 
 struct IntegratorSettings {

@@ -1,0 +1,56 @@
+#pragma once
+// Private to the lumped models (not installed): the per-ball work of a force evaluation that is
+// the same for every ball, as kernels over the ball arrays of a frame (ball_set.h). Two
+// implementations give the same bits: `simd` (Highway, the instruction set chosen once at run
+// time, so a binary built for any x86-64 uses AVX-512 or AVX2 where the CPU has them) and
+// `scalar` (one ball at a time, kept for checking). Same bits because each ball's arithmetic is
+// the same sequence of IEEE operations in both (no fused multiply–add: the kernels' file is built
+// with -ffp-contract=off), and the ring force is summed over the loaded balls in ball order in
+// both, never by a lane-width-dependent reduction; so a run is also bit-reproducible across CPUs.
+
+#include <string>
+#include <vector>
+
+#include "bearing/contact_loop.h"
+
+namespace bearing::detail {
+
+/// Every array a kernel reads or writes must have room for the balls rounded up to a multiple of
+/// kKernelPad (the widest vector: 8 doubles); what lies past the last ball is never used.
+inline constexpr int kKernelPad = 8;
+
+/// (cos θ_j, sin θ_j) = (b_c cos φ − b_s sin φ, b_s cos φ + b_c sin φ) for j < Z: the base angles
+/// (b_c, b_s) rotated by one angle φ given as (cos φ, sin φ).
+using RotateBalls = void (*)(const double* base_cos, const double* base_sin, double cos_phi,
+                             double sin_phi, int Z, double* cos_theta, double* sin_theta);
+
+/// Radial Hertz contacts on the ring at (x, y) [m]: δ_j = x c_j + y s_j − γ + e_j [m] and, for
+/// δ_j > 0, Q_j = K_j δ_j^{3/2} [N] (K_j [N/m^1.5]); subtracts Q_j c_j from *fx and Q_j s_j from
+/// *fy [N], in ball order.
+using RadialContacts = void (*)(const double* cos_theta, const double* sin_theta,
+                                const double* excitation, const double* stiffness, int Z, double x,
+                                double y, double gap, double* fx, double* fy);
+
+struct ContactKernels {
+  RotateBalls rotate;
+  RadialContacts radial;
+};
+
+/// The kernels of `loop` (simd: the best instruction set of this CPU, found on the first call).
+ContactKernels contact_kernels(ContactLoop loop);
+
+/// The kernels of every instruction set this build holds that this CPU can run, named ("AVX3",
+/// "AVX2", "SSE4", "EMU128", ...), for tests that check each against the scalar loop. Switches
+/// Highway's dispatch while it runs: not to be called while other threads run models.
+struct NamedKernels {
+  std::string target;
+  ContactKernels kernels;
+};
+std::vector<NamedKernels> kernels_per_target();
+
+/// Z rounded up to a multiple of kKernelPad.
+constexpr int padded_balls(int Z) {
+  return (Z + kKernelPad - 1) / kKernelPad * kKernelPad;
+}
+
+}  // namespace bearing::detail

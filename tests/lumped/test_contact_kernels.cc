@@ -1,0 +1,59 @@
+// The contact kernels (lumped/src/models/contact_kernels.h) of every instruction set this build
+// holds that this CPU runs (AVX-512, AVX2, SSE4, the emulated 128-bit one...) against the scalar
+// loop, on random balls: the same bits, so a run is reproducible across CPUs. The whole models
+// are compared in test_contact_loop.cc.
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <random>
+#include <string>
+#include <vector>
+
+#include "../../lumped/src/models/contact_kernels.h"
+#include "bearing/contact_loop.h"
+
+namespace bearing {
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+
+TEST(ContactKernels, EveryInstructionSetGivesTheScalarBits) {
+  const detail::ContactKernels scalar = detail::contact_kernels(ContactLoop::scalar);
+  const std::vector<detail::NamedKernels> targets = detail::kernels_per_target();
+  if (simd_target().rfind("scalar", 0) == 0) GTEST_SKIP() << "built without Highway";
+  ASSERT_GE(targets.size(), 2u);  // at least the best one and Highway's portable fallback
+  std::mt19937_64 rng(7);
+  std::uniform_real_distribution<double> u(-1, 1);
+  for (const detail::NamedKernels& t : targets)
+    for (int Z : {1, 3, 7, 8, 9, 15, 16, 17, 33}) {
+      SCOPED_TRACE(t.target + ", Z = " + std::to_string(Z));
+      const int n = detail::padded_balls(Z);
+      std::vector<double> bc(n), bs(n), e(n), K(n);
+      for (int j = 0; j < Z; ++j) {
+        bc[j] = std::cos(2 * kPi * j / Z + 0.3);
+        bs[j] = std::sin(2 * kPi * j / Z + 0.3);
+        e[j] = 1e-6 * u(rng);
+        K[j] = 1e10 * (1 + 0.1 * u(rng));
+      }
+      for (int k = 0; k < 50; ++k) {
+        const double phi = 10 * u(rng), x = 2e-5 * u(rng), y = 2e-5 * u(rng), gap = 5e-6;
+        std::vector<double> c1(n), s1(n), c2(n), s2(n);
+        t.kernels.rotate(bc.data(), bs.data(), std::cos(phi), std::sin(phi), Z, c1.data(),
+                         s1.data());
+        scalar.rotate(bc.data(), bs.data(), std::cos(phi), std::sin(phi), Z, c2.data(), s2.data());
+        for (int j = 0; j < Z; ++j) {
+          ASSERT_EQ(c1[j], c2[j]) << j;
+          ASSERT_EQ(s1[j], s2[j]) << j;
+        }
+        double fx1 = 3.0, fy1 = -2.0, fx2 = 3.0, fy2 = -2.0;
+        t.kernels.radial(c1.data(), s1.data(), e.data(), K.data(), Z, x, y, gap, &fx1, &fy1);
+        scalar.radial(c2.data(), s2.data(), e.data(), K.data(), Z, x, y, gap, &fx2, &fy2);
+        ASSERT_EQ(fx1, fx2);
+        ASSERT_EQ(fy1, fy2);
+      }
+    }
+}
+
+}  // namespace
+}  // namespace bearing
