@@ -13,6 +13,9 @@
 //   bare scalar loop     the issue's yardstick: RK4 written out by hand for the same 2-DOF case,
 //                        1.2 s at 5 us, the ball angles advanced by rotating them by the phasor of
 //                        ω_c h/2 twice a step, the contact force inline, nothing written
+//   seed 004             issue 7's problems (examples/seed004_6304.toml, 1 s at 5 us, the 1 kHz
+//                        observer): the 2-DOF model, and the ball-DOF model with cage slip 0.02
+//                        and mu_m = 0.01; simd and scalar (target 4: balls <= 1.5x the 2-DOF)
 //   bearing-sim run      the whole process (case, simulation, FFT, CSV and JSON into a temporary
 //                        folder), when BEARING_SIM is given; simd and scalar
 
@@ -159,6 +162,39 @@ bool run_process(const std::string& sim, const char* loop, const std::string& ou
          WEXITSTATUS(status) == 0;
 }
 
+// Seed 004's 6304 as bench_dynamics.cc reads it: the example file, its [cage] and [ball] tables
+// dropped for the 2-DOF model.
+std::string seed004_toml(bool balls) {
+  const std::string path = std::string(BEARING_EXAMPLES_DIR) + "/seed004_6304.toml";
+  std::FILE* f = std::fopen(path.c_str(), "r");
+  if (!f) throw std::runtime_error("cannot read " + path);
+  std::string text, line;
+  char buf[4096];
+  bool skip = false;
+  while (std::fgets(buf, sizeof buf, f)) {
+    line = buf;
+    const auto first = line.find_first_not_of(" \t");
+    if (first != std::string::npos && line[first] == '[') {
+      const std::string header = line.substr(first, line.find(']', first) + 1 - first);
+      skip = !balls && (header == "[cage]" || header == "[ball]");
+    }
+    if (!skip) text += line;
+  }
+  std::fclose(f);
+  return text;
+}
+
+bearing::Case seed004(bool balls, const char* loop) {
+  std::vector<bearing::Override> o = {{"solver.contact_loop", loop}};
+  if (balls) {
+    o.push_back({"cage.slip", "0.02"});
+    o.push_back({"cage.friction", "0.01"});
+  } else {
+    o.push_back({"model.kind", "2dof"});
+  }
+  return bearing::parse_case(seed004_toml(balls), "seed004_6304.toml", o, BEARING_EXAMPLES_DIR);
+}
+
 struct Row {
   std::string name;
   std::function<void()> body;
@@ -184,6 +220,19 @@ int main(int argc, char** argv) {
     return p;
   };
   const Model simd = make(ContactLoop::simd), scalar = make(ContactLoop::scalar);
+  auto make_case = [](const bearing::Case& c) {
+    Model p;
+    p.m = bearing::make_model(c);
+    p.q0 = p.m->initial_displacement();
+    p.v0 = p.m->initial_velocity();
+    return p;
+  };
+  const Model s4_two = make_case(seed004(false, "simd")),
+              s4_two_scalar = make_case(seed004(false, "scalar")),
+              s4_balls = make_case(seed004(true, "simd")),
+              s4_balls_scalar = make_case(seed004(true, "scalar"));
+  std::vector<double> sparse;  // 1 s at 1 kHz, as bench_dynamics.cc's BM_Seed004
+  for (int k = 0; k <= 1000; ++k) sparse.push_back(k * 1e-3);
   std::vector<double> times;
   for (long k = 0; k <= std::lround(kDuration * kOutputRate); ++k)
     times.push_back(static_cast<double>(k) / kOutputRate);
@@ -212,6 +261,23 @@ int main(int argc, char** argv) {
       {"bare scalar RK4 loop",
        [&] { g_sink = g_sink + bare_rk4(bare, simd.q0[0], simd.q0[1]); },
        {}},
+      {"seed 004, 2-DOF, simd",
+       [&] { g_sink = g_sink + rk4_run(*s4_two.m, s4_two.q0, s4_two.v0, sparse); },
+       {}},
+      {"seed 004, 2-DOF, scalar",
+       [&] {
+         g_sink = g_sink + rk4_run(*s4_two_scalar.m, s4_two_scalar.q0, s4_two_scalar.v0, sparse);
+       },
+       {}},
+      {"seed 004, balls (slip 0.02, mu_m 0.01), simd",
+       [&] { g_sink = g_sink + rk4_run(*s4_balls.m, s4_balls.q0, s4_balls.v0, sparse); },
+       {}},
+      {"seed 004, balls (slip 0.02, mu_m 0.01), scalar",
+       [&] {
+         g_sink =
+             g_sink + rk4_run(*s4_balls_scalar.m, s4_balls_scalar.q0, s4_balls_scalar.v0, sparse);
+       },
+       {}},
   };
   if (!sim.empty()) {
     const std::string out = "/tmp/bearing_bench_simd_run";
@@ -238,9 +304,11 @@ int main(int argc, char** argv) {
       "\nratios of minima: force simd/scalar %.3f (scalar/simd %.2fx); RK4 simd/scalar "
       "%.3f; RK4 simd / bare loop %.3f; RK4 scalar / bare loop %.3f",
       ratio(0, 1), ratio(1, 0), ratio(2, 3), ratio(2, 4), ratio(3, 4));
+  std::printf("; seed 004 balls/2-DOF: simd %.3f, scalar %.3f; balls simd/scalar %.3f", ratio(7, 5),
+              ratio(8, 6), ratio(7, 8));
   if (!sim.empty())
-    std::printf("; run simd / bare loop %.3f; run scalar / bare loop %.3f", ratio(5, 4),
-                ratio(6, 4));
+    std::printf("; run simd / bare loop %.3f; run scalar / bare loop %.3f", ratio(9, 4),
+                ratio(10, 4));
   std::printf("\n");
   return 0;
 }

@@ -19,7 +19,7 @@ namespace {
 constexpr double kPi = 3.14159265358979323846;
 
 TEST(ContactKernels, EveryInstructionSetGivesTheScalarBits) {
-  const detail::ContactKernels scalar = detail::contact_kernels(ContactLoop::scalar);
+  const detail::ContactKernels scalar = detail::contact_kernels(ContactLoop::scalar, 8);
   const std::vector<detail::NamedKernels> targets = detail::kernels_per_target();
   if (simd_target().rfind("scalar", 0) == 0) GTEST_SKIP() << "built without Highway";
   ASSERT_GE(targets.size(), 2u);  // at least the best one and Highway's portable fallback
@@ -51,6 +51,56 @@ TEST(ContactKernels, EveryInstructionSetGivesTheScalarBits) {
         scalar.radial(c2.data(), s2.data(), e.data(), K.data(), Z, x, y, gap, &fx2, &fy2);
         ASSERT_EQ(fx1, fx2);
         ASSERT_EQ(fy1, fy2);
+      }
+    }
+}
+
+TEST(ContactKernels, PlanarBallsInEveryInstructionSetGiveTheScalarBits) {
+  const detail::ContactKernels scalar = detail::contact_kernels(ContactLoop::scalar, 8);
+  std::mt19937_64 rng(11);
+  std::uniform_real_distribution<double> u(-1, 1);
+  for (const detail::NamedKernels& t : detail::kernels_per_target())
+    for (int Z : {4, 5, 7, 8, 9, 12, 13}) {
+      for (bool friction : {false, true}) {
+        SCOPED_TRACE(t.target + ", Z = " + std::to_string(Z) + (friction ? ", friction" : ""));
+        const int n = detail::padded_balls(Z);
+        std::vector<double> c(n), s(n), ei(n), eo(n), Ki(n), Ko(n);
+        // The ball DOFs exactly Z long, as at the end of the integrator's state vector.
+        std::vector<double> pos(Z), speed(Z), spin(Z);
+        for (int j = 0; j < Z; ++j) {
+          c[j] = std::cos(2 * kPi * j / Z + 0.3);
+          s[j] = std::sin(2 * kPi * j / Z + 0.3);
+          ei[j] = 1e-7 * u(rng), eo[j] = 1e-7 * u(rng);
+          Ki[j] = 1e10 * (1 + 0.1 * u(rng)), Ko[j] = 1.1e10 * (1 + 0.1 * u(rng));
+        }
+        for (int k = 0; k < 50; ++k) {
+          for (int j = 0; j < Z; ++j) {
+            pos[j] = 3e-6 * u(rng);
+            speed[j] = 1e-3 * u(rng);
+            spin[j] = 2000 * (1 + 0.01 * u(rng));
+          }
+          detail::PlanarBalls in;
+          in.cos_theta = c.data(), in.sin_theta = s.data();
+          in.inner_excitation = ei.data(), in.outer_excitation = eo.data();
+          in.inner_stiffness = Ki.data(), in.outer_stiffness = Ko.data();
+          in.position = pos.data(), in.speed = speed.data(), in.spin = spin.data();
+          in.balls = Z;
+          in.x = 2e-5 * u(rng), in.y = 2e-5 * u(rng), in.vx = 1e-3 * u(rng), in.vy = 1e-3 * u(rng);
+          in.gap = 5e-6, in.centrifugal = 3.0, in.ball_damping = 200, in.lever = 3e-3;
+          in.drive_inner = 6.0, in.drive_outer = 6.1, in.traction_gain = 0.1,
+          in.traction_cap = 0.01;
+          in.friction = friction;
+          std::vector<double> r1(Z), t1(Z), r2(Z), t2(Z);
+          double fx1 = 3.0, fy1 = -2.0, fx2 = 3.0, fy2 = -2.0;
+          t.kernels.planar_balls(in, r1.data(), t1.data(), &fx1, &fy1);
+          scalar.planar_balls(in, r2.data(), t2.data(), &fx2, &fy2);
+          ASSERT_EQ(fx1, fx2);
+          ASSERT_EQ(fy1, fy2);
+          for (int j = 0; j < Z; ++j) {
+            ASSERT_EQ(r1[j], r2[j]) << j;
+            ASSERT_EQ(t1[j], t2[j]) << j;
+          }
+        }
       }
     }
 }

@@ -154,8 +154,7 @@ class BallDofs final : public BallDofModel {
     if (axial_)
       friction_ ? force_impl<true, true>(fr, q, v, f) : force_impl<true, false>(fr, q, v, f);
     else if (hertz_)
-      friction_ ? force_impl<false, true, true>(fr, q, v, f)
-                : force_impl<false, false, true>(fr, q, v, f);
+      planar_hertz_force(fr, q, v, f);
     else
       friction_ ? force_impl<false, true>(fr, q, v, f) : force_impl<false, false>(fr, q, v, f);
   }
@@ -341,6 +340,36 @@ class BallDofs final : public BallDofModel {
   static double load(double K, double n, double delta) {
     delta = std::max(delta, 0.0);
     return kHertz ? K * delta * std::sqrt(delta) : K * std::pow(delta, n);
+  }
+
+  // force() of the planar model with both exponents 3/2: the per-ball kernel
+  // (contact_kernels.h) of the case's contact loop.
+  void planar_hertz_force(const detail::RaceFrame& fr, const double* q, const double* v,
+                          double* f) const {
+    detail::PlanarBalls in;
+    in.cos_theta = fr.cos_theta;
+    in.sin_theta = fr.sin_theta;
+    in.inner_excitation = fr.inner_excitation;
+    in.outer_excitation = fr.outer_excitation;
+    in.inner_stiffness = fr.inner_stiffness;
+    in.outer_stiffness = fr.outer_stiffness;
+    in.position = q + ring_;
+    in.speed = v + ring_;
+    in.spin = v + ring_ + balls_;
+    in.balls = balls_;
+    in.x = q[0], in.y = q[1], in.vx = v[0], in.vy = v[1];
+    in.gap = gap_;
+    in.centrifugal = centrifugal_along_;
+    in.ball_damping = ball_damping_;
+    in.lever = lever_;
+    in.drive_inner = drive_inner_, in.drive_outer = drive_outer_;
+    in.traction_gain = traction_gain_, in.traction_cap = mu_max_;
+    in.friction = friction_;
+    double fx = load_x_ + unbalance_force_ * fr.cos_shaft - damping_ * v[0];
+    double fy = load_y_ + unbalance_force_ * fr.sin_shaft - damping_ * v[1];
+    set_.kernels().planar_balls(in, f + ring_, f + ring_ + balls_, &fx, &fy);
+    f[0] = fx;
+    f[1] = fy;
   }
 
   // force(): the equations of ball_dofs.h; kHertz: both exponents 3/2.

@@ -89,7 +89,7 @@ class BallSet {
         K_(in.contact.K),
         exponent_(in.contact.exponent),
         cage_phase_(in.cage_phase),
-        kernels_(contact_kernels(in.contact_loop)),
+        kernels_(contact_kernels(in.contact_loop, in.bearing.balls)),
         inner_K_(in.contact.inner.K),
         outer_K_(in.contact.outer.K),
         outer_exponent_(in.contact.outer.exponent),

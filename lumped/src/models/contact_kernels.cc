@@ -1,6 +1,7 @@
 // The contact kernels of contact_kernels.h: Highway's per-target code (this file is compiled once
 // per instruction set through foreach_target.h) and the scalar reference.
 
+#include <algorithm>
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
@@ -66,8 +67,72 @@ void RadialContactsImpl(const double* HWY_RESTRICT cos_theta, const double* HWY_
   *fy = sy;
 }
 
+// The planar balls in vectors of at most 4 (AVX2's width, also on AVX-512 machines: 7 to 9
+// balls are common). The last vector ends at the last ball and overlaps the one before, so no
+// load or store passes the arrays' end (the ball DOFs sit in the integrator's state vectors); its
+// lanes already done are stored again with the same values and left out of the ring sums.
+// Needs Z >= the lane count (contact_kernels() gives the scalar loop for fewer balls).
+using PlanarTag = hn::CappedTag<double, kPlanarLanes>;
+
+void PlanarBallsImpl(const PlanarBalls& in, double* HWY_RESTRICT radial,
+                     double* HWY_RESTRICT torque, double* fx, double* fy) {
+  const PlanarTag d;
+  const std::size_t N = hn::Lanes(d), n = static_cast<std::size_t>(in.balls);
+  const auto x = hn::Set(d, in.x), y = hn::Set(d, in.y), gap = hn::Set(d, in.gap);
+  const auto vx = hn::Set(d, in.vx), vy = hn::Set(d, in.vy), zero = hn::Zero(d);
+  const auto fc = hn::Set(d, in.centrifugal), cb = hn::Set(d, in.ball_damping);
+  const auto lever = hn::Set(d, in.lever), ai = hn::Set(d, in.drive_inner);
+  const auto ao = hn::Set(d, in.drive_outer), gain = hn::Set(d, in.traction_gain);
+  const auto cap = hn::Set(d, in.traction_cap), minus_cap = hn::Neg(cap);
+  HWY_ALIGN double qc[kPlanarLanes] = {}, qs[kPlanarLanes] = {}, pc[kPlanarLanes] = {},
+                   ps[kPlanarLanes] = {};
+  double sx = *fx, sy = *fy;
+  for (std::size_t done = 0; done < n;) {
+    const std::size_t j = std::min(done, n - N);  // the last vector ends at ball Z − 1
+    const auto c = hn::LoadU(d, in.cos_theta + j), s = hn::LoadU(d, in.sin_theta + j);
+    const auto pos = hn::LoadU(d, in.position + j);
+    const auto delta_o = hn::Max(hn::Add(pos, hn::LoadU(d, in.outer_excitation + j)), zero);
+    const auto delta_i =
+        hn::Max(hn::Add(hn::Sub(hn::Sub(hn::Add(hn::Mul(x, c), hn::Mul(y, s)), pos), gap),
+                        hn::LoadU(d, in.inner_excitation + j)),
+                zero);
+    const auto load_o =
+        hn::Mul(hn::Mul(hn::LoadU(d, in.outer_stiffness + j), delta_o), hn::Sqrt(delta_o));
+    const auto load_i =
+        hn::Mul(hn::Mul(hn::LoadU(d, in.inner_stiffness + j), delta_i), hn::Sqrt(delta_i));
+    const auto speed = hn::LoadU(d, in.speed + j);
+    hn::StoreU(hn::Sub(hn::Add(hn::Sub(load_i, load_o), fc), hn::Mul(cb, speed)), d, radial + j);
+    hn::Store(hn::Mul(load_i, c), d, qc);
+    hn::Store(hn::Mul(load_i, s), d, qs);
+    if (in.friction) {
+      const auto spin = hn::Mul(lever, hn::LoadU(d, in.spin + j));
+      const auto dvi = hn::Add(hn::Sub(ai, spin), hn::Sub(hn::Mul(vy, c), hn::Mul(vx, s)));
+      const auto dvo = hn::Sub(ao, spin);
+      const auto pi = hn::Mul(hn::Min(hn::Max(hn::Mul(gain, dvi), minus_cap), cap), load_i);
+      const auto po = hn::Mul(hn::Min(hn::Max(hn::Mul(gain, dvo), minus_cap), cap), load_o);
+      hn::StoreU(hn::Mul(lever, hn::Add(pi, po)), d, torque + j);
+      hn::Store(hn::Mul(pi, s), d, ps);
+      hn::Store(hn::Mul(pi, c), d, pc);
+    } else {
+      hn::StoreU(zero, d, torque + j);
+    }
+    // The ring force ball by ball, in the scalar loop's order, from the first ball not yet added.
+    for (std::size_t k = done - j; k < N; ++k) {
+      sx -= qc[k];
+      sy -= qs[k];
+      if (in.friction) {
+        sx += ps[k];
+        sy -= pc[k];
+      }
+    }
+    done = j + N;
+  }
+  *fx = sx;
+  *fy = sy;
+}
+
 ContactKernels KernelsImpl() {
-  return {&RotateBallsImpl, &RadialContactsImpl};
+  return {&RotateBallsImpl, &RadialContactsImpl, &PlanarBallsImpl};
 }
 const char* TargetImpl() {
   return hwy::TargetName(HWY_TARGET);
@@ -103,6 +168,34 @@ void radial_contacts_scalar(const double* cos_theta, const double* sin_theta,
   }
 }
 
+void planar_balls_scalar(const PlanarBalls& in, double* radial, double* torque, double* fx,
+                         double* fy) {
+  const double cap = in.traction_cap;
+  for (int j = 0; j < in.balls; ++j) {
+    const double c = in.cos_theta[j], s = in.sin_theta[j];
+    const double delta_o = std::max(in.position[j] + in.outer_excitation[j], 0.0);
+    const double delta_i =
+        std::max(in.x * c + in.y * s - in.position[j] - in.gap + in.inner_excitation[j], 0.0);
+    const double load_o = in.outer_stiffness[j] * delta_o * std::sqrt(delta_o);
+    const double load_i = in.inner_stiffness[j] * delta_i * std::sqrt(delta_i);
+    *fx -= load_i * c;
+    *fy -= load_i * s;
+    radial[j] = load_i - load_o + in.centrifugal - in.ball_damping * in.speed[j];
+    if (!in.friction) {
+      torque[j] = 0.0;
+      continue;
+    }
+    const double spin = in.lever * in.spin[j];
+    const double dvi = in.drive_inner - spin + (in.vy * c - in.vx * s);
+    const double dvo = in.drive_outer - spin;
+    const double pi = std::min(std::max(in.traction_gain * dvi, -cap), cap) * load_i;
+    const double po = std::min(std::max(in.traction_gain * dvo, -cap), cap) * load_o;
+    *fx += pi * s;  // μ Q_i τ_j on the ring
+    *fy -= pi * c;
+    torque[j] = in.lever * (pi + po);
+  }
+}
+
 #ifndef BEARING_WITHOUT_HIGHWAY
 HWY_EXPORT(KernelsImpl);
 HWY_EXPORT(TargetImpl);
@@ -117,12 +210,17 @@ const char* dispatched_target() {
 
 }  // namespace
 
-ContactKernels contact_kernels(ContactLoop loop) {
+ContactKernels contact_kernels(ContactLoop loop, int balls) {
 #ifndef BEARING_WITHOUT_HIGHWAY
-  if (loop == ContactLoop::simd) return HWY_DYNAMIC_DISPATCH(KernelsImpl)();
+  if (loop == ContactLoop::simd) {
+    ContactKernels k = HWY_DYNAMIC_DISPATCH(KernelsImpl)();
+    if (balls < kPlanarLanes) k.planar_balls = &planar_balls_scalar;
+    return k;
+  }
 #endif
+  (void)balls;
   (void)loop;
-  return {&rotate_balls_scalar, &radial_contacts_scalar};
+  return {&rotate_balls_scalar, &radial_contacts_scalar, &planar_balls_scalar};
 }
 
 std::vector<NamedKernels> kernels_per_target() {

@@ -31,13 +31,52 @@ using RadialContacts = void (*)(const double* cos_theta, const double* sin_theta
                                 const double* excitation, const double* stiffness, int Z, double x,
                                 double y, double gap, double* fx, double* fy);
 
+/// The planar ball-DOF model's balls (ball_dofs.h, both exponents 3/2, no axial load): each ball
+/// j with its DOF s_j between the races. Frame arrays as above (kKernelPad room); the ball arrays
+/// (s_j, ṡ_j, ω_b,j, and the outputs) need room for Z only.
+struct PlanarBalls {
+  const double* cos_theta;
+  const double* sin_theta;
+  const double* inner_excitation;           ///< e_i,j [m]
+  const double* outer_excitation;           ///< e_o,j [m]
+  const double* inner_stiffness;            ///< K_i,j [N/m^1.5]
+  const double* outer_stiffness;            ///< K_o,j [N/m^1.5]
+  const double* position;                   ///< s_j [m]
+  const double* speed;                      ///< ṡ_j [m/s]
+  const double* spin;                       ///< ω_b,j [rad/s]
+  int balls = 0;                            ///< Z
+  double x = 0, y = 0;                      ///< ring position [m]
+  double vx = 0, vy = 0;                    ///< ring velocity [m/s]
+  double gap = 0;                           ///< γ [m]
+  double centrifugal = 0;                   ///< F_c along the DOF [N]
+  double ball_damping = 0;                  ///< c_b [N s/m]
+  double lever = 0;                         ///< L_s [m]
+  double drive_inner = 0, drive_outer = 0;  ///< A_i, A_o [m/s]
+  double traction_gain = 0;                 ///< μ_m/Δv_m [s/m]; with friction
+  double traction_cap = 0;                  ///< μ_m [-]
+  bool friction = false;
+};
+
+/// For each ball: δ_o = s_j + e_o,j, δ_i = x c_j + y s_j − s_j − γ + e_i,j, Q = K [δ]_+^{3/2};
+/// radial[j] = Q_i − Q_o + F_c − c_b ṡ_j [N]; with friction μ = clamp(μ_m/Δv_m Δv, ±μ_m) at
+/// Δv_i = A_i − L_s ω_b + (v_y c − v_x s) and Δv_o = A_o − L_s ω_b, torque[j] = L_s (μ_i Q_i +
+/// μ_o Q_o) [N m] (0 without). Subtracts Q_i (c_j, s_j) from (*fx, *fy) and adds μ_i Q_i (s_j,
+/// −c_j), ball by ball in order.
+using PlanarBallForces = void (*)(const PlanarBalls& in, double* radial, double* torque, double* fx,
+                                  double* fy);
+
 struct ContactKernels {
   RotateBalls rotate;
   RadialContacts radial;
+  PlanarBallForces planar_balls;
 };
 
-/// The kernels of `loop` (simd: the best instruction set of this CPU, found on the first call).
-ContactKernels contact_kernels(ContactLoop loop);
+/// The kernels of `loop` for Z = `balls` (simd: the best instruction set of this CPU, found on the
+/// first call).
+ContactKernels contact_kernels(ContactLoop loop, int balls);
+
+/// The planar balls' vectors hold at most this many balls (fewer balls: the scalar loop).
+inline constexpr int kPlanarLanes = 4;
 
 /// The kernels of every instruction set this build holds that this CPU can run, named ("AVX3",
 /// "AVX2", "SSE4", "EMU128", ...), for tests that check each against the scalar loop. Switches

@@ -21,6 +21,7 @@
 
 #include "bearing/solvers/integrator.h"
 #include "integrator_detail.h"
+#include "rk4_stages.h"
 
 namespace bearing {
 namespace solvers_detail {
@@ -69,10 +70,12 @@ IntegrationStats Rk4::integrate(const MechanicalSystem& system, double t0,
   check_state(method, t0, 0, dt, q, v, n, bound);
   if (output_times.empty()) return stats;
 
+  const Rk4Arrays r{q, v, a, qs, vs, as, sq, sv, n};
+  const bool wide = n >= kRk4WideDofs;
   const std::unique_ptr<MechanicalSystem::Workspace> workspace = system.make_workspace();
   const auto acceleration = [&](double t, const double* qq, const double* vv, double* aa) {
     system.force_with(workspace.get(), t, qq, vv, aa);
-    for (int i = 0; i < n; ++i) aa[i] *= w[i];
+    wide ? rk4_wide::scale(aa, w, n) : rk4_inline::scale(aa, w, n);
   };
 
   ProgressThrottle report(progress, t0, output_times.back());
@@ -90,30 +93,14 @@ IntegrationStats Rk4::integrate(const MechanicalSystem& system, double t0,
         acceleration(t, q, v, a);
         ++evaluations;
       }
-      for (int i = 0; i < n; ++i) {
-        qs[i] = q[i] + hh * v[i];
-        vs[i] = v[i] + hh * a[i];
-      }
+      wide ? rk4_wide::stage2(r, hh) : rk4_inline::stage2(r, hh);
       acceleration(t + hh, qs, vs, as);
-      for (int i = 0; i < n; ++i) {
-        sq[i] = v[i] + 2.0 * vs[i];
-        sv[i] = a[i] + 2.0 * as[i];
-        qs[i] = q[i] + hh * vs[i];
-        vs[i] = v[i] + hh * as[i];
-      }
+      wide ? rk4_wide::stage3(r, hh) : rk4_inline::stage3(r, hh);
       acceleration(t + hh, qs, vs, as);
-      for (int i = 0; i < n; ++i) {
-        sq[i] += 2.0 * vs[i];
-        sv[i] += 2.0 * as[i];
-        qs[i] = q[i] + h * vs[i];
-        vs[i] = v[i] + h * as[i];
-      }
+      wide ? rk4_wide::stage4(r, h) : rk4_inline::stage4(r, h);
       acceleration(t + h, qs, vs, as);
       const double h6 = h / 6.0;
-      for (int i = 0; i < n; ++i) {
-        q[i] += h6 * (sq[i] + vs[i]);
-        v[i] += h6 * (sv[i] + as[i]);
-      }
+      wide ? rk4_wide::finish(r, h6) : rk4_inline::finish(r, h6);
       evaluations += 3;
       a_current = false;
       ++k;
