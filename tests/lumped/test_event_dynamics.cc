@@ -19,8 +19,8 @@ using namespace bearing;
 
 TEST(EventDynamics, DefaultCaseAgreesWithRk4) {
   const SimulationResult rk4 = simulate(default_case());
-  const SimulationResult events = simulate(
-      default_case({{"solver.method", "rk8pd-events"}, {"solver.tolerance", "1e-5"}}));
+  const SimulationResult events =
+      simulate(default_case({{"solver.method", "rk8pd-events"}, {"solver.tolerance", "1e-5"}}));
   const double ref = channel_statistics(rk4.response.steady("ay")).rms;
   const double rms = channel_statistics(events.response.steady("ay")).rms;
   EXPECT_LE(std::abs(rms / ref - 1), 1e-4) << rms << " vs " << ref;
