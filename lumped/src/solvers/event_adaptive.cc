@@ -163,11 +163,6 @@ class StepControl {
     rejected_ = false;
     return true;
   }
-  /// Forgets the history (a restart on an event).
-  void reset() {
-    r_prev_ = 1e-4;
-    rejected_ = false;
-  }
 
  private:
   static constexpr double kSafety = 0.9;
