@@ -971,7 +971,7 @@ TEST(IntegratorFactory, BadTolerancesNameSolverTolerance) {
 
 TEST(IntegratorFactory, EveryNameMakesThatMethod) {
   EXPECT_EQ(integrator_names(),
-            (std::vector<std::string>{"rk4", "rkf45", "rk8pd", "newmark", "bdf"}));
+            (std::vector<std::string>{"rk4", "rkf45", "rk8pd", "rk8pd-events", "newmark", "bdf"}));
   for (const std::string& name : integrator_names())
     EXPECT_EQ(make_integrator(settings(name, 5e-6))->name(), name);
 }

@@ -317,8 +317,8 @@ std::vector<Key> solver_keys() {
   return {
       t,
       choice(
-          "solver.method", "rk4 | rkf45 | rk8pd | newmark | bdf", kIntegratorMethods, "method",
-          [](auto& c) -> auto& { return c.solver.method; }),
+          "solver.method", "rk4 | rkf45 | rk8pd | rk8pd-events | newmark | bdf", kIntegratorMethods,
+          "method", [](auto& c) -> auto& { return c.solver.method; }),
       quantity(
           "solver.dt", D::time, "time step, or first step (default 5 us)",
           [](auto& c) -> auto& { return c.solver.dt; }, limits::solver_dt),

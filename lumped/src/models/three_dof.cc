@@ -188,6 +188,13 @@ class ThreeDofModel final : public BearingModel {
   // r_j = δ_o,j cos α_j − Π_o + ΔD_j/2 (bearing_model.h). With ρ_j = x cos θ_j + y sin θ_j + e_j,
   // L = sqrt((w₀ + z)² + (u₀ + ρ)²): dδ/dt = dL/dt = [(u₀ + ρ) dρ/dt + (w₀ + z) ż]/L and
   // d(cos α)/dt = [dρ/dt − cos α dL/dt]/L. An unloaded ball has no outer approach: r = −Π_o + ΔD/2.
+  // Contacts open and close where δ_j changes sign: the ball approaches are the switching
+  // functions.
+  int switching_count() const override { return set_.balls(); }
+  void switching_functions(double t, const double* q, double* g) const override {
+    ball_approaches(t, q, g);
+  }
+
   void ball_motion(double t, const double* q, const double* v, double* r,
                    double* vr) const override {
     detail::BallFrame fr;

@@ -117,6 +117,13 @@ class TwoDofModel final : public BearingModel {
         t, [&](int j, const detail::BallFrame& fr) { return approach(q, fr, j); }, out);
   }
 
+  // Contacts open and close where δ_j changes sign: the ball approaches are the switching
+  // functions.
+  int switching_count() const override { return set_.balls(); }
+  void switching_functions(double t, const double* q, double* g) const override {
+    ball_approaches(t, q, g);
+  }
+
   void ball_motion(double t, const double* q, const double* v, double* r,
                    double* vr) const override {
     detail::radial_ball_motion(set_, gap_, t, q, v, r, vr);

@@ -74,6 +74,8 @@ namespace {
 // the step, finite so that GSL's error ratios stay numbers (see the top).
 constexpr double kCyclicScale = 1e300;
 
+}  // namespace
+
 // y' = [v, M⁻¹ f]; params is a GslContext*. A model exception is parked, and a non-finite force
 // recorded, and either is reported as a bad function, which makes GSL return at once: a
 // non-finite force means the state has already run away (Hertz forces are finite for any finite
@@ -145,9 +147,7 @@ void check_step(const std::string& method, int status, const GslContext& context
                       "solver.tolerance or check the load/clearance");
 }
 
-struct DriverFree {
-  void operator()(gsl_odeiv2_driver* d) const { gsl_odeiv2_driver_free(d); }
-};
+namespace {
 
 class GslAdaptive final : public Integrator {
  public:

@@ -113,6 +113,8 @@ std::unique_ptr<Integrator> make_integrator(const IntegratorSettings& settings) 
       return solvers_detail::make_newmark(settings);
     case IntegratorMethod::bdf:
       return solvers_detail::make_bdf(settings);
+    case IntegratorMethod::rk8pd_events:
+      return solvers_detail::make_event_adaptive(settings);
     case IntegratorMethod::rkf45:
     case IntegratorMethod::rk8pd:
       break;

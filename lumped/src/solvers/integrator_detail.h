@@ -25,6 +25,8 @@ std::unique_ptr<Integrator> make_rk4(const IntegratorSettings& settings);
 std::unique_ptr<Integrator> make_gsl_adaptive(const IntegratorSettings& settings);
 std::unique_ptr<Integrator> make_newmark(const IntegratorSettings& settings);
 std::unique_ptr<Integrator> make_bdf(const IntegratorSettings& settings);
+/// rk8pd with contact events located (event_adaptive.cc).
+std::unique_ptr<Integrator> make_event_adaptive(const IntegratorSettings& settings);
 
 /// What the GSL callbacks see through gsl_odeiv2_system::params: the model and its force
 /// workspace, 1/m, counters, work arrays for force_jacobian, and an exception the model threw
@@ -48,6 +50,27 @@ struct GslContext {
 
 /// The Jacobian callback of gsl_odeiv2_system (params is a GslContext*), or nullptr.
 using GslJacobian = int (*)(double t, const double y[], double* dfdy, double dfdt[], void* params);
+
+/// y' = [v, M⁻¹ f] for GSL (gsl_adaptive.cc; params is a GslContext*): counts the evaluation,
+/// parks a model exception in the context and records a non-finite force there, either returned
+/// as GSL_EBADFUNC.
+int first_order_rhs(double t, const double y[], double dydt[], void* params);
+
+/// The adaptive methods' absolute-tolerance scales s_i of y = [q, v] (gsl_adaptive.cc: 1 for a
+/// displacement, 1e300 for a cyclic one, ω_i for a velocity), from force_jacobian at t0.
+std::vector<double> tolerance_scales(const MechanicalSystem& system, double t0,
+                                     const std::vector<double>& q0, const std::vector<double>& v0,
+                                     const std::vector<double>& inv_mass, double dt,
+                                     GslContext& context);
+
+/// Throws for a failed GSL step (status ≠ GSL_SUCCESS): the model's exception, a blow-up (a
+/// non-finite force), or a step-size control that cannot meet the tolerance.
+void check_step(const std::string& method, int status, const GslContext& context, double t,
+                long step, double h);
+
+struct DriverFree {
+  void operator()(gsl_odeiv2_driver* d) const { gsl_odeiv2_driver_free(d); }
+};
 
 /// integrate() for a GSL odeiv2 stepper with error control (gsl_adaptive.cc): rkf45, rk8pd, and
 /// msbdf (bdf.cc, which passes the Jacobian callback). `method` names it in messages.

@@ -15,13 +15,11 @@
 namespace bearing {
 
 /// The integration methods ([solver] method), each one file in src/solvers/.
-enum class IntegratorMethod { rk4, rkf45, rk8pd, newmark, bdf };
+enum class IntegratorMethod { rk4, rkf45, rk8pd, rk8pd_events, newmark, bdf };
 inline constexpr Named<IntegratorMethod> kIntegratorMethods[] = {
-    {IntegratorMethod::rk4, "rk4"},
-    {IntegratorMethod::rkf45, "rkf45"},
-    {IntegratorMethod::rk8pd, "rk8pd"},
-    {IntegratorMethod::newmark, "newmark"},
-    {IntegratorMethod::bdf, "bdf"}};
+    {IntegratorMethod::rk4, "rk4"},         {IntegratorMethod::rkf45, "rkf45"},
+    {IntegratorMethod::rk8pd, "rk8pd"},     {IntegratorMethod::rk8pd_events, "rk8pd-events"},
+    {IntegratorMethod::newmark, "newmark"}, {IntegratorMethod::bdf, "bdf"}};
 
 /// The [solver] table: how a model is integrated and sampled. Defaults: RK4 at 5 µs (seeds 002/003)
 /// for 1.2 s, the first 0.2 s discarded as transient, output at 20 kHz.
@@ -62,6 +60,7 @@ struct IntegrationStats {
   long rejected_steps = 0;     ///< rejected steps (adaptive methods)
   long force_evaluations = 0;  ///< calls of MechanicalSystem::force (or force_with)
   long jacobian_evaluations = 0;
+  long events = 0;  ///< steps ended on a switching event (rk8pd-events)
 };
 
 class Integrator {

@@ -54,6 +54,17 @@ class MechanicalSystem {
   /// adaptive methods' step-size control (its velocity is still controlled), and apply Newmark's
   /// relative Newton tolerance to its increment over a step rather than its accumulated value.
   virtual bool cyclic(int /*i*/) const { return false; }
+
+  /// Number of switching functions (0, the default: none; see switching_functions()).
+  virtual int switching_count() const { return 0; }
+
+  /// The switching functions g_k(t, q), switching_count() entries: quantities whose sign change
+  /// marks a point where f(t, q, v) is not smooth in time, e.g. a bearing model's signed ball
+  /// approaches δ_j [m] (f has an unbounded second derivative where a contact opens or closes,
+  /// δ_j = 0). An event-locating integrator (rk8pd-events) ends a step where one changes sign
+  /// and restarts there, so no step straddles the kink. Sign convention: g_k > 0 is one side,
+  /// g_k ≤ 0 the other (a contact is loaded for δ_j > 0). Must not allocate.
+  virtual void switching_functions(double /*t*/, const double* /*q*/, double* /*g*/) const {}
 };
 
 }  // namespace bearing
