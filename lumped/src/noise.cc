@@ -88,6 +88,10 @@ BearingNoise radiate(const Response& response, const AcousticsOptions& ac, const
   const int Z = bearing.balls;
   std::vector<std::vector<double>> radial;
   std::vector<FilteredRecord> filtered;  // each ball's, for every microphone
+  std::vector<BallOrbit> orbits;         // likewise
+  SourcePath path;                       // one ball's, seen from one microphone
+  std::vector<std::vector<double>> each(
+      static_cast<std::size_t>(balls_on ? Z : 0));  // ball pressures
   if (balls_on) {
     ball = make_series_source(source_model_name(ac.ball_source), 0.5 * bearing.ball_diameter, air,
                               "acoustics.ball_source");
@@ -96,6 +100,7 @@ BearingNoise radiate(const Response& response, const AcousticsOptions& ac, const
       radial.push_back(response.steady("r" + std::to_string(j + 1)));
       filtered.push_back(
           filter_moving(*ball, window_and_next(response, "vr" + std::to_string(j + 1)), rate, fft));
+      orbits.push_back(ball_orbit(2 * pi * j / Z, cage_speed, out.time));
     }
   }
 
@@ -123,12 +128,10 @@ BearingNoise radiate(const Response& response, const AcousticsOptions& ac, const
 
     std::vector<double> p_balls(n, 0.0);
     if (balls_on) {
-      std::vector<std::vector<double>> each;
       double nearest = std::numeric_limits<double>::infinity();
       const double a = ball->radius();
       for (int j = 0; j < Z; ++j) {
-        const SourcePath path = ball_path(lv.position, 0.5 * bearing.pitch_diameter, 2 * pi * j / Z,
-                                          cage_speed, out.time, radial[j]);
+        ball_path(lv.position, 0.5 * bearing.pitch_diameter, orbits[j], radial[j], path);
         const auto closest = std::min_element(path.distance.begin(), path.distance.end());
         if (*closest <= a) {
           const auto k = static_cast<std::size_t>(closest - path.distance.begin());
@@ -141,7 +144,7 @@ BearingNoise radiate(const Response& response, const AcousticsOptions& ac, const
                            mm(ball_annulus(bearing).y()));
         }
         nearest = std::min(nearest, *closest - a);
-        each.push_back(pressure_from(*ball, filtered[j], rate, path, *interpolator));
+        pressure_from(*ball, filtered[j], rate, path, *interpolator, each[j]);
       }
       p_balls = sum_pressures(each, summation);
       lv.p_rms_balls = root_mean_square(p_balls);
