@@ -7,6 +7,7 @@
 #include <cstdio>
 #include <limits>
 #include <memory>
+#include <utility>
 
 #include "bearing/acoustics/microphones.h"
 #include "bearing/acoustics/pressure.h"
@@ -104,6 +105,28 @@ BearingNoise radiate(const Response& response, const AcousticsOptions& ac, const
     }
   }
 
+  // The ring at every microphone at once (its Hankel functions of ka once per frequency).
+  std::vector<std::vector<double>> p_rings;
+  if (ring_on) {
+    std::vector<std::vector<double>> un;
+    std::vector<double> distance;
+    for (std::size_t i = 0; i < ac.microphones.size(); ++i) {
+      const Microphone& mic = ac.microphones[i];
+      const Eigen::Vector2d d = microphone_position(mic) - out.ring_centre;
+      const double r = d.norm();
+      if (!(r > ring->radius()))
+        throw InputError(microphone_key(i) + " = " + shown(mic) + ": the microphone is " + mm(r) +
+                         " from the ring centre, inside the ring "
+                         "source of radius acoustics.ring_radius = " +
+                         mm(ring->radius()) + "; it must lie outside it");
+      // The dipole's pattern is linear in the velocity: p = H(r, cos ψ = 1) · (v · d/r).
+      un.emplace_back(n + 1);
+      for (std::size_t k = 0; k <= n; ++k) un.back()[k] = (vx[k] * d.x() + vy[k] * d.y()) / r;
+      distance.push_back(r);
+    }
+    p_rings = radiate_fixed(*ring, un, rate, distance, std::vector<double>(un.size(), 1.0), fft);
+  }
+
   for (std::size_t i = 0; i < ac.microphones.size(); ++i) {
     const Microphone& mic = ac.microphones[i];
     MicrophoneLevels lv;
@@ -112,17 +135,7 @@ BearingNoise radiate(const Response& response, const AcousticsOptions& ac, const
 
     std::vector<double> p_ring(n, 0.0);
     if (ring_on) {
-      const Eigen::Vector2d d = lv.position - out.ring_centre;
-      const double r = d.norm();
-      if (!(r > ring->radius()))
-        throw InputError(microphone_key(i) + " = " + shown(mic) + ": the microphone is " + mm(r) +
-                         " from the ring centre, inside the ring "
-                         "source of radius acoustics.ring_radius = " +
-                         mm(ring->radius()) + "; it must lie outside it");
-      // The dipole's pattern is linear in the velocity: p = H(r, cos ψ = 1) · (v · d/r).
-      std::vector<double> un(n + 1);
-      for (std::size_t k = 0; k <= n; ++k) un[k] = (vx[k] * d.x() + vy[k] * d.y()) / r;
-      p_ring = radiate_fixed(*ring, un, rate, r, 1.0, fft);
+      p_ring = std::move(p_rings[i]);
       lv.p_rms_ring = root_mean_square(p_ring);
     }
 

@@ -251,6 +251,37 @@ std::vector<double> radiate_fixed(const AcousticSource& source, const std::vecto
   return p;
 }
 
+std::vector<std::vector<double>> radiate_fixed(const AcousticSource& source,
+                                               const std::vector<std::vector<double>>& velocities,
+                                               double rate, const std::vector<double>& r,
+                                               const std::vector<double>& cos_angle, RealFft& fft) {
+  const std::size_t points = velocities.size(), n = fft.size();
+  if (r.size() != points || cos_angle.size() != points)
+    throw std::logic_error("radiate_fixed: one distance and one angle per record");
+  std::vector<Detrended> d;
+  for (std::size_t i = 0; i < points; ++i) {
+    check_record(velocities[i], rate, fft);
+    source.transfer(1.0, r[i], cos_angle[i]);  // checks the geometry once, with its message
+    d.push_back(detrend(velocities[i], rate, fft));
+  }
+  // filter() for every point, the frequency loop outside.
+  std::vector<std::vector<std::complex<double>>> P(points);
+  for (auto& spectrum : P) spectrum.resize(n / 2 + 1);
+  std::vector<std::complex<double>> H;
+  for (std::size_t k = 1; k <= n / 2; ++k)
+    if (2 * static_cast<double>(k) <= kPressureBandFraction * static_cast<double>(n)) {
+      source.transfer(angular_frequency(k, rate, n), r, cos_angle, H);
+      for (std::size_t i = 0; i < points; ++i) P[i][k] = H[i] * d[i].spectrum[k];
+    }
+  std::vector<std::vector<double>> p;
+  for (std::size_t i = 0; i < points; ++i) {
+    p.push_back(fft.inverse(P[i]));
+    const double ramp = d[i].slope * source.ramp_pressure(r[i], cos_angle[i]);
+    for (double& v : p.back()) v += ramp;
+  }
+  return p;
+}
+
 std::vector<double> radiate_moving(const RadialSeriesSource& source,
                                    const std::vector<double>& velocity, double rate,
                                    const SourcePath& path, RealFft& fft) {

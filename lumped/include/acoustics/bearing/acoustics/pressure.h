@@ -51,6 +51,15 @@ constexpr double kPressureBandFraction = 0.8;
 std::vector<double> radiate_fixed(const AcousticSource& source, const std::vector<double>& velocity,
                                   double rate, double r, double cos_angle, RealFft& fft);
 
+/// radiate_fixed at several points: velocities[i] (N + 1 samples) is the record seen at r[i],
+/// cos_angle[i]. The same records, bit for bit, as one radiate_fixed per point; the transfer
+/// function is evaluated for all the points at once at each frequency (what depends on the body
+/// alone, once). Throws as radiate_fixed.
+std::vector<std::vector<double>> radiate_fixed(const AcousticSource& source,
+                                               const std::vector<std::vector<double>>& velocities,
+                                               double rate, const std::vector<double>& r,
+                                               const std::vector<double>& cos_angle, RealFft& fft);
+
 /// Where a moving body is, seen from the point, at each sample.
 struct SourcePath {
   std::vector<double> distance;  ///< r_n ≥ a, from the body's centre to the point [m]
