@@ -7,6 +7,7 @@
 #include <cstdio>
 #include <limits>
 #include <memory>
+#include <utility>
 
 #include "bearing/acoustics/microphones.h"
 #include "bearing/acoustics/pressure.h"
@@ -88,6 +89,10 @@ BearingNoise radiate(const Response& response, const AcousticsOptions& ac, const
   const int Z = bearing.balls;
   std::vector<std::vector<double>> radial;
   std::vector<FilteredRecord> filtered;  // each ball's, for every microphone
+  std::vector<BallOrbit> orbits;         // likewise
+  SourcePath path;                       // one ball's, seen from one microphone
+  std::vector<std::vector<double>> each(
+      static_cast<std::size_t>(balls_on ? Z : 0));  // ball pressures
   if (balls_on) {
     ball = make_series_source(source_model_name(ac.ball_source), 0.5 * bearing.ball_diameter, air,
                               "acoustics.ball_source");
@@ -96,7 +101,30 @@ BearingNoise radiate(const Response& response, const AcousticsOptions& ac, const
       radial.push_back(response.steady("r" + std::to_string(j + 1)));
       filtered.push_back(
           filter_moving(*ball, window_and_next(response, "vr" + std::to_string(j + 1)), rate, fft));
+      orbits.push_back(ball_orbit(2 * pi * j / Z, cage_speed, out.time));
     }
+  }
+
+  // The ring at every microphone at once (its Hankel functions of ka once per frequency).
+  std::vector<std::vector<double>> p_rings;
+  if (ring_on) {
+    std::vector<std::vector<double>> un;
+    std::vector<double> distance;
+    for (std::size_t i = 0; i < ac.microphones.size(); ++i) {
+      const Microphone& mic = ac.microphones[i];
+      const Eigen::Vector2d d = microphone_position(mic) - out.ring_centre;
+      const double r = d.norm();
+      if (!(r > ring->radius()))
+        throw InputError(microphone_key(i) + " = " + shown(mic) + ": the microphone is " + mm(r) +
+                         " from the ring centre, inside the ring "
+                         "source of radius acoustics.ring_radius = " +
+                         mm(ring->radius()) + "; it must lie outside it");
+      // The dipole's pattern is linear in the velocity: p = H(r, cos ψ = 1) · (v · d/r).
+      un.emplace_back(n + 1);
+      for (std::size_t k = 0; k <= n; ++k) un.back()[k] = (vx[k] * d.x() + vy[k] * d.y()) / r;
+      distance.push_back(r);
+    }
+    p_rings = radiate_fixed(*ring, un, rate, distance, std::vector<double>(un.size(), 1.0), fft);
   }
 
   for (std::size_t i = 0; i < ac.microphones.size(); ++i) {
@@ -107,28 +135,16 @@ BearingNoise radiate(const Response& response, const AcousticsOptions& ac, const
 
     std::vector<double> p_ring(n, 0.0);
     if (ring_on) {
-      const Eigen::Vector2d d = lv.position - out.ring_centre;
-      const double r = d.norm();
-      if (!(r > ring->radius()))
-        throw InputError(microphone_key(i) + " = " + shown(mic) + ": the microphone is " + mm(r) +
-                         " from the ring centre, inside the ring "
-                         "source of radius acoustics.ring_radius = " +
-                         mm(ring->radius()) + "; it must lie outside it");
-      // The dipole's pattern is linear in the velocity: p = H(r, cos ψ = 1) · (v · d/r).
-      std::vector<double> un(n + 1);
-      for (std::size_t k = 0; k <= n; ++k) un[k] = (vx[k] * d.x() + vy[k] * d.y()) / r;
-      p_ring = radiate_fixed(*ring, un, rate, r, 1.0, fft);
+      p_ring = std::move(p_rings[i]);
       lv.p_rms_ring = root_mean_square(p_ring);
     }
 
     std::vector<double> p_balls(n, 0.0);
     if (balls_on) {
-      std::vector<std::vector<double>> each;
       double nearest = std::numeric_limits<double>::infinity();
       const double a = ball->radius();
       for (int j = 0; j < Z; ++j) {
-        const SourcePath path = ball_path(lv.position, 0.5 * bearing.pitch_diameter, 2 * pi * j / Z,
-                                          cage_speed, out.time, radial[j]);
+        ball_path(lv.position, 0.5 * bearing.pitch_diameter, orbits[j], radial[j], path);
         const auto closest = std::min_element(path.distance.begin(), path.distance.end());
         if (*closest <= a) {
           const auto k = static_cast<std::size_t>(closest - path.distance.begin());
@@ -141,7 +157,7 @@ BearingNoise radiate(const Response& response, const AcousticsOptions& ac, const
                            mm(ball_annulus(bearing).y()));
         }
         nearest = std::min(nearest, *closest - a);
-        each.push_back(pressure_from(*ball, filtered[j], rate, path, *interpolator));
+        pressure_from(*ball, filtered[j], rate, path, *interpolator, each[j]);
       }
       p_balls = sum_pressures(each, summation);
       lv.p_rms_balls = root_mean_square(p_balls);

@@ -3,6 +3,7 @@
 #include "bearing/acoustics/microphones.h"
 
 #include <cmath>
+#include <string>
 
 #include "bearing/errors.h"
 
@@ -19,17 +20,40 @@ SourcePath ball_path(const Eigen::Vector2d& at, double pitch_radius, double thet
     throw InputError("ball path: " + std::to_string(times.size()) + " times and " +
                      std::to_string(radial.size()) + " radial positions");
   SourcePath path;
-  path.distance.resize(times.size());
-  path.cos_angle.resize(times.size());
+  ball_path(at, pitch_radius, ball_orbit(theta0, cage_speed, times), radial, path);
+  return path;
+}
+
+BallOrbit ball_orbit(double theta0, double cage_speed, const std::vector<double>& times) {
+  BallOrbit o;
+  o.cos.resize(times.size());
+  o.sin.resize(times.size());
   for (std::size_t n = 0; n < times.size(); ++n) {
     const double theta = theta0 + cage_speed * times[n];
-    const Eigen::Vector2d e(std::cos(theta), std::sin(theta));
-    const Eigen::Vector2d d = at - (pitch_radius + radial[n]) * e;
-    const double r = d.norm();
-    path.distance[n] = r;
-    path.cos_angle[n] = r > 0 ? e.dot(d) / r : 0.0;
+    o.cos[n] = std::cos(theta);
+    o.sin[n] = std::sin(theta);
   }
-  return path;
+  return o;
+}
+
+void ball_path(const Eigen::Vector2d& at, double pitch_radius, const BallOrbit& orbit,
+               const std::vector<double>& radial, SourcePath& path) {
+  const std::size_t n = radial.size();
+  if (orbit.cos.size() != n || orbit.sin.size() != n)
+    throw InputError("ball path: an orbit of " + std::to_string(orbit.cos.size()) +
+                     " samples and " + std::to_string(n) + " radial positions");
+  path.distance.resize(n);
+  path.cos_angle.resize(n);
+  // Plain arithmetic on arrays (it vectorises): d = at − (R + r_n) e_n, |d|, e_n · d / |d|, in
+  // the order Eigen's norm() and dot() use.
+  const double ax = at.x(), ay = at.y();
+  for (std::size_t k = 0; k < n; ++k) {
+    const double c = orbit.cos[k], s = orbit.sin[k], R = pitch_radius + radial[k];
+    const double dx = ax - R * c, dy = ay - R * s;
+    const double r = std::sqrt(dx * dx + dy * dy);
+    path.distance[k] = r;
+    path.cos_angle[k] = r > 0 ? (c * dx + s * dy) / r : 0.0;
+  }
 }
 
 Eigen::Vector2d ball_annulus(const Bearing& b) {

@@ -8,6 +8,7 @@
 #include <cmath>
 #include <complex>
 #include <cstdlib>
+#include <cstring>
 #include <stdexcept>
 #include <string>
 
@@ -83,6 +84,110 @@ std::vector<double> filter(const std::vector<std::complex<double>>& U, double ra
   return fft.inverse(P);
 }
 
+// What pressure_from places at every sample.
+struct Placement {
+  const double* x;          // FilteredRecord::interleaved()
+  std::size_t n;            // samples
+  const double* distance;   // r_n
+  const double* cos_angle;  // cos ψ_n, or nullptr for a breathing body (Θ = 1)
+  const int* powers;        // of (a/r), one per term
+  const double* ramp;       // one per term
+  double a, samples_per_metre;
+};
+
+// Θ_n Σ_m (a/r_n)^m (value_m + ramp_m), in the order of the operations that defined the output.
+template <int M>
+double combine(const Placement& pl, std::size_t i, const double* value) {
+  const double r = pl.distance[i];
+  double sum = 0;
+  for (int m = 0; m < M; ++m) {
+    double weight = 1;  // (a/r)^m, m a small whole number
+    for (int e = 0; e < pl.powers[m]; ++e) weight *= pl.a / r;
+    sum += weight * (value[m] + pl.ramp[m]);
+  }
+  return (pl.cos_angle ? pl.cos_angle[i] : 1.0) * sum;
+}
+
+// The fractional sample position of the delayed time at sample i.
+double position(const Placement& pl, std::size_t i) {
+  return static_cast<double>(i) - (pl.distance[i] - pl.a) * pl.samples_per_metre;
+}
+
+// One sample: on a sample the record's own value, else PeriodicInterpolator::apply's sum.
+template <int M>
+double place_one(const Placement& pl, const PeriodicInterpolator& at, std::size_t i) {
+  constexpr int T = PeriodicInterpolator::kTaps;
+  const double s = position(pl, i);
+  double value[M] = {};
+  if (s == static_cast<double>(i)) {
+    for (int m = 0; m < M; ++m) value[m] = pl.x[i * M + m];
+  } else {
+    double w[T];
+    const double* x = pl.x + at.taps(s, pl.n, w) * M;
+    for (int t = 0; t < T; ++t)
+      for (int m = 0; m < M; ++m) value[m] += w[t] * x[t * M + m];
+  }
+  return combine<M>(pl, i, value);
+}
+
+// acc[g][m] = Σ_t w[g][t] x[g][t·M + m] for G samples at once, each sum in the order of a single
+// one (t ascending: the same bits as PeriodicInterpolator::apply).
+template <int M, int G>
+void tap_sums(const double (*w)[PeriodicInterpolator::kTaps], const double* const* x,
+              double (*acc)[M]) {
+  for (int t = 0; t < PeriodicInterpolator::kTaps; ++t)
+    for (int g = 0; g < G; ++g)
+      for (int m = 0; m < M; ++m) acc[g][m] += w[g][t] * x[g][t * M + m];
+}
+
+#if defined(__GNUC__)
+// Two terms (the oscillating sphere) as the two lanes of one SSE2 register, x86-64's baseline:
+// GCC's vector extension (Clang has it too), 12 % faster than the loop above, which GCC 12
+// vectorises along t with shuffles instead.
+template <>
+void tap_sums<2, 2>(const double (*w)[PeriodicInterpolator::kTaps], const double* const* x,
+                    double (*acc)[2]) {
+  typedef double Pair __attribute__((vector_size(16)));
+  Pair sum[2] = {};
+  for (int t = 0; t < PeriodicInterpolator::kTaps; ++t)
+    for (int g = 0; g < 2; ++g) {
+      Pair q;
+      std::memcpy(&q, x[g] + 2 * t, sizeof q);
+      sum[g] += w[g][t] * q;
+    }
+  for (int g = 0; g < 2; ++g) acc[g][0] = sum[g][0], acc[g][1] = sum[g][1];
+}
+#endif
+
+// Every sample, G at a time: their G·M sums of kTaps products run side by side, each in the
+// order of a single sum (the same bits), so neither the dependency chain of one sum nor the
+// scalar arithmetic bounds the speed.
+template <int M>
+void place(const Placement& pl, const PeriodicInterpolator& at, double* p) {
+  constexpr int T = PeriodicInterpolator::kTaps, G = 2;
+  std::size_t i = 0;
+  if (pl.samples_per_metre != 0) {  // else every sample is on a sample
+    alignas(16) double w[G][T];
+    const double* x[G];
+    for (; i + G <= pl.n; i += G) {
+      bool on_sample = false;
+      for (int g = 0; g < G; ++g) {
+        const double s = position(pl, i + g);
+        on_sample = on_sample || s == static_cast<double>(i + g);
+        x[g] = pl.x + at.taps(s, pl.n, w[g]) * M;
+      }
+      if (on_sample) {
+        for (int g = 0; g < G; ++g) p[i + g] = place_one<M>(pl, at, i + g);
+        continue;
+      }
+      double acc[G][M] = {};
+      tap_sums<M, G>(w, x, acc);
+      for (int g = 0; g < G; ++g) p[i + g] = combine<M>(pl, i + g, acc[g]);
+    }
+  }
+  for (; i < pl.n; ++i) p[i] = place_one<M>(pl, at, i);
+}
+
 }  // namespace
 
 PeriodicInterpolator::PeriodicInterpolator() {
@@ -101,19 +206,22 @@ PeriodicInterpolator::PeriodicInterpolator() {
 }
 
 PeriodicInterpolator::Taps PeriodicInterpolator::taps(double s, std::size_t n) const {
+  Taps t;
+  t.first = taps(s, n, t.weight.data());
+  return t;
+}
+
+std::size_t PeriodicInterpolator::taps(double s, std::size_t n, double* weight) const {
   const double floor_s = std::floor(s);
   const double phase = (s - floor_s) * kPhases;
   const int p = std::min(static_cast<int>(phase), kPhases - 1);
   const double w = phase - p;
   const double* k0 = &table_[static_cast<std::size_t>(p * kTaps)];
   const double* k1 = k0 + kTaps;
-  Taps t;
-  for (int i = 0; i < kTaps; ++i)
-    t.weight[static_cast<std::size_t>(i)] = (1 - w) * k0[i] + w * k1[i];
+  for (int i = 0; i < kTaps; ++i) weight[i] = (1 - w) * k0[i] + w * k1[i];
   long first = (static_cast<long>(floor_s) - kHalfWidth + 1) % static_cast<long>(n);
   if (first < 0) first += static_cast<long>(n);
-  t.first = static_cast<std::size_t>(first);
-  return t;
+  return static_cast<std::size_t>(first);
 }
 
 double PeriodicInterpolator::apply(const Taps& t, const std::vector<double>& x) {
@@ -143,6 +251,37 @@ std::vector<double> radiate_fixed(const AcousticSource& source, const std::vecto
   return p;
 }
 
+std::vector<std::vector<double>> radiate_fixed(const AcousticSource& source,
+                                               const std::vector<std::vector<double>>& velocities,
+                                               double rate, const std::vector<double>& r,
+                                               const std::vector<double>& cos_angle, RealFft& fft) {
+  const std::size_t points = velocities.size(), n = fft.size();
+  if (r.size() != points || cos_angle.size() != points)
+    throw std::logic_error("radiate_fixed: one distance and one angle per record");
+  std::vector<Detrended> d;
+  for (std::size_t i = 0; i < points; ++i) {
+    check_record(velocities[i], rate, fft);
+    source.transfer(1.0, r[i], cos_angle[i]);  // checks the geometry once, with its message
+    d.push_back(detrend(velocities[i], rate, fft));
+  }
+  // filter() for every point, the frequency loop outside.
+  std::vector<std::vector<std::complex<double>>> P(points);
+  for (auto& spectrum : P) spectrum.resize(n / 2 + 1);
+  std::vector<std::complex<double>> H;
+  for (std::size_t k = 1; k <= n / 2; ++k)
+    if (2 * static_cast<double>(k) <= kPressureBandFraction * static_cast<double>(n)) {
+      source.transfer(angular_frequency(k, rate, n), r, cos_angle, H);
+      for (std::size_t i = 0; i < points; ++i) P[i][k] = H[i] * d[i].spectrum[k];
+    }
+  std::vector<std::vector<double>> p;
+  for (std::size_t i = 0; i < points; ++i) {
+    p.push_back(fft.inverse(P[i]));
+    const double ramp = d[i].slope * source.ramp_pressure(r[i], cos_angle[i]);
+    for (double& v : p.back()) v += ramp;
+  }
+  return p;
+}
+
 std::vector<double> radiate_moving(const RadialSeriesSource& source,
                                    const std::vector<double>& velocity, double rate,
                                    const SourcePath& path, RealFft& fft) {
@@ -156,26 +295,49 @@ std::vector<double> radiate_moving(const RadialSeriesSource& source,
   return pressure_from(source, filter_moving(source, velocity, rate, fft), rate, path, at);
 }
 
+FilteredRecord::FilteredRecord(const std::vector<std::vector<double>>& terms,
+                               std::vector<double> ramp)
+    : n_(terms.empty() ? 0 : terms.front().size()), ramp_(std::move(ramp)) {
+  const std::size_t M = terms.size();
+  if (M == 0 || n_ == 0 || ramp_.size() != M)
+    throw std::invalid_argument("FilteredRecord: needs M ≥ 1 terms of N ≥ 1 samples, M ramps");
+  for (const auto& q : terms)
+    if (q.size() != n_) throw std::invalid_argument("FilteredRecord: terms of unequal lengths");
+  const std::size_t length = n_ + PeriodicInterpolator::kTaps - 1;
+  interleaved_.resize(length * M);
+  for (std::size_t m = 0; m < M; ++m)
+    for (std::size_t i = 0, k = 0; i < length; ++i, k = k + 1 == n_ ? 0 : k + 1)
+      interleaved_[i * M + m] = terms[m][k];
+}
+
 FilteredRecord filter_moving(const RadialSeriesSource& source, const std::vector<double>& velocity,
                              double rate, RealFft& fft) {
   check_record(velocity, rate, fft);
   const Detrended d = detrend(velocity, rate, fft);
-  FilteredRecord out;
+  std::vector<std::vector<double>> terms;
+  std::vector<double> ramp;
   for (std::size_t m = 0; m < source.powers().size(); ++m) {
-    out.terms.push_back(
+    terms.push_back(
         filter(d.spectrum, rate, fft, [&](double omega) { return source.factor(m, omega); }));
-    out.ramp.push_back(d.slope * source.ramp_factor(m));
+    ramp.push_back(d.slope * source.ramp_factor(m));
   }
-  return out;
+  return FilteredRecord(terms, std::move(ramp));
 }
 
 std::vector<double> pressure_from(const RadialSeriesSource& source, const FilteredRecord& record,
                                   double rate, const SourcePath& path,
                                   const PeriodicInterpolator& at) {
+  std::vector<double> p;
+  pressure_from(source, record, rate, path, at, p);
+  return p;
+}
+
+void pressure_from(const RadialSeriesSource& source, const FilteredRecord& record, double rate,
+                   const SourcePath& path, const PeriodicInterpolator& at, std::vector<double>& p) {
   const std::vector<int> powers = source.powers();
-  if (powers.empty() || record.terms.size() != powers.size() || record.ramp.size() != powers.size())
+  if (record.terms() != powers.size())
     throw std::logic_error("pressure_from: a record filtered for another source");
-  const std::size_t n = record.terms.front().size();
+  const std::size_t n = record.size();
   if (path.distance.size() != n || path.cos_angle.size() != n)
     throw InputError("sound pressure: the source path has " + std::to_string(path.distance.size()) +
                      " distances and " + std::to_string(path.cos_angle.size()) +
@@ -189,26 +351,28 @@ std::vector<double> pressure_from(const RadialSeriesSource& source, const Filter
                        std::string(source.name()) + " of radius " + format_number(a) +
                        " m: it must lie outside the body");
 
-  const std::vector<std::vector<double>>& q = record.terms;
-  const bool breathing = source.pattern() == Pattern::breathing;
-  const double samples_per_metre = source.delayed() ? rate / source.air().sound_speed : 0.0;
-  std::vector<double> p(n);
-  for (std::size_t i = 0; i < n; ++i) {
-    const double r = path.distance[i];
-    const double s = static_cast<double>(i) - (r - a) * samples_per_metre;
-    const bool on_sample = s == static_cast<double>(i);
-    PeriodicInterpolator::Taps taps;
-    if (!on_sample) taps = at.taps(s, n);  // the same delay for every term
-    double sum = 0;
-    for (std::size_t m = 0; m < powers.size(); ++m) {
-      double weight = 1;  // (a/r)^m, m a small whole number
-      for (int e = 0; e < powers[m]; ++e) weight *= a / r;
-      sum += weight *
-             ((on_sample ? q[m][i] : PeriodicInterpolator::apply(taps, q[m])) + record.ramp[m]);
-    }
-    p[i] = (breathing ? 1.0 : path.cos_angle[i]) * sum;
+  const Placement pl{record.interleaved(),
+                     n,
+                     path.distance.data(),
+                     source.pattern() == Pattern::breathing ? nullptr : path.cos_angle.data(),
+                     powers.data(),
+                     record.ramp().data(),
+                     a,
+                     source.delayed() ? rate / source.air().sound_speed : 0.0};
+  p.resize(n);
+  switch (powers.size()) {
+    case 1:
+      place<1>(pl, at, p.data());
+      break;
+    case 2:
+      place<2>(pl, at, p.data());
+      break;
+    case 3:
+      place<3>(pl, at, p.data());
+      break;
+    default:
+      throw std::logic_error("pressure_from: a source of more than 3 terms");
   }
-  return p;
 }
 
 Summation parse_summation(const std::string& name, const std::string& key) {

@@ -97,6 +97,15 @@ class CylinderDipole final : public Source {
     const double ka = wavenumber(omega) * radius(), kr = wavenumber(omega) * r;
     return -kI * z() * c * Hankel::value(kr) / Hankel::derivative(ka);
   }
+  void transfer(double omega, const std::vector<double>& r, const std::vector<double>& c,
+                std::vector<cd>& out) const override {
+    for (std::size_t i = 0; i < r.size(); ++i) check_arguments(*this, omega, r[i], c[i]);
+    out.assign(r.size(), 0.0);
+    if (omega == 0) return;
+    const cd body = Hankel::derivative(wavenumber(omega) * radius());  // once for all points
+    for (std::size_t i = 0; i < r.size(); ++i)
+      out[i] = -kI * z() * c[i] * Hankel::value(wavenumber(omega) * r[i]) / body;
+  }
 };
 
 class SphereSource : public RadialSeriesSource {
@@ -206,6 +215,12 @@ double small_omega(const AcousticSource& s) {
 }
 
 }  // namespace
+
+void AcousticSource::transfer(double omega, const std::vector<double>& r,
+                              const std::vector<double>& cos_angle, std::vector<cd>& out) const {
+  out.resize(r.size());
+  for (std::size_t i = 0; i < r.size(); ++i) out[i] = transfer(omega, r[i], cos_angle[i]);
+}
 
 double AcousticSource::ramp_pressure(double r, double cos_angle) const {
   const double w = small_omega(*this);

@@ -23,6 +23,19 @@ SourcePath ball_path(const Eigen::Vector2d& at, double pitch_radius, double thet
                      double cage_speed, const std::vector<double>& times,
                      const std::vector<double>& radial);
 
+/// The part of a ball's path that does not depend on the point: its direction
+/// e(θ_n) = (cos θ_n, sin θ_n), θ_n = theta0 + cage_speed · times[n] [rad]. One per ball serves
+/// every microphone (the sines and cosines are most of a path's cost).
+struct BallOrbit {
+  std::vector<double> cos, sin;
+};
+BallOrbit ball_orbit(double theta0, double cage_speed, const std::vector<double>& times);
+
+/// ball_path from the ball's orbit, into `path` (its storage reused from call to call): the same
+/// values, bit for bit.
+void ball_path(const Eigen::Vector2d& at, double pitch_radius, const BallOrbit& orbit,
+               const std::vector<double>& radial, SourcePath& path);
+
 /// The radii [inner, outer] of the annulus the balls sweep, (d_m − D)/2 … (d_m + D)/2 [m]: a
 /// microphone there would be inside a ball whenever one passes.
 Eigen::Vector2d ball_annulus(const Bearing& bearing);

@@ -51,6 +51,15 @@ constexpr double kPressureBandFraction = 0.8;
 std::vector<double> radiate_fixed(const AcousticSource& source, const std::vector<double>& velocity,
                                   double rate, double r, double cos_angle, RealFft& fft);
 
+/// radiate_fixed at several points: velocities[i] (N + 1 samples) is the record seen at r[i],
+/// cos_angle[i]. The same records, bit for bit, as one radiate_fixed per point; the transfer
+/// function is evaluated for all the points at once at each frequency (what depends on the body
+/// alone, once). Throws as radiate_fixed.
+std::vector<std::vector<double>> radiate_fixed(const AcousticSource& source,
+                                               const std::vector<std::vector<double>>& velocities,
+                                               double rate, const std::vector<double>& r,
+                                               const std::vector<double>& cos_angle, RealFft& fft);
+
 /// Where a moving body is, seen from the point, at each sample.
 struct SourcePath {
   std::vector<double> distance;  ///< r_n ≥ a, from the body's centre to the point [m]
@@ -78,6 +87,8 @@ class PeriodicInterpolator {
 
   PeriodicInterpolator();
   Taps taps(double s, std::size_t n) const;
+  /// The same taps written to weight[0 … kTaps−1]; returns the first sample index.
+  std::size_t taps(double s, std::size_t n, double* weight) const;
   /// Σ_t weight_t x_{(first + t) mod N}.
   static double apply(const Taps& taps, const std::vector<double>& x);
   double operator()(const std::vector<double>& x, double s) const {
@@ -96,9 +107,22 @@ std::vector<double> radiate_moving(const RadialSeriesSource& source,
 /// The part of radiate_moving that does not depend on where the point is: the velocity record
 /// filtered once per term of the source's series, q_m = F⁻¹[F_m(ω) U(ω)], and each term's ramp
 /// pressure β ramp_factor(m). One per ball serves every microphone.
-struct FilteredRecord {
-  std::vector<std::vector<double>> terms;  ///< q_m(t_n), n = 0 … N−1 [Pa at r = a]
-  std::vector<double> ramp;                ///< β ramp_factor(m) [Pa]
+class FilteredRecord {
+ public:
+  /// terms[m] = q_m(t_n), n = 0 … N−1 [Pa at r = a] (M ≥ 1 terms of one length N ≥ 1);
+  /// ramp[m] = β ramp_factor(m) [Pa]. Throws std::invalid_argument otherwise.
+  FilteredRecord(const std::vector<std::vector<double>>& terms, std::vector<double> ramp);
+  std::size_t size() const { return n_; }             ///< N
+  std::size_t terms() const { return ramp_.size(); }  ///< M
+  const std::vector<double>& ramp() const { return ramp_; }
+  /// q_m(t_i) at [i·M + m] for i = 0 … N + kTaps − 2, continued periodically past N: the taps
+  /// of any delayed position are one contiguous run, and the terms share each tap's weight.
+  const double* interleaved() const { return interleaved_.data(); }
+
+ private:
+  std::size_t n_;
+  std::vector<double> ramp_;
+  std::vector<double> interleaved_;
 };
 
 /// The filtered record of `velocity` (N + 1 samples at `rate`, as radiate_fixed). Throws as
@@ -113,6 +137,10 @@ FilteredRecord filter_moving(const RadialSeriesSource& source, const std::vector
 std::vector<double> pressure_from(const RadialSeriesSource& source, const FilteredRecord& record,
                                   double rate, const SourcePath& path,
                                   const PeriodicInterpolator& interpolator);
+/// The same into `p` (resized to N; its storage reused from call to call).
+void pressure_from(const RadialSeriesSource& source, const FilteredRecord& record, double rate,
+                   const SourcePath& path, const PeriodicInterpolator& interpolator,
+                   std::vector<double>& p);
 
 /// The same with an interpolator of its own (for one-off calls).
 std::vector<double> radiate_moving(const RadialSeriesSource& source,

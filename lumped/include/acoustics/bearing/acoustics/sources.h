@@ -83,6 +83,13 @@ class AcousticSource {
   /// ω < 0, r < a or non-finite arguments.
   virtual std::complex<double> transfer(double omega, double r, double cos_angle) const = 0;
 
+  /// transfer(ω, r[i], cos_angle[i]) for several points at one ω, into out[i] (resized): the same
+  /// values, bit for bit. A body whose field divides by a function of ka alone (the cylinders'
+  /// H'(ka)) evaluates it once for all the points. Throws as transfer().
+  virtual void transfer(double omega, const std::vector<double>& r,
+                        const std::vector<double>& cos_angle,
+                        std::vector<std::complex<double>>& out) const;
+
   /// The steady pressure of a velocity ramp u = βt, per unit β [Pa/(m/s²)]: lim_{ω→0} H/(iω),
   /// real because the impulse response is (H(−ω) = conj H(ω)). Every source here but the
   /// breathing cylinder has one (its 2-D field grows like ln t: 0 is returned there). Evaluated
