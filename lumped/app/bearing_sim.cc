@@ -15,6 +15,7 @@
 #include <CLI/CLI.hpp>
 
 #include "bearing/case_file.h"
+#include "bearing/contact_loop.h"
 #include "bearing/errors.h"
 #include "bearing/info_report.h"
 #include "bearing/output.h"
@@ -131,7 +132,9 @@ int main(int argc, char** argv) {
       "Units: SI in every output (m, N, s, rad, Pa, Hz); case files accept units such as "
       "\"15.081 mm\", \"2000 rpm\", \"0.05 kN\", \"208 GPa\", \"30 deg\"."};
   app.require_subcommand(1);
-  app.set_version_flag("--version", "bearing-sim 0.1.0");
+  // The instruction set of the SIMD contact loop on this CPU (bearing/contact_loop.h).
+  app.set_version_flag("--version",
+                       "bearing-sim 0.1.0 (contact loop: simd as " + bearing::simd_target() + ")");
 
   std::string case_path;
   std::vector<std::string> sets;
