@@ -6,7 +6,6 @@
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
-#include <fstream>
 #include <iostream>
 #include <string>
 #include <vector>
@@ -85,7 +84,8 @@ int run_command(const std::string& case_path, const std::vector<bearing::Overrid
   return 0;
 }
 
-// `sweep`: every point of the --vary grid, in parallel; sweep.csv written whole or not at all.
+// `sweep`: every point of the --vary grid, in parallel; sweep.csv streamed to a temporary file
+// and renamed into place only when complete.
 int sweep_command(const std::string& case_path, const std::vector<bearing::Override>& base,
                   const std::vector<std::string>& vary, const std::string& out_dir, int jobs,
                   bool tty) {
@@ -93,7 +93,6 @@ int sweep_command(const std::string& case_path, const std::vector<bearing::Overr
   for (const auto& v : vary) axes.push_back(bearing::parse_vary(v));
   // Check the base case before starting many runs of it.
   load(case_path, base);
-  const auto points = bearing::sweep_points(axes);
   const auto loader = [&](const std::vector<bearing::Override>& point) {
     auto all = base;
     all.insert(all.end(), point.begin(), point.end());
@@ -103,21 +102,11 @@ int sweep_command(const std::string& case_path, const std::vector<bearing::Overr
     if (tty) std::fprintf(stderr, "\rsweep %zu/%zu cases", done, total);
     if (tty && done == total) std::fprintf(stderr, "\n");
   };
-  const auto rows = bearing::run_sweep(loader, points, jobs, progress);
-  std::filesystem::create_directories(out_dir);
+  const bearing::SweepCounts counts = bearing::write_sweep(out_dir, axes, loader, jobs, progress);
   const std::filesystem::path file = std::filesystem::path(out_dir) / "sweep.csv";
-  const std::filesystem::path tmp = std::filesystem::path(out_dir) / ".sweep.csv.partial";
-  {
-    std::ofstream f(tmp, std::ios::binary | std::ios::trunc);
-    f << bearing::sweep_csv(axes, rows);
-    if (!f) throw bearing::InputError("--out " + out_dir + ": cannot write sweep.csv");
-  }
-  std::filesystem::rename(tmp, file);
-  std::size_t failed = 0;
-  for (const auto& r : rows) failed += r.ok ? 0 : 1;
-  std::cout << "sweep: " << rows.size() << " cases, " << failed << " failed; wrote "
+  std::cout << "sweep: " << counts.cases << " cases, " << counts.failed << " failed; wrote "
             << file.string() << "\n";
-  return failed == rows.size() ? 3 : 0;
+  return counts.failed == counts.cases ? 3 : 0;
 }
 
 }  // namespace
