@@ -151,7 +151,9 @@ int main(int argc, char** argv) {
                  "DIR/summary.json (channels.<name>.{rms,ptp,kurtosis,crest}, peaks.<name>[] with "
                  "frequency, "
                  "amplitude, label, label_error) and DIR/case.toml (the fully resolved case); "
-                 "prints the summary");
+                 "with output.format = \"npy\" the tables are DIR/response.npy, spectrum.npy, "
+                 "... (float64, full precision) and DIR/columns.json names their columns and "
+                 "units; prints the summary");
   add_case_options(run, case_path, sets);
   run->add_option("--out", out_dir, "Folder for the result files (created if missing)")->required();
   run->add_flag("--json", json, "Print summary.json instead of the readable summary");
