@@ -6,7 +6,6 @@
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
-#include <fstream>
 #include <iostream>
 #include <string>
 #include <vector>
@@ -86,7 +85,8 @@ int run_command(const std::string& case_path, const std::vector<bearing::Overrid
   return 0;
 }
 
-// `sweep`: every point of the --vary grid, in parallel; sweep.csv written whole or not at all.
+// `sweep`: every point of the --vary grid, in parallel; sweep.csv streamed to a temporary file
+// and renamed into place only when complete.
 int sweep_command(const std::string& case_path, const std::vector<bearing::Override>& base,
                   const std::vector<std::string>& vary, const std::string& out_dir, int jobs,
                   bool tty) {
@@ -94,7 +94,6 @@ int sweep_command(const std::string& case_path, const std::vector<bearing::Overr
   for (const auto& v : vary) axes.push_back(bearing::parse_vary(v));
   // Check the base case before starting many runs of it.
   load(case_path, base);
-  const auto points = bearing::sweep_points(axes);
   const auto loader = [&](const std::vector<bearing::Override>& point) {
     auto all = base;
     all.insert(all.end(), point.begin(), point.end());
@@ -104,21 +103,11 @@ int sweep_command(const std::string& case_path, const std::vector<bearing::Overr
     if (tty) std::fprintf(stderr, "\rsweep %zu/%zu cases", done, total);
     if (tty && done == total) std::fprintf(stderr, "\n");
   };
-  const auto rows = bearing::run_sweep(loader, points, jobs, progress);
-  std::filesystem::create_directories(out_dir);
+  const bearing::SweepCounts counts = bearing::write_sweep(out_dir, axes, loader, jobs, progress);
   const std::filesystem::path file = std::filesystem::path(out_dir) / "sweep.csv";
-  const std::filesystem::path tmp = std::filesystem::path(out_dir) / ".sweep.csv.partial";
-  {
-    std::ofstream f(tmp, std::ios::binary | std::ios::trunc);
-    f << bearing::sweep_csv(axes, rows);
-    if (!f) throw bearing::InputError("--out " + out_dir + ": cannot write sweep.csv");
-  }
-  std::filesystem::rename(tmp, file);
-  std::size_t failed = 0;
-  for (const auto& r : rows) failed += r.ok ? 0 : 1;
-  std::cout << "sweep: " << rows.size() << " cases, " << failed << " failed; wrote "
+  std::cout << "sweep: " << counts.cases << " cases, " << counts.failed << " failed; wrote "
             << file.string() << "\n";
-  return failed == rows.size() ? 3 : 0;
+  return counts.failed == counts.cases ? 3 : 0;
 }
 
 }  // namespace
@@ -165,7 +154,9 @@ int main(int argc, char** argv) {
                  "DIR/summary.json (channels.<name>.{rms,ptp,kurtosis,crest}, peaks.<name>[] with "
                  "frequency, "
                  "amplitude, label, label_error) and DIR/case.toml (the fully resolved case); "
-                 "prints the summary");
+                 "with output.format = \"npy\" the tables are DIR/response.npy, spectrum.npy, "
+                 "... (float64, full precision) and DIR/columns.json names their columns and "
+                 "units; prints the summary");
   add_case_options(run, case_path, sets);
   run->add_option("--out", out_dir, "Folder for the result files (created if missing)")->required();
   run->add_flag("--json", json, "Print summary.json instead of the readable summary");

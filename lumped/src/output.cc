@@ -18,6 +18,7 @@
 #include "bearing/decimal.h"
 #include "bearing/errors.h"
 #include "bearing/json_helpers.h"
+#include "bearing/npy.h"
 #include "envelope_report.h"
 
 namespace bearing {
@@ -70,6 +71,12 @@ class BufferedFile {
     room(1);
     buffer_[used_++] = c;
   }
+  /// `v` as 8 little-endian bytes (.npy '<f8').
+  void f8(double v) {
+    room(8);
+    store_f8_le(buffer_.get() + used_, v);
+    used_ += 8;
+  }
   void close() {
     flush();
     const bool failed = std::fclose(file_) != 0;
@@ -99,69 +106,129 @@ void require_finite_value(double v, const What& what) {
   if (!std::isfinite(v)) throw SolverError(what() + " is not finite; no result files were written");
 }
 
-// A CSV table: the abscissa column `x_name` = x[k], then one column per name with value(i, k);
-// a non-finite value stops the write, named by what(i, k).
+// A result table as written: its rows and each column's name and SI unit (columns.json describes
+// the .npy files by these).
+struct TableLayout {
+  std::size_t rows = 0;
+  std::vector<std::string> columns;  ///< the abscissa first
+  std::vector<std::string> units;
+};
+
+// A table: the abscissa column `x_name` [x_unit] = x[k], then one column per name [unit] with
+// value(i, k). As CSV: a header row and kCsvDigits digits; as .npy: the full doubles, shape
+// (rows, 1 + names), no names (they go to columns.json). A non-finite value stops the write,
+// named by what(i, k).
 template <class Value, class What>
-void write_table(const fs::path& path, const std::string& x_name, const std::vector<double>& x,
-                 const std::vector<std::string>& names, const Value& value, const What& what) {
+TableLayout write_table(const fs::path& path, OutputFormat format, const std::string& x_name,
+                        const std::string& x_unit, const std::vector<double>& x,
+                        const std::vector<std::string>& names,
+                        const std::vector<std::string>& units, const Value& value,
+                        const What& what) {
   BufferedFile f(path);
-  f.text(x_name);
-  for (const auto& name : names) f.character(','), f.text(name);
-  f.character('\n');
-  for (std::size_t k = 0; k < x.size(); ++k) {
-    f.number(x[k]);
-    for (std::size_t i = 0; i < names.size(); ++i) {
-      const double v = value(i, k);
-      require_finite_value(v, [&] { return what(i, k); });
-      f.character(',');
-      f.number(v);
+  if (format == OutputFormat::npy) {
+    f.text(npy_header(x.size(), names.size() + 1));
+    for (std::size_t k = 0; k < x.size(); ++k) {
+      f.f8(x[k]);
+      for (std::size_t i = 0; i < names.size(); ++i) {
+        const double v = value(i, k);
+        require_finite_value(v, [&] { return what(i, k); });
+        f.f8(v);
+      }
     }
+  } else {
+    f.text(x_name);
+    for (const auto& name : names) f.character(','), f.text(name);
     f.character('\n');
+    for (std::size_t k = 0; k < x.size(); ++k) {
+      f.number(x[k]);
+      for (std::size_t i = 0; i < names.size(); ++i) {
+        const double v = value(i, k);
+        require_finite_value(v, [&] { return what(i, k); });
+        f.character(',');
+        f.number(v);
+      }
+      f.character('\n');
+    }
   }
   f.close();
+  TableLayout layout{x.size(), {x_name}, {x_unit}};
+  layout.columns.insert(layout.columns.end(), names.begin(), names.end());
+  layout.units.insert(layout.units.end(), units.begin(), units.end());
+  return layout;
 }
 
-void write_response_csv(const fs::path& path, const Response& r) {
-  std::vector<std::string> names;
-  for (const Channel& ch : r.channels) names.push_back(ch.name);
-  write_table(
-      path, "t", r.time, names, [&](std::size_t i, std::size_t k) { return r.values[i][k]; },
+TableLayout write_response(const fs::path& path, OutputFormat format, const Response& r) {
+  std::vector<std::string> names, units;
+  for (const Channel& ch : r.channels) names.push_back(ch.name), units.push_back(ch.unit);
+  return write_table(
+      path, format, "t", "s", r.time, names, units,
+      [&](std::size_t i, std::size_t k) { return r.values[i][k]; },
       [&](std::size_t i, std::size_t k) {
         return "response " + r.channels[i].name + " at t = " + std::to_string(r.time[k]) + " s";
       });
 }
 
-void write_spectrum_csv(const fs::path& path, const RunSummary& s) {
+// The SI unit of the response channel `name` ("" if there is none of that name).
+std::string unit_of(const Response& r, const std::string& name) {
+  for (const Channel& ch : r.channels)
+    if (ch.name == name) return ch.unit;
+  return "";
+}
+
+// spectrum: frequency [Hz], then each ring channel's amplitude spectrum [unit of the channel].
+TableLayout write_spectrum(const fs::path& path, OutputFormat format, const Response& r,
+                           const RunSummary& s) {
   static const std::vector<double> none;
-  write_table(
-      path, "frequency", s.spectra.empty() ? none : s.spectra.front().frequency,
-      s.spectrum_channels, [&](std::size_t i, std::size_t b) { return s.spectra[i].amplitude[b]; },
+  std::vector<std::string> units;
+  for (const auto& name : s.spectrum_channels) units.push_back(unit_of(r, name));
+  return write_table(
+      path, format, "frequency", "Hz", s.spectra.empty() ? none : s.spectra.front().frequency,
+      s.spectrum_channels, units,
+      [&](std::size_t i, std::size_t b) { return s.spectra[i].amplitude[b]; },
       [&](std::size_t i, std::size_t) { return "spectrum of " + s.spectrum_channels[i]; });
 }
 
-// envelope.csv: frequency, then env_<channel> per ring acceleration (the envelope spectra) [unit of
-// the channel].
-void write_envelope_csv(const fs::path& path, const RunSummary& s) {
-  std::vector<std::string> names;
-  for (const EnvelopeSummary& e : s.envelopes) names.push_back("env_" + e.channel);
-  write_table(
-      path, "frequency", s.envelopes.front().spectrum.frequency, names,
+// envelope: frequency [Hz], then env_<channel> per ring acceleration (the envelope spectra) [unit
+// of the channel].
+TableLayout write_envelope(const fs::path& path, OutputFormat format, const RunSummary& s) {
+  std::vector<std::string> names, units;
+  for (const EnvelopeSummary& e : s.envelopes)
+    names.push_back("env_" + e.channel), units.push_back(e.unit);
+  return write_table(
+      path, format, "frequency", "Hz", s.envelopes.front().spectrum.frequency, names, units,
       [&](std::size_t i, std::size_t b) { return s.envelopes[i].spectrum.amplitude[b]; },
       [&](std::size_t i, std::size_t) { return "envelope spectrum of " + s.envelopes[i].channel; });
 }
 
-// pressure.csv: t over the analysis window, then p1…pM (one column per microphone) [Pa].
-void write_pressure_csv(const fs::path& path, const BearingNoise& noise) {
+// pressure: t over the analysis window [s], then p1…pM (one column per microphone) [Pa].
+TableLayout write_pressure(const fs::path& path, OutputFormat format, const BearingNoise& noise) {
   std::vector<std::string> names;
   for (std::size_t i = 0; i < noise.pressure.size(); ++i)
     names.push_back("p" + std::to_string(i + 1));
-  write_table(
-      path, "t", noise.time, names,
+  return write_table(
+      path, format, "t", "s", noise.time, names, std::vector<std::string>(names.size(), "Pa"),
       [&](std::size_t i, std::size_t k) { return noise.pressure[i][k]; },
       [&](std::size_t i, std::size_t k) {
         return "sound pressure at microphone " + std::to_string(i + 1) +
                " at t = " + std::to_string(noise.time[k]) + " s";
       });
+}
+
+// columns.json beside the .npy files: per file its shape and its columns' names and SI units.
+std::string columns_json(const std::vector<std::string>& files,
+                         const std::vector<TableLayout>& tables) {
+  nlohmann::json j;
+  j["format"] =
+      "NumPy .npy version 1.0: little-endian float64 ('<f8'), C order, shape [rows, columns]";
+  j["usage"] =
+      "columns = json.load(open('columns.json'))['tables']['response.npy']['columns']; "
+      "a = numpy.load('response.npy'); ay = a[:, columns.index('ay')]";
+  j["tables"] = nlohmann::json::object();
+  for (std::size_t i = 0; i < tables.size(); ++i)
+    j["tables"][files[i]] = {{"shape", {tables[i].rows, tables[i].columns.size()}},
+                             {"columns", tables[i].columns},
+                             {"units", tables[i].units}};
+  return j.dump(2) + "\n";
 }
 
 void write_text(const fs::path& path, const std::string& text) {
@@ -414,24 +481,38 @@ void write_run(const std::string& dir, const Case& c, const SimulationResult& r,
   std::error_code ec;
   fs::create_directories(dir, ec);
   if (ec) throw InputError("--out " + dir + ": cannot create the folder (" + ec.message() + ")");
-  std::vector<std::string> names = {"response.csv", "spectrum.csv", "summary.json", "case.toml"};
-  if (s.noise) names.push_back("pressure.csv");
-  if (!s.envelopes.empty()) names.push_back("envelope.csv");
+  const OutputFormat format = c.output.format;
+  const std::string ext = format == OutputFormat::npy ? ".npy" : ".csv";
+  std::vector<std::string> names = {"response" + ext, "spectrum" + ext, "summary.json",
+                                    "case.toml"};
+  if (s.noise) names.push_back("pressure" + ext);
+  if (!s.envelopes.empty()) names.push_back("envelope" + ext);
+  if (format == OutputFormat::npy) names.push_back("columns.json");
   std::vector<fs::path> temporary;
   for (const auto& name : names) temporary.push_back(fs::path(dir) / ("." + name + ".partial"));
   try {
-    write_response_csv(temporary[0], r.response);
-    write_spectrum_csv(temporary[1], s);
+    std::vector<std::string> table_files;
+    std::vector<TableLayout> tables;
+    const auto table = [&](std::size_t i, TableLayout layout) {
+      table_files.push_back(names[i]);
+      tables.push_back(std::move(layout));
+    };
+    table(0, write_response(temporary[0], format, r.response));
+    table(1, write_spectrum(temporary[1], format, r.response, s));
     write_text(temporary[2], summary);
     write_text(temporary[3], resolved);
-    if (s.noise) write_pressure_csv(temporary[4], *s.noise);
-    if (!s.envelopes.empty()) write_envelope_csv(temporary.back(), s);
+    std::size_t next = 4;
+    if (s.noise) table(next, write_pressure(temporary[next], format, *s.noise)), ++next;
+    if (!s.envelopes.empty()) table(next, write_envelope(temporary[next], format, s)), ++next;
+    if (format == OutputFormat::npy) write_text(temporary[next], columns_json(table_files, tables));
     // The previous run's files are removed first: renaming onto an existing file makes ext4 write
-    // the new file's blocks out at once (its auto_da_alloc safeguard), ~3 ms here.
-    // A pressure.csv or envelope.csv left by an earlier run would not belong to this one.
-    for (std::size_t i = 0; i < names.size(); ++i) fs::remove(fs::path(dir) / names[i]);
-    if (!s.noise) fs::remove(fs::path(dir) / "pressure.csv");
-    if (s.envelopes.empty()) fs::remove(fs::path(dir) / "envelope.csv");
+    // the new file's blocks out at once (its auto_da_alloc safeguard), ~3 ms here. Files of the
+    // other format, or a pressure or envelope table an earlier run left, would not belong to
+    // this one.
+    for (const char* stem : {"response", "spectrum", "pressure", "envelope"})
+      for (const char* e : {".csv", ".npy"}) fs::remove(fs::path(dir) / (std::string(stem) + e));
+    for (const char* other : {"summary.json", "case.toml", "columns.json"})
+      fs::remove(fs::path(dir) / other);
     for (std::size_t i = 0; i < names.size(); ++i)
       fs::rename(temporary[i], fs::path(dir) / names[i]);
   } catch (const fs::filesystem_error& e) {

@@ -1,16 +1,24 @@
 #include "bearing/sweep.h"
 
-#include <atomic>
+#include <algorithm>
 #include <charconv>
 #include <cmath>
+#include <condition_variable>
 #include <cstdio>
 #include <cstdlib>
+#include <exception>
+#include <filesystem>
+#include <fstream>
+#include <limits>
+#include <map>
 #include <mutex>
 #include <thread>
 
 #include "bearing/errors.h"
 
 namespace bearing {
+
+namespace fs = std::filesystem;
 
 namespace {
 
@@ -103,110 +111,247 @@ SweepAxis parse_vary(std::string_view text) {
   return axis;
 }
 
-std::vector<SweepPoint> sweep_points(const std::vector<SweepAxis>& axes) {
-  std::vector<SweepPoint> points(1);
+std::size_t sweep_size(const std::vector<SweepAxis>& axes) {
+  if (axes.empty()) return 0;
+  std::size_t n = 1;
   for (const auto& axis : axes) {
-    std::vector<SweepPoint> next;
-    for (const auto& p : points)
-      for (double v : axis.values) {
-        SweepPoint q = p;
-        q.values.push_back(v);
-        q.overrides.push_back({axis.key, si_text(v, axis)});
-        next.push_back(std::move(q));
-      }
-    points = std::move(next);
+    const std::size_t k = axis.values.size();
+    if (k != 0 && n > std::numeric_limits<std::size_t>::max() / k)
+      throw InputError("--vary: the product of the axes' N is too large (axis " + axis.key + ")");
+    n *= k;
   }
-  return axes.empty() ? std::vector<SweepPoint>{} : points;
+  return n;
 }
 
-std::vector<SweepRow> run_sweep(const std::function<Case(const std::vector<Override>&)>& load,
-                                const std::vector<SweepPoint>& points, int threads,
-                                const std::function<void(std::size_t, std::size_t)>& progress) {
-  std::vector<SweepRow> rows(points.size());
-  std::atomic<std::size_t> next{0};
-  std::size_t done = 0;
+SweepPoint sweep_point(const std::vector<SweepAxis>& axes, std::size_t index) {
+  // The index in mixed radix, the last axis the fastest digit.
+  std::vector<std::size_t> digit(axes.size());
+  for (std::size_t a = axes.size(); a-- > 0;) {
+    digit[a] = index % axes[a].values.size();
+    index /= axes[a].values.size();
+  }
+  SweepPoint p;
+  for (std::size_t a = 0; a < axes.size(); ++a) {
+    const double v = axes[a].values[digit[a]];
+    p.values.push_back(v);
+    p.overrides.push_back({axes[a].key, si_text(v, axes[a])});
+  }
+  return p;
+}
+
+std::vector<SweepPoint> sweep_points(const std::vector<SweepAxis>& axes) {
+  std::vector<SweepPoint> points;
+  const std::size_t n = sweep_size(axes);
+  points.reserve(n);
+  for (std::size_t i = 0; i < n; ++i) points.push_back(sweep_point(axes, i));
+  return points;
+}
+
+namespace {
+
+SweepRow run_point(const SweepLoader& load, const SweepPoint& point) {
+  SweepRow row;
+  row.values = point.values;
+  try {
+    const Case c = load(point.overrides);
+    const SimulationResult r = simulate(c);
+    RunSummary summary = summarize(c, r);
+    row.channels = std::move(summary.channels);
+    if (summary.noise) row.microphones = std::move(summary.noise->microphones);
+    row.ok = true;
+  } catch (const std::exception& e) {
+    row.ok = false;
+    row.error = e.what();
+  }
+  return row;
+}
+
+// Finished rows a worker may run ahead of the oldest unfinished one, per worker.
+constexpr std::size_t kWindowPerWorker = 4;
+
+}  // namespace
+
+void run_sweep(const SweepLoader& load, std::size_t cases,
+               const std::function<SweepPoint(std::size_t)>& point, int threads,
+               const std::function<void(std::size_t, SweepRow&&)>& sink,
+               const SweepProgress& progress) {
+  if (cases == 0) return;
+  unsigned n = threads > 0 ? static_cast<unsigned>(threads) : std::thread::hardware_concurrency();
+  n = static_cast<unsigned>(std::max<std::size_t>(1, std::min<std::size_t>(n, cases)));
+  const std::size_t window = kWindowPerWorker * n;
   std::mutex mutex;
+  std::condition_variable can_start;
+  std::size_t next = 0;                     // the next case to start
+  std::size_t handed = 0;                   // rows passed to sink (cases 0 … handed − 1)
+  std::size_t done = 0;                     // cases finished
+  std::map<std::size_t, SweepRow> waiting;  // finished rows behind an unfinished earlier one
+  std::exception_ptr sink_error;
   const auto worker = [&] {
-    for (std::size_t i = next++; i < points.size(); i = next++) {
-      SweepRow& row = rows[i];
-      row.values = points[i].values;
-      try {
-        const Case c = load(points[i].overrides);
-        const SimulationResult r = simulate(c);
-        RunSummary summary = summarize(c, r);
-        row.channels = std::move(summary.channels);
-        if (summary.noise) row.microphones = std::move(summary.noise->microphones);
-        row.ok = true;
-      } catch (const std::exception& e) {
-        row.ok = false;
-        row.error = e.what();
+    for (;;) {
+      std::size_t i = 0;
+      {
+        std::unique_lock<std::mutex> lock(mutex);
+        can_start.wait(lock, [&] { return next >= cases || sink_error || next < handed + window; });
+        if (next >= cases || sink_error) return;
+        i = next++;
       }
-      if (progress) {
-        std::lock_guard<std::mutex> lock(mutex);
-        progress(++done, points.size());
+      SweepRow row = run_point(load, point(i));
+      std::lock_guard<std::mutex> lock(mutex);
+      waiting.emplace(i, std::move(row));
+      if (progress) progress(++done, cases);
+      for (auto it = waiting.begin(); it != waiting.end() && it->first == handed && !sink_error;
+           it = waiting.erase(it), ++handed) {
+        try {
+          sink(it->first, std::move(it->second));
+        } catch (...) {
+          sink_error = std::current_exception();
+        }
       }
+      can_start.notify_all();
     }
   };
-  unsigned n = threads > 0 ? static_cast<unsigned>(threads) : std::thread::hardware_concurrency();
-  n = std::max(1u, std::min<unsigned>(n, static_cast<unsigned>(points.size())));
   std::vector<std::thread> pool;
   for (unsigned t = 1; t < n; ++t) pool.emplace_back(worker);
   worker();
   for (auto& t : pool) t.join();
+  if (sink_error) std::rethrow_exception(sink_error);
+}
+
+std::vector<SweepRow> run_sweep(const SweepLoader& load, const std::vector<SweepPoint>& points,
+                                int threads, const SweepProgress& progress) {
+  std::vector<SweepRow> rows;
+  rows.reserve(points.size());
+  run_sweep(
+      load, points.size(), [&](std::size_t i) { return points[i]; }, threads,
+      [&](std::size_t, SweepRow&& row) { rows.push_back(std::move(row)); }, progress);
   return rows;
 }
 
-std::string sweep_csv(const std::vector<SweepAxis>& axes, const std::vector<SweepRow>& rows) {
-  std::vector<std::string> channels;
-  std::size_t microphones = 0;
-  for (const auto& r : rows)
-    if (r.ok) {
-      for (const auto& ch : r.channels)
-        if (ch.group == ChannelGroup::ring) channels.push_back(ch.name);
-      microphones = r.microphones.size();
-      break;
-    }
-  std::string out;
-  for (const auto& a : axes) out += a.key + ",";
-  out += "status,error";
-  for (const auto& ch : channels)
-    for (const char* f : {"rms", "ptp", "kurtosis", "crest", "peak_frequency", "peak_label"})
-      out += "," + ch + "." + f;
-  for (std::size_t i = 1; i <= microphones; ++i)
-    for (const char* f : {"spl_total", "spl_ring", "spl_balls"})
-      out += ",mic" + std::to_string(i) + "." + f;
-  out += "\n";
-  for (const auto& r : rows) {
-    for (double v : r.values) append(out, v), out += ",";
-    out += r.ok ? std::string("ok,") : "failed," + csv_field(r.error);
-    for (const auto& name : channels) {
-      const ChannelSummary* ch = nullptr;
-      for (const auto& c : r.channels)
-        if (c.name == name) ch = &c;
-      if (!ch) {
-        out += ",,,,,,";
-        continue;
-      }
-      for (double v : {ch->statistics.rms, ch->statistics.ptp, ch->statistics.kurtosis,
-                       ch->statistics.crest}) {
-        out += ",";
-        append(out, v);
-      }
-      out += ",";
-      if (!ch->peaks.empty()) append(out, ch->peaks.front().frequency);
-      out += "," + csv_field(ch->peaks.empty() ? "" : ch->peaks.front().label);
-    }
-    for (std::size_t i = 0; i < microphones; ++i) {
-      const MicrophoneLevels* m = i < r.microphones.size() ? &r.microphones[i] : nullptr;
-      for (const std::optional<double>* v :
-           {m ? &m->spl_total : nullptr, m ? &m->spl_ring : nullptr, m ? &m->spl_balls : nullptr}) {
-        out += ",";
-        if (v && *v) append(out, **v);
-      }
-    }
-    out += "\n";
+SweepCsvWriter::SweepCsvWriter(const std::vector<SweepAxis>& axes,
+                               std::function<void(std::string_view)> out)
+    : out_(std::move(out)) {
+  for (const auto& a : axes) keys_.push_back(a.key);
+}
+
+void SweepCsvWriter::add(const SweepRow& row) {
+  if (!started_ && !row.ok) {
+    SweepRow held;
+    held.values = row.values;
+    held.error = row.error;
+    held_.push_back(std::move(held));
+    return;
   }
+  if (!started_) start(&row);
+  write_row(row);
+}
+
+void SweepCsvWriter::finish() {
+  if (!started_) start(nullptr);
+}
+
+// The header (its columns from `first_ok`, none without it), then the rows held so far.
+void SweepCsvWriter::start(const SweepRow* first_ok) {
+  started_ = true;
+  if (first_ok) {
+    for (const auto& ch : first_ok->channels)
+      if (ch.group == ChannelGroup::ring) channels_.push_back(ch.name);
+    microphones_ = first_ok->microphones.size();
+  }
+  line_.clear();
+  for (const auto& k : keys_) line_ += k + ",";
+  line_ += "status,error";
+  for (const auto& ch : channels_)
+    for (const char* f : {"rms", "ptp", "kurtosis", "crest", "peak_frequency", "peak_label"})
+      line_ += "," + ch + "." + f;
+  for (std::size_t i = 1; i <= microphones_; ++i)
+    for (const char* f : {"spl_total", "spl_ring", "spl_balls"})
+      line_ += ",mic" + std::to_string(i) + "." + f;
+  line_ += "\n";
+  out_(line_);
+  for (const auto& r : held_) write_row(r);
+  held_.clear();
+  held_.shrink_to_fit();
+}
+
+void SweepCsvWriter::write_row(const SweepRow& r) {
+  std::string& out = line_;
+  out.clear();
+  for (double v : r.values) append(out, v), out += ",";
+  out += r.ok ? std::string("ok,") : "failed," + csv_field(r.error);
+  for (const auto& name : channels_) {
+    const ChannelSummary* ch = nullptr;
+    for (const auto& c : r.channels)
+      if (c.name == name) ch = &c;
+    if (!ch) {
+      out += ",,,,,,";
+      continue;
+    }
+    for (double v :
+         {ch->statistics.rms, ch->statistics.ptp, ch->statistics.kurtosis, ch->statistics.crest}) {
+      out += ",";
+      append(out, v);
+    }
+    out += ",";
+    if (!ch->peaks.empty()) append(out, ch->peaks.front().frequency);
+    out += "," + csv_field(ch->peaks.empty() ? "" : ch->peaks.front().label);
+  }
+  for (std::size_t i = 0; i < microphones_; ++i) {
+    const MicrophoneLevels* m = i < r.microphones.size() ? &r.microphones[i] : nullptr;
+    for (const std::optional<double>* v :
+         {m ? &m->spl_total : nullptr, m ? &m->spl_ring : nullptr, m ? &m->spl_balls : nullptr}) {
+      out += ",";
+      if (v && *v) append(out, **v);
+    }
+  }
+  out += "\n";
+  out_(out);
+}
+
+std::string sweep_csv(const std::vector<SweepAxis>& axes, const std::vector<SweepRow>& rows) {
+  std::string out;
+  SweepCsvWriter writer(axes, [&](std::string_view s) { out.append(s); });
+  for (const auto& r : rows) writer.add(r);
+  writer.finish();
   return out;
+}
+
+SweepCounts write_sweep(const std::string& dir, const std::vector<SweepAxis>& axes,
+                        const SweepLoader& load, int threads, const SweepProgress& progress) {
+  std::error_code ec;
+  fs::create_directories(dir, ec);
+  if (ec) throw InputError("--out " + dir + ": cannot create the folder (" + ec.message() + ")");
+  const fs::path file = fs::path(dir) / "sweep.csv";
+  const fs::path tmp = fs::path(dir) / ".sweep.csv.partial";
+  SweepCounts counts;
+  counts.cases = sweep_size(axes);
+  try {
+    std::ofstream f(tmp, std::ios::binary | std::ios::trunc);
+    const auto cannot_write = [&] {
+      return InputError("--out " + dir + ": cannot write sweep.csv");
+    };
+    if (!f) throw cannot_write();
+    SweepCsvWriter writer(axes, [&](std::string_view s) {
+      if (!f.write(s.data(), static_cast<std::streamsize>(s.size()))) throw cannot_write();
+    });
+    run_sweep(
+        load, counts.cases, [&](std::size_t i) { return sweep_point(axes, i); }, threads,
+        [&](std::size_t, SweepRow&& row) {
+          counts.failed += row.ok ? 0 : 1;
+          writer.add(row);
+        },
+        progress);
+    writer.finish();
+    f.close();
+    if (!f) throw cannot_write();
+    fs::rename(tmp, file);
+  } catch (const fs::filesystem_error& e) {
+    fs::remove(tmp, ec);
+    throw InputError("--out " + dir + ": " + e.what());
+  } catch (...) {
+    fs::remove(tmp, ec);
+    throw;
+  }
+  return counts;
 }
 
 }  // namespace bearing

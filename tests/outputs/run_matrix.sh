@@ -55,6 +55,7 @@ go tvds run "$ex/seed002_tvds.toml" $S --set model.waviness_stiffness=true --set
 go harris run $S --set model.contact=harris-table --set operation.unbalance=1e-5 --set operation.gravity=true
 go calibrated run "$ex/seed003_6308_calibrated.toml" $S --set model.kind=3dof --set operation.axial_load=50
 go band run $S --set ball_errors.band=2um --set ball_errors.seed=7 --set model.waviness_stiffness=true
+go npy run "$ex/seed000_608_quasistatic.toml" $S --set output.format=npy --set output.envelope_band=auto --set output.ball_loads=true
 go sweep1 sweep "$ex/seed003_6308.toml" $S --vary operation.speed=1000rpm:3000rpm:3 --vary bearing.balls=7:9:2
 go sweep_noise sweep "$ex/seed000_608_quasistatic.toml" $S --vary operation.load.1=-60:-40:2
 go sweep_fail sweep $S --vary solver.dt=1us:2ms:2
@@ -80,6 +81,7 @@ go e_unit run --set bearing.clearance=5
 go e_wav run --set waviness.inner.0.order=0
 go e_calib run --set model.contact=calibrated
 go e_peaks run --set output.peaks=2000
+go e_format run --set output.format=npz
 go e_rk4 run "$ex/seed004_6304.toml" --set solver.dt=20us
 go e_bmass run "$ex/seed004_6304.toml" --set ball.mass=0
 go e_friction run "$ex/seed004_6304.toml" --set cage.friction=2

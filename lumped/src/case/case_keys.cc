@@ -367,6 +367,16 @@ std::vector<Key> output_keys() {
   envelope.read = read_envelope_band;
   envelope.check = check_envelope_band;
   envelope.write = write_envelope_band;
+  Key format = choice(
+      "output.format",
+      "csv (default) | npy: the tables as NumPy .npy files of full doubles, their columns and "
+      "units in columns.json",
+      kOutputFormats, "output format", [](auto& c) -> auto& { return c.output.format; });
+  // The default is not written, so a csv run's case.toml stays as it was before the key existed.
+  format.write = [](std::ostream& o, const Case& c) {
+    if (c.output.format != OutputFormat::csv)
+      o << "format = " << quoted(name_of(kOutputFormats, c.output.format)) << "\n";
+  };
   return {
       table("output", "what run writes"),
       boolean(
@@ -389,6 +399,7 @@ std::vector<Key> output_keys() {
           [](auto& c) -> auto& { return c.output.peaks; },
           within(0, 1000, false, false, "allowed 0 to 1000")),
       envelope,
+      format,
   };
 }
 

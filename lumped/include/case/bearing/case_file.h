@@ -16,6 +16,7 @@
 #include "bearing/acoustics/acoustics_options.h"
 #include "bearing/bearing.h"
 #include "bearing/calibration.h"
+#include "bearing/choice.h"
 #include "bearing/contact.h"
 #include "bearing/excitation.h"
 #include "bearing/local_defect.h"
@@ -87,6 +88,13 @@ struct ModelOptions {
 /// [solver]: the integration and the output times (solvers/integrator.h).
 using SolverOptions = SolverSettings;
 
+/// How `run` writes its tables (response, spectrum, pressure, envelope): CSV text with 12
+/// significant digits, or NumPy .npy files of full doubles with columns.json naming their columns
+/// and units.
+enum class OutputFormat { csv, npy };
+inline constexpr Named<OutputFormat> kOutputFormats[] = {{OutputFormat::csv, "csv"},
+                                                         {OutputFormat::npy, "npy"}};
+
 /// What `run` writes besides the ring's channels.
 struct OutputOptions {
   bool ball_loads = false;     ///< add each ball's load Q1…QZ to response.csv
@@ -100,6 +108,7 @@ struct OutputOptions {
   /// envelope spectra of the ring accelerations and a diagnosis: none (default), a given band
   /// [Hz] or the fast kurtogram's (envelope.csv, summary.json envelope and diagnosis)
   EnvelopeBandSetting envelope_band;
+  OutputFormat format = OutputFormat::csv;  ///< the tables as CSV (default) or .npy
 };
 
 struct Case {

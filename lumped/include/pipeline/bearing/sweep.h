@@ -29,7 +29,15 @@ struct SweepPoint {
   std::vector<Override> overrides;
 };
 
-/// The Cartesian product of the axes, the first axis varying slowest.
+/// The number of cases: the product of the axes' sizes (0 without axes). Throws InputError if
+/// it does not fit a std::size_t.
+std::size_t sweep_size(const std::vector<SweepAxis>& axes);
+
+/// Case `index` (0 ≤ index < sweep_size(axes)) of the Cartesian product of the axes, the first
+/// axis varying slowest; computed from the index alone, so a sweep never holds all its points.
+SweepPoint sweep_point(const std::vector<SweepAxis>& axes, std::size_t index);
+
+/// Every case of the Cartesian product at once (sweep_point for each index).
 std::vector<SweepPoint> sweep_points(const std::vector<SweepAxis>& axes);
 
 struct SweepRow {
@@ -40,12 +48,25 @@ struct SweepRow {
   std::vector<MicrophoneLevels> microphones;  ///< sound levels ([acoustics] only)
 };
 
-/// Runs every point with `threads` workers (0: all cores). `load` builds the case of a point
-/// (base file + the point's overrides). A failed case is reported in its row and does not stop
-/// the others. `progress(done, total)` is called from the workers, serialised.
-std::vector<SweepRow> run_sweep(const std::function<Case(const std::vector<Override>&)>& load,
-                                const std::vector<SweepPoint>& points, int threads,
-                                const std::function<void(std::size_t, std::size_t)>& progress = {});
+/// Builds the case of a point: the base file + the point's overrides.
+using SweepLoader = std::function<Case(const std::vector<Override>&)>;
+/// Called with (cases done, cases in all), serialised.
+using SweepProgress = std::function<void(std::size_t, std::size_t)>;
+
+/// Runs cases 0 … `cases` − 1 (`point(i)` gives case i) with `threads` workers (0: all cores) and
+/// hands each row to `sink(i, row)` in case order, serialised, as soon as the rows before it are
+/// done. A worker starts case i only while i < (rows handed over) + 4 × workers, so at most that
+/// many finished rows wait for an earlier one: memory does not grow with the number of cases. A
+/// failed case is reported in its row and does not stop the others; an exception from `sink`
+/// stops the sweep (no new cases start) and is rethrown once the running ones are done.
+void run_sweep(const SweepLoader& load, std::size_t cases,
+               const std::function<SweepPoint(std::size_t)>& point, int threads,
+               const std::function<void(std::size_t, SweepRow&&)>& sink,
+               const SweepProgress& progress = {});
+
+/// Every point's row at once, in the order of `points` (the streaming run_sweep above, collected).
+std::vector<SweepRow> run_sweep(const SweepLoader& load, const std::vector<SweepPoint>& points,
+                                int threads, const SweepProgress& progress = {});
 
 /// sweep.csv: the varied keys (SI), `status` (ok/failed), `error`, then for each ring channel of
 /// the first successful row `<ch>.rms,<ch>.ptp,<ch>.kurtosis,<ch>.crest,<ch>.peak_frequency,
@@ -53,5 +74,40 @@ std::vector<SweepRow> run_sweep(const std::function<Case(const std::vector<Overr
 /// mic<i>.spl_ring,mic<i>.spl_balls` [dB re 20 µPa]. Failed rows, and levels that do not exist
 /// (source "none", silence), leave their fields empty.
 std::string sweep_csv(const std::vector<SweepAxis>& axes, const std::vector<SweepRow>& rows);
+
+/// sweep_csv's text, written as the rows come (in case order) to `out`. The columns follow the
+/// first successful row, so failed rows before it are held (their values and message) until it
+/// comes, or until finish() if none does; every other row is formatted and passed on at once.
+class SweepCsvWriter {
+ public:
+  SweepCsvWriter(const std::vector<SweepAxis>& axes, std::function<void(std::string_view)> out);
+  void add(const SweepRow& row);
+  /// Writes what is still held (a sweep where no case succeeded). Call once, after the last row.
+  void finish();
+
+ private:
+  void start(const SweepRow* first_ok);
+  void write_row(const SweepRow& row);
+  std::vector<std::string> keys_;
+  std::function<void(std::string_view)> out_;
+  bool started_ = false;
+  std::vector<std::string> channels_;  ///< ring channels of the first successful row
+  std::size_t microphones_ = 0;
+  std::vector<SweepRow> held_;  ///< failed rows before the first successful one
+  std::string line_;
+};
+
+/// Counts of a sweep written by write_sweep.
+struct SweepCounts {
+  std::size_t cases = 0;
+  std::size_t failed = 0;
+};
+
+/// `bearing-sim sweep`: runs every case of the axes' product (run_sweep) and streams the rows to
+/// `dir`/sweep.csv (created if missing) under a temporary name, renamed into place only when every
+/// row is written; on any failure the temporary file is removed and nothing else is touched.
+/// Throws InputError if the folder or the file cannot be written.
+SweepCounts write_sweep(const std::string& dir, const std::vector<SweepAxis>& axes,
+                        const SweepLoader& load, int threads, const SweepProgress& progress = {});
 
 }  // namespace bearing
