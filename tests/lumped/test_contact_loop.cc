@@ -150,5 +150,14 @@ TEST(ContactLoop, NamesTheInstructionSetItRunsWith) {
   EXPECT_EQ(target.find('?'), std::string::npos) << target;
 }
 
+TEST(ContactLoop, CaseFilesKeepTheChoiceAndOmitTheDefault) {
+  // The default changes no result, so case.toml written without it stays as before the key.
+  EXPECT_EQ(case_to_toml(default_case()).find("contact_loop"), std::string::npos);
+  const Case scalar = default_case({{"solver.contact_loop", "scalar"}});
+  const std::string text = case_to_toml(scalar);
+  EXPECT_NE(text.find("contact_loop = \"scalar\""), std::string::npos);
+  EXPECT_EQ(parse_case(text, "case.toml", {}, ".").solver.contact_loop, ContactLoop::scalar);
+}
+
 }  // namespace
 }  // namespace bearing

@@ -342,9 +342,10 @@ std::vector<Key> solver_keys() {
           "blow-up bound on the ring displacement (default 1 mm)",
           [](auto& c) -> auto& { return c.solver.max_displacement; },
           limits::solver_max_displacement),
-      choice(
-          "solver.contact_loop", "simd | scalar: per-ball contact loop (same results)",
-          kContactLoops, "contact loop", [](auto& c) -> auto& { return c.solver.contact_loop; }),
+      choice_unwritten_at(
+          ContactLoop::simd, "solver.contact_loop",
+          "simd | scalar: per-ball contact loop (same results)", kContactLoops, "contact loop",
+          [](auto& c) -> auto& { return c.solver.contact_loop; }),
   };
 }
 
@@ -367,16 +368,11 @@ std::vector<Key> output_keys() {
   envelope.read = read_envelope_band;
   envelope.check = check_envelope_band;
   envelope.write = write_envelope_band;
-  Key format = choice(
-      "output.format",
+  Key format = choice_unwritten_at(
+      OutputFormat::csv, "output.format",
       "csv (default) | npy: the tables as NumPy .npy files of full doubles, their columns and "
       "units in columns.json",
       kOutputFormats, "output format", [](auto& c) -> auto& { return c.output.format; });
-  // The default is not written, so a csv run's case.toml stays as it was before the key existed.
-  format.write = [](std::ostream& o, const Case& c) {
-    if (c.output.format != OutputFormat::csv)
-      o << "format = " << quoted(name_of(kOutputFormats, c.output.format)) << "\n";
-  };
   return {
       table("output", "what run writes"),
       boolean(

@@ -178,4 +178,18 @@ Key choice(std::string name, std::string help, const Named<E> (&names)[N], std::
   return k;
 }
 
+/// choice() for a key added after case files existed whose default changes no result: the default
+/// is not written back, so a case.toml written without the key setting stays byte for byte as
+/// before the key existed.
+template <class E, std::size_t N, class At>
+Key choice_unwritten_at(E fallback, std::string name, std::string help, const Named<E> (&names)[N],
+                        std::string what, At at) {
+  Key k = choice(std::move(name), std::move(help), names, std::move(what), at);
+  const std::string leaf = leaf_of(k.name);
+  k.write = [at, leaf, &names, fallback](std::ostream& o, const Case& c) {
+    if (at(c) != fallback) o << leaf << " = " << quoted(name_of(names, at(c))) << "\n";
+  };
+  return k;
+}
+
 }  // namespace bearing::case_schema
