@@ -197,6 +197,7 @@ bearing::Case seed004(bool balls, const char* loop) {
 
 struct Row {
   std::string name;
+  double evals;  // force evaluations per run (0: a whole process)
   std::function<void()> body;
   std::vector<double> times;
 };
@@ -206,6 +207,7 @@ struct Row {
 int main(int argc, char** argv) {
   const int rounds = argc > 1 ? std::max(1, std::atoi(argv[1])) : 11;
   const std::string sim = argc > 2 ? argv[2] : "";
+  const double kEvals = 4 * kDuration / kDt, kSeed004Evals = 4 * 1.0 / kDt;
   using bearing::ContactLoop;
 
   struct Model {
@@ -250,29 +252,42 @@ int main(int argc, char** argv) {
                   0.0};  // the case has no cage phase: ball 0 at angle 0
 
   std::vector<Row> rows = {
-      {"force evaluation, simd", [&] { g_sink = g_sink + force_loop(*simd.m, simd.q0); }, {}},
-      {"force evaluation, scalar", [&] { g_sink = g_sink + force_loop(*scalar.m, scalar.q0); }, {}},
+      {"force evaluation, simd",
+       kEvals,
+       [&] { g_sink = g_sink + force_loop(*simd.m, simd.q0); },
+       {}},
+      {"force evaluation, scalar",
+       kEvals,
+       [&] { g_sink = g_sink + force_loop(*scalar.m, scalar.q0); },
+       {}},
       {"RK4 integration, simd",
+       kEvals,
        [&] { g_sink = g_sink + rk4_run(*simd.m, simd.q0, simd.v0, times); },
        {}},
       {"RK4 integration, scalar",
+       kEvals,
        [&] { g_sink = g_sink + rk4_run(*scalar.m, scalar.q0, scalar.v0, times); },
        {}},
       {"bare scalar RK4 loop",
+       kEvals,
        [&] { g_sink = g_sink + bare_rk4(bare, simd.q0[0], simd.q0[1]); },
        {}},
       {"seed 004, 2-DOF, simd",
+       kSeed004Evals,
        [&] { g_sink = g_sink + rk4_run(*s4_two.m, s4_two.q0, s4_two.v0, sparse); },
        {}},
       {"seed 004, 2-DOF, scalar",
+       kSeed004Evals,
        [&] {
          g_sink = g_sink + rk4_run(*s4_two_scalar.m, s4_two_scalar.q0, s4_two_scalar.v0, sparse);
        },
        {}},
       {"seed 004, balls (slip 0.02, mu_m 0.01), simd",
+       kSeed004Evals,
        [&] { g_sink = g_sink + rk4_run(*s4_balls.m, s4_balls.q0, s4_balls.v0, sparse); },
        {}},
       {"seed 004, balls (slip 0.02, mu_m 0.01), scalar",
+       kSeed004Evals,
        [&] {
          g_sink =
              g_sink + rk4_run(*s4_balls_scalar.m, s4_balls_scalar.q0, s4_balls_scalar.v0, sparse);
@@ -281,8 +296,8 @@ int main(int argc, char** argv) {
   };
   if (!sim.empty()) {
     const std::string out = "/tmp/bearing_bench_simd_run";
-    rows.push_back({"bearing-sim run, simd", [=] { run_process(sim, "simd", out); }, {}});
-    rows.push_back({"bearing-sim run, scalar", [=] { run_process(sim, "scalar", out); }, {}});
+    rows.push_back({"bearing-sim run, simd", 0, [=] { run_process(sim, "simd", out); }, {}});
+    rows.push_back({"bearing-sim run, scalar", 0, [=] { run_process(sim, "scalar", out); }, {}});
     if (!run_process(sim, "simd", out)) {
       std::fprintf(stderr, "bearing_bench_simd: %s run failed\n", sim.c_str());
       return 1;
@@ -295,10 +310,14 @@ int main(int argc, char** argv) {
   std::printf("contact loop: simd runs as %s\n\n", bearing::simd_target().c_str());
   std::printf("| row | rounds | min [ms] | median [ms] | per force evaluation (min) [ns] |\n");
   std::printf("| --- | ---: | ---: | ---: | ---: |\n");
-  const double evals = 4 * kDuration / kDt;
-  for (const Row& r : rows)
-    std::printf("| %s | %d | %.2f | %.2f | %.1f |\n", r.name.c_str(), rounds,
-                1e3 * minimum(r.times), 1e3 * median(r.times), 1e9 * minimum(r.times) / evals);
+  for (const Row& r : rows) {
+    std::printf("| %s | %d | %.2f | %.2f | ", r.name.c_str(), rounds, 1e3 * minimum(r.times),
+                1e3 * median(r.times));
+    if (r.evals > 0)
+      std::printf("%.1f |\n", 1e9 * minimum(r.times) / r.evals);
+    else
+      std::printf("– |\n");
+  }
   auto ratio = [&](int a, int b) { return minimum(rows[a].times) / minimum(rows[b].times); };
   std::printf(
       "\nratios of minima: force simd/scalar %.3f (scalar/simd %.2fx); RK4 simd/scalar "
