@@ -2,7 +2,8 @@
 // loop, in interleaved rounds (each round times every row once, so load from other processes
 // spreads over all of them); prints a table of minima and medians (bench/README.md).
 //
-//   bearing_bench_simd [ROUNDS] [BEARING_SIM]
+//   bearing_bench_simd [ROUNDS] [BEARING_SIM|""] [ROW]   (ROW: run only the rows whose name
+//                                                        holds it, untimed, e.g. under perf)
 //
 // Rows, all on the built-in default case (6308, 2000 rpm, 20 N, 2-DOF, Z = 8):
 //   force evaluation     MechanicalSystem::force_with at a new t every call (the ball frame is
@@ -207,6 +208,7 @@ struct Row {
 int main(int argc, char** argv) {
   const int rounds = argc > 1 ? std::max(1, std::atoi(argv[1])) : 11;
   const std::string sim = argc > 2 ? argv[2] : "";
+  const std::string filter = argc > 3 ? argv[3] : "";
   const double kEvals = 4 * kDuration / kDt, kSeed004Evals = 4 * 1.0 / kDt;
   using bearing::ContactLoop;
 
@@ -302,6 +304,15 @@ int main(int argc, char** argv) {
       std::fprintf(stderr, "bearing_bench_simd: %s run failed\n", sim.c_str());
       return 1;
     }
+  }
+  if (!filter.empty()) {  // profiling one row: no ratios
+    rows.erase(
+        std::remove_if(rows.begin(), rows.end(),
+                       [&](const Row& r) { return r.name.find(filter) == std::string::npos; }),
+        rows.end());
+    for (int i = 0; i < rounds; ++i)
+      for (Row& r : rows) r.body();
+    return 0;
   }
   for (Row& r : rows) r.body();  // warm-up round
   for (int i = 0; i < rounds; ++i)
