@@ -265,15 +265,9 @@ IntegrationStats EventAdaptive::integrate(const MechanicalSystem& system, double
   check_state(method, t0, 0, settings_.dt, y.data(), y.data() + n, n, bounds.data());
   if (output_times.empty()) return stats;
 
-  std::vector<double> dfdq(static_cast<std::size_t>(n) * n), dfdv(dfdq.size());
-  const std::unique_ptr<MechanicalSystem::Workspace> workspace = system.make_workspace();
-  GslContext context;
-  context.system = &system;
-  context.workspace = workspace.get();
-  context.n = n;
-  context.inv_mass = inv_mass.data();
-  context.dfdq = dfdq.data();
-  context.dfdv = dfdv.data();
+  GslContextData data(system, inv_mass);
+  GslContext& context = data.context;
+  MechanicalSystem::Workspace* const workspace = data.workspace();
   const std::vector<double> scale =
       tolerance_scales(system, t0, q0, v0, inv_mass, settings_.dt, context);
   gsl_odeiv2_system ode{first_order_rhs, nullptr, dim, &context};
@@ -281,8 +275,8 @@ IntegrationStats EventAdaptive::integrate(const MechanicalSystem& system, double
       gsl_odeiv2_step_alloc(gsl_odeiv2_step_rk8pd, dim));
   if (!stepper) throw SolverError(method + ": GSL could not allocate the rk8pd stepper");
 
-  DenseOutput out(method, system, workspace.get(), inv_mass.data(), bounds.data(), output_times,
-                  observe, context);
+  DenseOutput out(method, system, workspace, inv_mass.data(), bounds.data(), output_times, observe,
+                  context);
   out.emit_state(t0, y.data(), y.data() + n, 0, settings_.dt);
   const double t_end = output_times.back();
   ProgressThrottle report(progress, t0, t_end);

@@ -190,15 +190,9 @@ IntegrationStats integrate_gsl(const std::string& method, const gsl_odeiv2_step_
   check_state(method, t0, 0, settings.dt, y.data(), y.data() + n, n, bound);
   if (output_times.empty()) return stats;
 
-  std::vector<double> dfdq(static_cast<std::size_t>(n) * n), dfdv(dfdq.size());
-  const std::unique_ptr<MechanicalSystem::Workspace> workspace = system.make_workspace();
-  GslContext context;
-  context.system = &system;
-  context.workspace = workspace.get();
-  context.n = n;
-  context.inv_mass = inv_mass.data();
-  context.dfdq = dfdq.data();
-  context.dfdv = dfdv.data();
+  GslContextData data(system, inv_mass);
+  GslContext& context = data.context;
+  MechanicalSystem::Workspace* const workspace = data.workspace();
 
   const std::vector<double> scale =
       tolerance_scales(system, t0, q0, v0, inv_mass, settings.dt, context);
@@ -219,7 +213,7 @@ IntegrationStats integrate_gsl(const std::string& method, const gsl_odeiv2_step_
   // its ends slightly). a = M⁻¹ f there is evaluated afresh (counted) and must be finite.
   const auto emit = [&](double t_out, const double* q, const double* v, long step, double dt) {
     check_state(method, t_out, step, dt, q, v, n, bound);
-    system.force_with(workspace.get(), t_out, q, v, a.data());
+    system.force_with(workspace, t_out, q, v, a.data());
     ++context.force_evaluations;
     for (int i = 0; i < n; ++i) a[static_cast<std::size_t>(i)] *= inv_mass[i];
     check_acceleration(method, t_out, step, dt, a.data(), n);

@@ -48,6 +48,32 @@ struct GslContext {
   double bad_value = 0.0;
 };
 
+/// A GslContext with what it points to, for one integrate() call: the system's force workspace and
+/// the n×n Jacobian work arrays. Not copyable: the context points into it.
+class GslContextData {
+ public:
+  GslContextData(const MechanicalSystem& system, const std::vector<double>& inv_mass)
+      : workspace_(system.make_workspace()),
+        dfdq_(static_cast<std::size_t>(system.dofs()) * static_cast<std::size_t>(system.dofs())),
+        dfdv_(dfdq_.size()) {
+    context.system = &system;
+    context.workspace = workspace_.get();
+    context.n = system.dofs();
+    context.inv_mass = inv_mass.data();
+    context.dfdq = dfdq_.data();
+    context.dfdv = dfdv_.data();
+  }
+  GslContextData(const GslContextData&) = delete;
+  GslContextData& operator=(const GslContextData&) = delete;
+
+  MechanicalSystem::Workspace* workspace() const { return workspace_.get(); }
+  GslContext context;
+
+ private:
+  std::unique_ptr<MechanicalSystem::Workspace> workspace_;
+  std::vector<double> dfdq_, dfdv_;
+};
+
 /// The Jacobian callback of gsl_odeiv2_system (params is a GslContext*), or nullptr.
 using GslJacobian = int (*)(double t, const double y[], double* dfdy, double dfdt[], void* params);
 
