@@ -148,8 +148,8 @@ class BallDofs final : public BallDofModel {
   void force_with(Workspace* workspace, double t, const double* q, const double* v,
                   double* f) const override {
     if (!workspace) return force(t, q, v, f);
-    // One instantiation per geometry, friction on/off and Hertz exponents: the hot loop has no
-    // per-ball branches on them.
+    // One instantiation per geometry and friction on/off: the hot loop has no per-ball branches
+    // on them. The planar model with both exponents 3/2 (the usual case) runs the SIMD kernel.
     const detail::RaceFrame& fr = set_.frame<detail::RaceFrame>(t, *workspace);
     if (axial_)
       friction_ ? force_impl<true, true>(fr, q, v, f) : force_impl<true, false>(fr, q, v, f);
@@ -335,11 +335,9 @@ class BallDofs final : public BallDofModel {
   }
 
  private:
-  // Q = K [δ]_+^n, without a branch for n = 3/2.
-  template <bool kHertz>
+  // Q = K [δ]_+^n (both exponents 3/2 in the planar model go to the kernel instead).
   static double load(double K, double n, double delta) {
-    delta = std::max(delta, 0.0);
-    return kHertz ? K * delta * std::sqrt(delta) : K * std::pow(delta, n);
+    return K * std::pow(std::max(delta, 0.0), n);
   }
 
   // force() of the planar model with both exponents 3/2: the per-ball kernel
@@ -372,8 +370,9 @@ class BallDofs final : public BallDofModel {
     f[1] = fy;
   }
 
-  // force(): the equations of ball_dofs.h; kHertz: both exponents 3/2.
-  template <bool kAxial, bool kFriction, bool kHertz = false>
+  // force(): the equations of ball_dofs.h (the planar model with both exponents 3/2:
+  // planar_hertz_force()).
+  template <bool kAxial, bool kFriction>
   void force_impl(const detail::RaceFrame& fr, const double* q, const double* v, double* f) const {
     const int Z = balls_;
     const double vx = v[0], vy = v[1];
@@ -398,8 +397,8 @@ class BallDofs final : public BallDofModel {
       } else {
         const double delta_o = s_dof[j] + fr.outer_excitation[j];
         const double delta_i = x * c + y * s - s_dof[j] - gap + fr.inner_excitation[j];
-        load_o = load<kHertz>(fr.outer_stiffness[j], no, delta_o);
-        load_i = load<kHertz>(fr.inner_stiffness[j], ni, delta_i);
+        load_o = load(fr.outer_stiffness[j], no, delta_o);
+        load_i = load(fr.inner_stiffness[j], ni, delta_i);
       }
       fx -= load_i * ca * c;
       fy -= load_i * ca * s;
