@@ -31,12 +31,13 @@ Built by the project's CMake (``BEARING_WITH_PYTHON``, on when pybind11-dev and 
 installed) into ``build/python/bearing``: ``PYTHONPATH=build/python /usr/bin/python3``.
 """
 
+import importlib as _importlib
 import os as _os
 
 __version__ = "0.1.0"
 
 try:
-    from . import _bearing
+    _bearing = _importlib.import_module(__name__ + "._bearing")
 except ImportError as _error:  # the .py files are there but the extension was not built
     _bearing = None
     _import_error = _error

@@ -24,7 +24,8 @@ except ImportError as e:
     sys.exit(77)
 try:
     import bearing
-    from bearing import _bearing  # noqa: F401  (absent when BEARING_WITH_PYTHON was off)
+    if bearing._bearing is None:  # the .py files without the extension (BEARING_WITH_PYTHON off)
+        raise ImportError(bearing._import_error)
 except ImportError as e:
     print(f"SKIP: the module bearing was not built for {sys.executable} ({e}); configure with "
           "pybind11-dev and python3-dev installed (BEARING_WITH_PYTHON=ON)")
