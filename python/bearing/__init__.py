@@ -23,7 +23,7 @@ API
 ``info``      ``bearing-sim info --json`` as a dict
 ``run``       ``bearing-sim run``: a ``Result`` (``.t``, channels, ``.spectrum``, ``.summary``)
 ``sweep``     ``bearing-sim sweep``: the rows of sweep.csv (list of dicts or pandas DataFrame)
-``presets``   the bearing catalogue;  ``keys`` every case-file key
+``presets``   the bearing catalogue;  ``keys``, ``keys_help`` every case-file key
 ``InputError`` (a ValueError) and ``SolverError`` (a RuntimeError): the C++ library's messages,
               exactly as bearing-sim prints them after ``error:``.
 
@@ -61,7 +61,7 @@ else:
         "why and what to change (bearing-sim exits with status 3).")
 
 __all__ = ["Case", "Result", "InputError", "SolverError", "info", "run", "sweep", "presets",
-           "keys"]
+           "keys", "keys_help"]
 
 
 def _case(case):
@@ -163,6 +163,12 @@ def presets():
 
 def keys():
     """Every case-file key ``Case.set`` and ``sweep`` accept, as "table.key" (a numeric part such
-    as ``waviness.inner.0.amplitude`` indexes an array of tables). ``print(_bearing.keys_help())``
+    as ``waviness.inner.0.amplitude`` indexes an array of tables); ``print(bearing.keys_help())``
     gives each key's meaning and units."""
     return _bearing.keys()
+
+
+def keys_help():
+    """One line per case-file key: its name, what it is and the units it accepts (as ``bearing-sim
+    run --help`` lists them); plain numbers are SI."""
+    return _bearing.keys_help()

@@ -286,10 +286,10 @@ py::list sweep(const CaseHandle& c, const py::dict& vary, int jobs) {
   std::vector<bearing::SweepAxis> axes;
   for (const auto& [key, spec] : vary) axes.push_back(sweep_axis(key.cast<std::string>(), spec));
   std::vector<bearing::SweepRow> rows;
+  const CaseHandle base = c;  // copied while the GIL is held: Python may change `c` meanwhile
   {
     py::gil_scoped_release release;
     const auto points = bearing::sweep_points(axes);
-    const CaseHandle base = c;
     const auto loader = [&base](const std::vector<bearing::Override>& p) { return base.load(p); };
     rows = bearing::run_sweep(loader, points, jobs);
   }
@@ -314,10 +314,11 @@ PYBIND11_MODULE(_bearing, m) {
   m.def(
       "info",
       [](const CaseHandle& c) {
+        const bearing::Case input = c.resolved;
         nlohmann::json j;
         {
           py::gil_scoped_release release;
-          j = bearing::info_json(bearing::compute_info(c.resolved));
+          j = bearing::info_json(bearing::compute_info(input));
         }
         return to_python(j);
       },
