@@ -386,7 +386,7 @@ void bind_case(py::module_& m) {
           "20 kHz.")
       .def(
           "set",
-          [](CaseHandle& c, const std::string& key, py::handle value) -> CaseHandle& {
+          [](CaseHandle& c, const std::string& key, const py::object& value) -> CaseHandle& {
             auto o = bearing::parse_override(key + "=" + toml_value(value, true));
             CaseHandle next = c;
             next.overrides.push_back(std::move(o));
