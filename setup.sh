@@ -13,6 +13,7 @@ packages=(
   googletest libgtest-dev libgmock-dev libbenchmark-dev                          # tests/, bench/
   libdeal.ii-dev petsc-dev mpi-default-bin gmsh                                  # fem/, meshes/
   python3-matplotlib python3-numpy python3-jsonschema chromium                   # verification/: figures, report tests
+  pybind11-dev python3-dev                                                       # python/: the module bearing (with python3-numpy)
 )
 
 missing=()

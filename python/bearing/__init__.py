@@ -1,0 +1,174 @@
+"""bearing: the rolling-bearing vibration toolkit (bearing-sim) from Python.
+
+A thin layer (pybind11) over the C++ library the command line uses: the same case files and
+overrides, the same simulation and analysis, the same numbers to the last bit. Nothing physical is
+computed in Python.
+
+Units are SI everywhere (m, N, s, rad, rad/s, Pa, Hz); a value given as a string may carry a unit
+as in a case file: ``"3000 rpm"``, ``"2 um"``, ``"0.05 kN"``.
+
+Example::
+
+    import bearing
+    case = bearing.Case.default().set("operation.speed", "3000 rpm")
+    result = bearing.run(case)                     # GIL released while it runs
+    result.t, result["ay"]                         # s, m/s^2 (NumPy views, no copies)
+    result.summary["channels"]["ay"]["rms"]        # m/s^2, as summary.json
+    rows = bearing.sweep(case, vary={"waviness.inner.0.amplitude": "0um:1um:5"}, jobs=2)
+
+API
+---
+``Case``      a case: ``Case.from_file(path)``, ``Case.default()``, ``Case.from_toml(text)``;
+              ``case.set(key, value)`` (as ``--set``), ``case.to_toml()``
+``info``      ``bearing-sim info --json`` as a dict
+``run``       ``bearing-sim run``: a ``Result`` (``.t``, channels, ``.spectrum``, ``.summary``)
+``sweep``     ``bearing-sim sweep``: the rows of sweep.csv (list of dicts or pandas DataFrame)
+``presets``   the bearing catalogue;  ``keys``, ``keys_help`` every case-file key
+``InputError`` (a ValueError) and ``SolverError`` (a RuntimeError): the C++ library's messages,
+              exactly as bearing-sim prints them after ``error:``.
+
+Built by the project's CMake (``BEARING_WITH_PYTHON``, on when pybind11-dev and python3-dev are
+installed) into ``build/python/bearing``: ``PYTHONPATH=build/python /usr/bin/python3``.
+"""
+
+import importlib as _importlib
+import os as _os
+
+__version__ = "0.1.0"
+
+try:
+    _bearing = _importlib.import_module(__name__ + "._bearing")
+except ImportError as _error:  # the .py files are there but the extension was not built
+    _bearing = None
+    _import_error = _error
+
+    def __getattr__(name):
+        raise ImportError(
+            f"bearing.{name}: the compiled extension bearing._bearing is not available "
+            f"({_import_error}). Build it with the project's CMake (BEARING_WITH_PYTHON=ON; "
+            "Debian packages pybind11-dev python3-dev) for this interpreter (Debian's "
+            "/usr/bin/python3) and put build/python on PYTHONPATH.")
+else:
+    Case = _bearing.Case
+    Result = _bearing.Result
+    InputError = _bearing.InputError
+    SolverError = _bearing.SolverError
+    InputError.__doc__ = (
+        "Bad input: an unknown key, a wrong type or unit, a value outside its range. The message "
+        "names the key, the value and what is allowed (bearing-sim exits with status 2).")
+    SolverError.__doc__ = (
+        "A numerical procedure that did not reach its answer, e.g. a blow-up; the message says "
+        "why and what to change (bearing-sim exits with status 3).")
+
+__all__ = ["Case", "Result", "InputError", "SolverError", "info", "run", "sweep", "presets",
+           "keys", "keys_help"]
+
+
+def _case(case):
+    """A Case from a Case, or from a case file's path (str or os.PathLike)."""
+    if isinstance(case, (str, _os.PathLike)):
+        return _bearing.Case.from_file(_os.fspath(case))
+    return case
+
+
+def info(case):
+    """Geometry-derived numbers of a case: ``bearing-sim info --json`` as a dict.
+
+    ``case``: a :class:`Case`, or the path of a case file.
+
+    Keys (SI): ``kinematics.{shaft,ftf,bpfo,bpfi,bsf}`` [Hz];
+    ``contact.{inner,outer}.{sum_rho [1/m], f_rho [-], ellipticity [-], delta_star [-],
+    K [N/m^n], exponent n [-]}``, ``contact.K`` [N/m^n] and ``contact.exponent`` of the ball
+    between both races, ``contact.method``; ``static.deflection`` ([x, y] of the inner-ring centre,
+    m), ``static.ball_angles`` [rad], ``static.ball_loads`` [N], ``static.q_max`` [N];
+    ``case.{source,bearing,speed [rad/s],load [N]}``, ``units``; ``defects[]`` with
+    ``[[defects]]``. Raises InputError or SolverError.
+
+    >>> bearing.info(bearing.Case.default())["kinematics"]["bpfo"]   # Hz
+    """
+    return _bearing.info(_case(case))
+
+
+def run(case):
+    """Simulates and analyses a case as ``bearing-sim run`` does; returns a :class:`Result`.
+
+    ``case``: a :class:`Case`, or the path of a case file. The GIL is released during the run, so
+    other Python threads go on. Raises InputError (bad settings) or SolverError (blow-up, no
+    convergence) with bearing-sim's messages.
+
+    The result (arrays are read-only NumPy float64 views of the C++ result, no copies):
+
+    - ``result.t`` [s]: output times from 0 at ``solver.output_rate``;
+    - ``result["ay"]`` or ``result.ay``: a channel (``x, y`` m; ``vx, vy`` m/s; ``ax, ay`` m/s^2;
+      3-DOF ``z, vz, az``; ``Q1…`` N, ``d1…`` m, ``r1…`` m, ``vr1…`` m/s when asked for in
+      [output]); ``result.channels``: {name: SI unit} in response.csv's order;
+      ``result.response``: {"t": …, name: …} (``pandas.DataFrame(result.response)`` is
+      response.csv);
+    - ``result.spectrum``: {"frequency" [Hz], ring channel: one-sided amplitude [channel unit]}
+      over [transient, duration) (spectrum.csv);
+    - ``result.envelope`` (with ``output.envelope_band``, else None): {"frequency" [Hz],
+      "env_ax" … [m/s^2]}; ``result.pressure`` (with [acoustics], else None): {"t" [s],
+      "p1" … [Pa]};
+    - ``result.summary``: summary.json's content as a dict (equal to ``json.load`` of the CLI's
+      file); ``str(result)``: the readable summary; ``result.case_toml``: case.toml;
+      ``result.write(dir)``: the CLI's result files.
+
+    >>> r = bearing.run(bearing.Case.default().set("solver.duration", "0.5 s"))
+    >>> r.summary["channels"]["ay"]["rms"]        # m/s^2
+    """
+    return _bearing.run(_case(case))
+
+
+def sweep(case, vary, jobs=0, as_dataframe=None):
+    """Runs a case for every combination of ``vary`` as ``bearing-sim sweep`` does.
+
+    ``vary``: {key: spec}, a spec being ``"FROM:TO:N"`` as ``--vary`` takes it (units allowed:
+    ``"1000rpm:3000rpm:5"``), or a list of values (numbers in SI, or strings with units). The
+    Cartesian product of the keys in order, the first slowest. ``jobs``: parallel cases, the C++
+    sweep's threads (0: all cores); the GIL is released meanwhile.
+
+    Returns one row per case in case order, the columns of sweep.csv: the varied values (SI),
+    ``status`` ("ok"/"failed"), ``error`` (the message of a failed case), then per ring channel
+    ``<ch>.rms``, ``<ch>.ptp`` [channel unit], ``<ch>.kurtosis``, ``<ch>.crest`` [-],
+    ``<ch>.peak_frequency`` [Hz], ``<ch>.peak_label``, and with [acoustics] per microphone
+    ``mic<i>.spl_total``, ``mic<i>.spl_ring``, ``mic<i>.spl_balls`` [dB re 20 uPa]; fields sweep.csv
+    leaves empty are None. A pandas DataFrame if pandas can be imported (``as_dataframe=None``),
+    else a list of dicts; ``as_dataframe=False`` always gives the list, ``True`` requires pandas.
+    A failed case does not stop the others; a bad key or spec raises InputError.
+
+    >>> rows = bearing.sweep(bearing.Case.default(),
+    ...                      vary={"operation.speed": "1000rpm:3000rpm:5"}, jobs=2)
+    >>> [r["ay.rms"] for r in rows]               # m/s^2
+    """
+    rows = _bearing.sweep(_case(case), dict(vary), int(jobs))
+    if as_dataframe is False:
+        return rows
+    try:
+        import pandas
+    except ImportError:
+        if as_dataframe:
+            raise
+        return rows
+    return pandas.DataFrame(rows)
+
+
+def presets():
+    """The bearing catalogue: {designation: where its numbers come from} (``bearing-sim presets``).
+
+    A designation is a case's ``bearing.preset`` (e.g. ``case.set("bearing.preset", "6205")``);
+    its dimensions are in SI in ``Case.from_toml('[bearing]\\npreset = "6205"').to_toml()``.
+    """
+    return _bearing.presets()
+
+
+def keys():
+    """Every case-file key ``Case.set`` and ``sweep`` accept, as "table.key" (a numeric part such
+    as ``waviness.inner.0.amplitude`` indexes an array of tables); ``print(bearing.keys_help())``
+    gives each key's meaning and units."""
+    return _bearing.keys()
+
+
+def keys_help():
+    """One line per case-file key: its name, what it is and the units it accepts (as ``bearing-sim
+    run --help`` lists them); plain numbers are SI."""
+    return _bearing.keys_help()

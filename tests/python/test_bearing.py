@@ -1,0 +1,278 @@
+#!/usr/bin/python3
+"""The Python module `bearing` against the command line it wraps: the same case gives the same
+summary.json, info JSON, response and spectrum arrays (bit for bit, against output.format = "npy"),
+sweep.csv rows and error messages. Skipped (exit 77) when numpy or the compiled extension cannot be
+imported by this interpreter.
+
+    PYTHONPATH=build/python test_bearing.py BEARING_SIM EXAMPLES_DIR
+"""
+import csv
+import gc
+import json
+import pathlib
+import subprocess
+import sys
+import tempfile
+import threading
+import types
+import unittest
+
+try:
+    import numpy as np
+except ImportError as e:
+    print(f"SKIP: numpy is not importable by {sys.executable} ({e}); install python3-numpy")
+    sys.exit(77)
+try:
+    import bearing
+    if bearing._bearing is None:  # the .py files without the extension (BEARING_WITH_PYTHON off)
+        raise ImportError(bearing._import_error)
+except ImportError as e:
+    print(f"SKIP: the module bearing was not built for {sys.executable} ({e}); configure with "
+          "pybind11-dev and python3-dev installed (BEARING_WITH_PYTHON=ON)")
+    sys.exit(77)
+
+SIM = sys.argv[1] if len(sys.argv) > 1 else "build/lumped/bearing-sim"
+EXAMPLES = pathlib.Path(sys.argv[2] if len(sys.argv) > 2 else "examples")
+WAVINESS = str(EXAMPLES / "seed003_amplitude.toml")
+
+# A short run that writes every kind of table: ball loads, envelope spectra, two microphones.
+SETS = [("solver.duration", "0.3 s"), ("solver.transient", "0.1 s"),
+        ("output.ball_loads", "true"), ("output.envelope_band", "auto"),
+        ("acoustics.microphones", '[["0.1 m", "0 deg"], ["0.3 m", "-90 deg"]]')]
+
+
+def cli(*args, check=True):
+    return subprocess.run([SIM, *args], capture_output=True, text=True, check=check)
+
+
+def set_args(sets):
+    return [a for key, value in sets for a in ("--set", f"{key}={value}")]
+
+
+def case_with(path, sets):
+    case = bearing.Case.from_file(path) if path else bearing.Case.default()
+    for key, value in sets:
+        case.set(key, value)
+    return case
+
+
+def bits(a):
+    return np.ascontiguousarray(a, dtype="<f8").view(np.uint64)
+
+
+class RunMatchesCli(unittest.TestCase):
+    @classmethod
+    def setUpClass(cls):
+        cls.tmp = tempfile.TemporaryDirectory()
+        cls.out = pathlib.Path(cls.tmp.name) / "run"
+        sets = SETS + [("output.format", "npy")]
+        cli("run", WAVINESS, "--quiet", "--out", str(cls.out), *set_args(sets))
+        cls.result = bearing.run(case_with(WAVINESS, sets))
+        cls.columns = json.loads((cls.out / "columns.json").read_text())["tables"]
+
+    @classmethod
+    def tearDownClass(cls):
+        cls.tmp.cleanup()
+
+    def test_summary_equals_summary_json(self):
+        expected = json.loads((self.out / "summary.json").read_text())
+        self.assertEqual(self.result.summary, expected)
+
+    def test_case_toml_equals(self):
+        self.assertEqual(self.result.case_toml, (self.out / "case.toml").read_text())
+
+    def check_table(self, stem, arrays):
+        table = np.load(self.out / f"{stem}.npy")
+        names = self.columns[f"{stem}.npy"]["columns"]
+        self.assertEqual(list(arrays), names)
+        for i, name in enumerate(names):
+            with self.subTest(table=stem, column=name):
+                self.assertTrue(np.array_equal(bits(arrays[name]), bits(table[:, i])))
+
+    def test_response_bit_for_bit(self):
+        self.check_table("response", self.result.response)
+
+    def test_spectrum_bit_for_bit(self):
+        self.check_table("spectrum", self.result.spectrum)
+
+    def test_envelope_and_pressure_bit_for_bit(self):
+        self.check_table("envelope", self.result.envelope)
+        self.check_table("pressure", self.result.pressure)
+
+    def test_shapes_units_and_views(self):
+        r = self.result
+        n = round(0.3 * 20000) + 1
+        self.assertEqual(r.t.shape, (n,))
+        self.assertEqual(r.t.dtype, np.float64)
+        self.assertEqual(r.t[-1], 0.3)
+        self.assertEqual(list(r.channels)[:6], ["x", "y", "vx", "vy", "ax", "ay"])
+        units = {"x": "m", "y": "m", "vx": "m/s", "vy": "m/s", "ax": "m/s^2", "ay": "m/s^2",
+                 "Q1": "N", "r1": "m", "vr1": "m/s"}
+        for name, unit in units.items():
+            self.assertEqual(r.channels[name], unit)
+        meta = self.columns["response.npy"]
+        self.assertEqual(list(r.channels.values()), meta["units"][1:])
+        for name in r.channels:
+            self.assertEqual(r[name].shape, (n,))
+            self.assertEqual(r.summary["channels"][name]["unit"], r.channels[name])
+        self.assertTrue(np.array_equal(r.ay, r["ay"]))
+        # Views of the result's own memory: read-only, the same buffer every time.
+        self.assertFalse(r.ay.flags.writeable)
+        self.assertEqual(r.ay.__array_interface__["data"][0],
+                         r["ay"].__array_interface__["data"][0])
+        self.assertIs(r.ay.base, r)
+        f = r.spectrum["frequency"]
+        self.assertEqual(f.shape, r.spectrum["ay"].shape)
+        self.assertEqual(f.shape, (round(0.2 * 20000) // 2 + 1,))
+        self.assertEqual(sorted(r.pressure), ["p1", "p2", "t"])
+        with self.assertRaises(KeyError):
+            r["nope"]
+        with self.assertRaises(AttributeError):
+            r.nope
+
+    def test_arrays_keep_the_result_alive(self):
+        t = bearing.run(bearing.Case.default().set("solver.duration", "0.25 s")).t
+        gc.collect()
+        self.assertEqual(t.shape, (5001,))
+        self.assertEqual(t[-1], 0.25)
+
+    def test_write_gives_the_cli_files(self):
+        out = pathlib.Path(self.tmp.name) / "written"
+        self.result.write(str(out))
+        for name in ("summary.json", "case.toml", "columns.json", "response.npy", "spectrum.npy"):
+            self.assertEqual((out / name).read_bytes(), (self.out / name).read_bytes(), name)
+
+
+class InfoAndPresets(unittest.TestCase):
+    def test_info_equals_cli_json(self):
+        for path, sets in ((WAVINESS, []), (None, [("operation.speed", "3000 rpm")])):
+            expected = json.loads(cli("info", *([path] if path else []), "--json",
+                                      *set_args(sets)).stdout)
+            self.assertEqual(bearing.info(case_with(path, sets)), expected)
+        self.assertEqual(bearing.info(WAVINESS), bearing.info(bearing.Case.from_file(WAVINESS)))
+
+    def test_presets_equal_cli(self):
+        lines = cli("presets").stdout.splitlines()
+        self.assertEqual(bearing.presets(), dict(line.split("\t", 1) for line in lines))
+
+    def test_set_values_as_on_the_command_line(self):
+        a = bearing.Case.default().set("operation.load", ["0 N", "-30 N"]).set(
+            "solver.duration", 0.3).set("output.ball_loads", True).set("bearing.balls", 9)
+        b = bearing.Case.default().set("operation.load", '["0 N", "-30 N"]').set(
+            "solver.duration", "0.3").set("output.ball_loads", "true").set("bearing.balls", "9")
+        self.assertEqual(a.to_toml(), b.to_toml())
+        self.assertEqual(len(a.overrides), 4)
+        # The resolved TOML gives back the same case (only its "# Source:" comment differs).
+        body = [line for line in a.to_toml().splitlines() if not line.startswith("#")]
+        same = bearing.Case.from_toml(a.to_toml(), source="again")
+        self.assertEqual([line for line in same.to_toml().splitlines()
+                          if not line.startswith("#")], body)
+        self.assertEqual(same.source, "again")
+        self.assertIn("operation.speed", bearing.keys())
+
+
+class Errors(unittest.TestCase):
+    def cli_error(self, args, status):
+        p = cli(*args, check=False)
+        self.assertEqual(p.returncode, status, p.stderr)
+        prefix = "bearing-sim: error: " if status == 2 else "bearing-sim: solver error: "
+        self.assertTrue(p.stderr.startswith(prefix), p.stderr)
+        return p.stderr[len(prefix):].rstrip("\n")
+
+    def test_input_errors_carry_the_cli_message(self):
+        for key, value in (("operation.speed", "fast"), ("bearing.ball_diam", "1 mm"),
+                           ("bearing.balls", "2.5"), ("model.kind", "4dof")):
+            with self.subTest(key=key):
+                message = self.cli_error(["info", "--set", f"{key}={value}"], 2)
+                case = bearing.Case.default()
+                with self.assertRaises(bearing.InputError) as e:
+                    case.set(key, value)
+                self.assertEqual(str(e.exception), message)
+                self.assertEqual(case.overrides, [])  # unchanged
+        message = self.cli_error(["info", "no/such/case.toml"], 2)
+        with self.assertRaises(bearing.InputError) as e:
+            bearing.Case.from_file("no/such/case.toml")
+        self.assertEqual(str(e.exception), message)
+        self.assertTrue(issubclass(bearing.InputError, ValueError))
+
+    def test_solver_error_carries_the_cli_message(self):
+        sets = [("solver.max_displacement", "1 um"), ("solver.duration", "0.3 s")]  # a "blow-up"
+        with tempfile.TemporaryDirectory() as tmp:
+            message = self.cli_error(["run", "--quiet", "--out", tmp, *set_args(sets)], 3)
+        with self.assertRaises(bearing.SolverError) as e:
+            bearing.run(case_with(None, sets))
+        self.assertEqual(str(e.exception), message)
+        self.assertTrue(issubclass(bearing.SolverError, RuntimeError))
+
+    def test_sweep_input_errors(self):
+        with self.assertRaises(bearing.InputError):
+            bearing.sweep(bearing.Case.default(), vary={"model.kind": "1:2:2"})
+        with self.assertRaises(bearing.InputError):
+            bearing.sweep(bearing.Case.default(), vary={"operation.speed": "1000rpm:3000rpm"})
+
+
+class Sweep(unittest.TestCase):
+    def test_rows_equal_sweep_csv(self):
+        sets = [("solver.duration", "0.25 s"), ("solver.transient", "0.05 s")]
+        vary = {"waviness.inner.0.amplitude": "0um:1um:3", "solver.dt": "5us:405us:2"}
+        with tempfile.TemporaryDirectory() as tmp:
+            cli("sweep", WAVINESS, "--quiet", "--jobs", "2", "--out", tmp, *set_args(sets),
+                *[a for k, v in vary.items() for a in ("--vary", f"{k}={v}")])
+            with open(pathlib.Path(tmp) / "sweep.csv", newline="") as f:
+                expected = list(csv.DictReader(f))
+        rows = bearing.sweep(case_with(WAVINESS, sets), vary, jobs=2, as_dataframe=False)
+        self.assertEqual(len(rows), 6)
+        self.assertEqual(len(rows), len(expected))
+        self.assertEqual([r["status"] for r in rows], ["ok", "failed"] * 3)
+        for row, want in zip(rows, expected):
+            self.assertEqual(list(row), list(want))
+            for key, text in want.items():
+                value = row[key]
+                if key in ("status", "error") or key.endswith("peak_label"):
+                    self.assertEqual(value if value is not None else "", text, key)
+                elif text == "":
+                    self.assertIsNone(value, key)
+                else:
+                    self.assertEqual(value, float(text), key)
+
+    def test_value_lists_equal_ranges(self):
+        case = bearing.Case.default().set("solver.duration", "0.25 s").set(
+            "solver.transient", "0.05 s")
+        a = bearing.sweep(case, {"operation.speed": "1000rpm:2000rpm:2"}, jobs=2,
+                          as_dataframe=False)
+        b = bearing.sweep(case, {"operation.speed": ["1000 rpm", "2000 rpm"]}, jobs=1,
+                          as_dataframe=False)
+        self.assertEqual(a, b)
+
+    def test_dataframe_when_pandas_is_importable(self):
+        stub = types.ModuleType("pandas")  # stands in for pandas, present or not
+        stub.DataFrame = lambda rows: ("frame", rows)
+        saved = sys.modules.get("pandas")
+        sys.modules["pandas"] = stub
+        try:
+            case = bearing.Case.default().set("solver.duration", "0.25 s")
+            kind, rows = bearing.sweep(case, {"operation.speed": ["2000 rpm"]})
+        finally:
+            if saved is None:
+                del sys.modules["pandas"]
+            else:
+                sys.modules["pandas"] = saved
+        self.assertEqual(kind, "frame")
+        self.assertEqual(rows[0]["status"], "ok")
+
+
+class Threads(unittest.TestCase):
+    def test_gil_released_during_run(self):
+        case = bearing.Case.default()
+        done = threading.Event()
+        thread = threading.Thread(target=lambda: (bearing.run(case), done.set()))
+        ticks = 0
+        thread.start()
+        while not done.is_set():
+            ticks += 1
+        thread.join()
+        self.assertGreater(ticks, 1000)
+
+
+if __name__ == "__main__":
+    unittest.main(argv=sys.argv[:1], verbosity=2)
