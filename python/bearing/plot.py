@@ -1132,7 +1132,7 @@ def contact_figure(contact):
             right.set_visible(False)
         mesh = j.get("mesh", {})
         fig.suptitle("%s — %s race, %s geometry: FE contact (bearing-fem)\n"
-                     "%s cells, %s DOFs, %.3g cells per semi-minor axis, %s MPI processes, "
+                     "%s cells, %s DOFs, %.3g cells per semi-minor axis, MPI processes: %s, "
                      "%.3g s wall time" % (
                          contact.name, j.get("race", "?"), j.get("geometry", "?"),
                          mesh.get("cells", "?"), mesh.get("dofs", "?"),
