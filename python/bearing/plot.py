@@ -230,8 +230,16 @@ class Run:
             return int(z)
         return sum(1 for n in self.response.names if n[:1] == "Q" and n[1:].isdigit())
 
-    def title(self, what):
-        return "%s — %s\n%s" % (self.name, what, case_parameters(self.summary, self.case))
+    def title(self, what, extra=None):
+        """'name — what', the case's parameters, and `extra` on a third line."""
+        lines = ["%s — %s" % (self.name, what), case_parameters(self.summary, self.case)]
+        return "\n".join(lines + ([extra] if extra else []))
+
+    def frequency_line(self):
+        fr = self.frequencies
+        return "shaft %.4g Hz · FTF %.4g Hz · BPFO %.4g Hz · BPFI %.4g Hz · BSF %.4g Hz" % (
+            fr.get("shaft", 0), fr.get("ftf", 0), fr.get("bpfo", 0), fr.get("bpfi", 0),
+            fr.get("bsf", 0))
 
 
 def case_name(source, folder):
@@ -602,8 +610,9 @@ def spl_axes(ax, microphones):
         for i, (b, h) in enumerate(zip(bars, heights)):
             b.set_gid("spl:%s:%d" % (key, i + 1))
             if np.isfinite(h):
-                ax.annotate("%.1f" % h, (b.get_x() + b.get_width() / 2, h), xytext=(0, 2),
-                            textcoords="offset points", ha="center", va="bottom", fontsize=8.5)
+                ax.annotate("%.1f" % h, (b.get_x() + b.get_width() / 2, h),
+                            xytext=(0, 2 if h >= 0 else -2), textcoords="offset points",
+                            ha="center", va="bottom" if h >= 0 else "top", fontsize=8.5)
             else:
                 b.set_visible(False)
         values.append(heights)
@@ -683,8 +692,8 @@ def sweep_heatmap_axes(ax, x, y, values, *, xlabel, ylabel, zlabel, labels=None,
                 text = "failed" if not np.isfinite(v) else "%.3g" % v
                 if labels is not None and labels[i][k]:
                     text += "\n" + labels[i][k]
-                ax.text(k, i, text, ha="center", va="center", fontsize=9,
-                        color="k" if np.isfinite(v) and v > middle else "w")
+                color = "0.3" if not np.isfinite(v) else "k" if v > middle else "w"
+                ax.text(k, i, text, ha="center", va="center", fontsize=9, color=color)
     ax.set_xlabel(xlabel)
     ax.set_ylabel(ylabel)
     return mesh
@@ -776,12 +785,8 @@ def spectrum_figure(run):
                          % (name, len(peaks)))
         for ax in axes[len(channels):]:
             ax.set_visible(False)
-        fr = run.frequencies
-        fig.suptitle(run.title(
-            "amplitude spectra (window %s, from t = %.3g s)   shaft %.4g Hz, FTF %.4g Hz, "
-            "BPFO %.4g Hz, BPFI %.4g Hz, BSF %.4g Hz" % (
-                window, run.transient, fr.get("shaft", 0), fr.get("ftf", 0), fr.get("bpfo", 0),
-                fr.get("bpfi", 0), fr.get("bsf", 0))))
+        fig.suptitle(run.title("amplitude spectra (window %s, from t = %.3g s)"
+                               % (window, run.transient), run.frequency_line()))
         fig.tight_layout()
     return fig
 
@@ -816,9 +821,7 @@ def envelope_figure(run):
                           _wrap(diagnosis.get("reason", ""), 70)),
                           transform=axes[-1].transAxes, ha="right", va="top", fontsize=9,
                           bbox=dict(boxstyle="round", fc="white", ec="0.6", alpha=0.9))
-        fig.suptitle(run.title("envelope spectra   BPFO %.4g Hz, BPFI %.4g Hz, BSF %.4g Hz, "
-                               "shaft %.4g Hz" % (fr.get("bpfo", 0), fr.get("bpfi", 0),
-                                                  fr.get("bsf", 0), fr.get("shaft", 0))))
+        fig.suptitle(run.title("envelope spectra of the accelerations", run.frequency_line()))
         fig.tight_layout()
     return fig
 
@@ -1011,6 +1014,9 @@ def sweep_figures(sweep):
     keys = sweep.varied
     figures = {}
     failed = int((~sweep.ok).sum())
+    if not sweep.ok.any():
+        raise FolderError("%s: no case succeeded, nothing to plot (case 1: %s)" % (
+            sweep.path, sweep.rows[0].get("error", "?") if sweep.rows else "no rows"))
     subtitle = "%d cases%s; varied: %s" % (
         len(sweep.rows), " (%d failed)" % failed if failed else "", ", ".join(keys))
     if len(keys) > 2:
@@ -1178,10 +1184,11 @@ def plot_folder(folder, out=None, fmt="png"):
         save(fig, tmp)
         os.replace(tmp, path)
         written.append(path)
-    for name in KNOWN_NAMES:  # figures an earlier call wrote that this folder no longer gives
-        path = os.path.join(out, "%s.%s" % (name, fmt))
-        if name not in figures and os.path.exists(path):
-            os.remove(path)
+    for entry in os.listdir(out):  # figures an earlier call wrote that this folder no longer gives
+        name, ext = os.path.splitext(entry)
+        ours = name in KNOWN_NAMES or (name.startswith("sweep_") and "_vs_" in name)
+        if ext == "." + fmt and ours and name not in figures:
+            os.remove(os.path.join(out, entry))
     return written
 
 
