@@ -951,7 +951,7 @@ def key_display(key):
 
 STATISTIC_SHORT = {"rms": "RMS", "ptp": "peak to peak", "kurtosis": "kurtosis",
                    "crest": "crest factor",
-                   "peak_frequency": "frequency of the largest peak"}
+                   "peak_frequency": "largest peak"}
 
 
 def statistic_display(channel, statistic):
@@ -1031,8 +1031,10 @@ def sweep_figures(sweep):
                 column = "%s.%s" % (channel, statistic)
                 labels = sweep.text("%s.peak_label" % channel) if statistic == "peak_frequency" \
                     else None
-                _sweep_panel(axes[i][k], sweep, keys, column, label, factor, labels=labels,
-                             gid="sweep:" + column)
+                drawn = _sweep_panel(axes[i][k], sweep, keys, column, label, factor,
+                                     labels=labels, gid="sweep:" + column)
+                if statistic == "peak_frequency" and len(keys) == 1:
+                    drawn.set_linestyle("none")  # the largest peak jumps between lines
                 axes[i][k].set_title(channel_title(channel))
             for i in range(nrows):
                 for k in range(ncols):
