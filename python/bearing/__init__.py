@@ -1,5 +1,8 @@
 """bearing: the rolling-bearing vibration toolkit (bearing-sim) from Python.
 
+``bearing.plot`` (figures of runs, sweeps and FE contact outputs; also the ``bearing-plot``
+program) is pure Python (NumPy, matplotlib) and works without the compiled extension.
+
 A thin layer (pybind11) over the C++ library the command line uses: the same case files and
 overrides, the same simulation and analysis, the same numbers to the last bit. Nothing physical is
 computed in Python.
@@ -43,6 +46,8 @@ except ImportError as _error:  # the .py files are there but the extension was n
     _import_error = _error
 
     def __getattr__(name):
+        if name not in __all__:  # e.g. the submodule bearing.plot, which needs no extension
+            raise AttributeError(f"module 'bearing' has no attribute {name!r}")
         raise ImportError(
             f"bearing.{name}: the compiled extension bearing._bearing is not available "
             f"({_import_error}). Build it with the project's CMake (BEARING_WITH_PYTHON=ON; "
