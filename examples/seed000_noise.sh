@@ -17,7 +17,7 @@ source "$here/studies_lib.sh"
 root=$(dirname "$here")
 out=${1:-out/studies}
 sim=${BEARING_SIM:-$root/build/lumped/bearing-sim}
-[[ -x $sim ]] || { echo "seed000_noise.sh: $sim not found; build first (see README.md)" >&2; exit 2; }
+[[ -x $sim ]] || { echo "seed000_noise.sh: $sim not found; build first (bash setup.sh, see the top-level README.md)" >&2; exit 2; }
 mkdir -p "$out/seed000"
 d=$(cd "$out/seed000" && pwd)
 case0=$here/seed000_608_quasistatic.toml

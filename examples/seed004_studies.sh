@@ -29,7 +29,7 @@ root=$(dirname "$here")
 out=${1:-out/studies/seed004}
 sim=${BEARING_SIM:-$root/build/lumped/bearing-sim}
 jobs=${JOBS:-2}
-[[ -x $sim ]] || { echo "seed004_studies.sh: $sim not found; build first (see README.md)" >&2; exit 2; }
+[[ -x $sim ]] || { echo "seed004_studies.sh: $sim not found; build first (bash setup.sh, see the top-level README.md)" >&2; exit 2; }
 mkdir -p "$out"
 out=$(cd "$out" && pwd)
 start=$SECONDS

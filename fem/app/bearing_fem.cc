@@ -423,8 +423,9 @@ int main(int argc, char** argv) {
   ContactOptions o;
   auto* contact = app.add_subcommand(
       "contact",
-      "Hertz-reduced ball-race contact by FE: force-approach curve, K, exponent, "
-      "semi-axes, compared with the analytic Hertz solution");
+      "Ball-race contact by FE (--geometry hertz: the Hertz-reduced problem; groove: the ring "
+      "segment with its true groove): force-approach curve, K, exponent, semi-axes, compared "
+      "with the analytic Hertz solution");
   contact->add_option("CASE", o.case_path, "TOML case file (default: the built-in 6308 case)");
   contact->add_option("--set", o.sets, "Override a case-file value, TABLE.KEY=VALUE");
   contact->add_option("--race", o.race, "inner | outer")->required();
@@ -481,7 +482,8 @@ int main(int argc, char** argv) {
   calibrate->add_option("--cells", co.cells, "Finest cells per semi-minor axis b at Q_max")
       ->check(CLI::PositiveNumber);
   calibrate->add_option("--grading", co.grading, "Cell size >= distance / grading");
-  calibrate->add_option("--steps", co.steps, "Approach steps per race (default 3)")->check(CLI::Range(2, 100));
+  calibrate->add_option("--steps", co.steps, "Approach steps per race (default 3)")
+      ->check(CLI::Range(2, 100));
   calibrate->add_option("--load-min", co.load_min, "Smallest load [N] (default: Q_max / 10)");
   calibrate->add_option("--load-max", co.load_max, "Largest load [N] (default: Q_max of the case)");
   calibrate->add_flag("--quiet", co.quiet, "No progress output");

@@ -25,7 +25,8 @@
 namespace {
 
 constexpr const char* kCaseHelp =
-    "TOML case file (see README.md and examples/); without it the built-in default case is used: "
+    "TOML case file (see docs/case-files.md and examples/); without it the built-in default case "
+    "is used: "
     "a 6308 at 2000 rpm under a 20 N downward radial load";
 
 std::vector<bearing::Override> overrides_of(const std::vector<std::string>& sets) {
