@@ -1,0 +1,83 @@
+"""Folders to figure files, and the command line (bearing-plot, python3 -m bearing.plot)."""
+
+import argparse
+import os
+import sys
+
+from matplotlib.figure import Figure
+
+from .common import DPI, FORMATS, FolderError, STATISTICS
+from .folders import detect, load_contact, load_run, load_sweep
+from .run_figures import run_figures
+from .sweep_figures import sweep_figures
+from .contact_figure import contact_figure
+
+
+# --- folders and the command line ------------------------------------------------------------
+
+KNOWN_NAMES = ("time", "orbit", "spectrum", "envelope", "ball_loads", "spl", "force_approach",
+               "sweep_spl") + tuple("sweep_" + s for s in STATISTICS)
+
+
+def figures_of(folder):
+    """(kind, name -> Figure) of a run, sweep or contact folder."""
+    kind = detect(folder)
+    if kind == "run":
+        return kind, run_figures(load_run(folder))
+    if kind == "sweep":
+        return kind, sweep_figures(load_sweep(folder))
+    return kind, {"force_approach": contact_figure(load_contact(folder))}
+
+
+def save(fig, path):
+    """Writes the figure at DPI (its size in pixels is SIZES x DPI)."""
+    fig.savefig(path, dpi=DPI, format=os.path.splitext(path)[1][1:])
+
+
+def plot_folder(folder, out=None, fmt="png"):
+    """Writes the folder's figures to `out` (default FOLDER/plots); returns the paths written."""
+    if fmt not in FORMATS:
+        raise FolderError("format %r: expected one of %s" % (fmt, ", ".join(FORMATS)))
+    kind, figures = figures_of(folder)
+    out = out or os.path.join(folder, "plots")
+    os.makedirs(out, exist_ok=True)
+    written = []
+    for name, fig in figures.items():
+        path = os.path.join(out, "%s.%s" % (name, fmt))
+        tmp = os.path.join(out, ".%s.tmp.%s" % (name, fmt))
+        save(fig, tmp)
+        os.replace(tmp, path)
+        written.append(path)
+    for entry in os.listdir(out):  # figures an earlier call wrote that this folder no longer gives
+        name, ext = os.path.splitext(entry)
+        ours = name in KNOWN_NAMES or (name.startswith("sweep_") and "_vs_" in name)
+        if ext == "." + fmt and ours and name not in figures:
+            os.remove(os.path.join(out, entry))
+    return written
+
+
+def main(argv=None):
+    parser = argparse.ArgumentParser(
+        prog="bearing-plot",
+        description="Figures (PNG, SVG or PDF) of a bearing-sim run or sweep folder or of a "
+                    "bearing-fem contact output; the kind is recognised from the files.",
+        epilog="Run: time, orbit, spectrum, and with their outputs envelope, ball_loads, spl. "
+               "Sweep: sweep_<statistic>, sweep_spl. Contact: force_approach.")
+    parser.add_argument("folder", metavar="RUN_DIR|SWEEP_DIR|CONTACT_DIR")
+    parser.add_argument("--out", metavar="DIR", help="where the figures go (default FOLDER/plots)")
+    parser.add_argument("--format", choices=FORMATS, default="png", help="file format (png)")
+    parser.add_argument("--quiet", action="store_true", help="print nothing on success")
+    args = parser.parse_args(argv)
+    try:
+        written = plot_folder(args.folder, args.out, args.format)
+    except FolderError as e:
+        print("bearing-plot: error: %s" % e, file=sys.stderr)
+        return 2
+    if not args.quiet:
+        for path in written:
+            print(path)
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
