@@ -203,6 +203,32 @@ struct Row {
   std::vector<double> times;
 };
 
+// The table of minima and medians, then the ratios the targets are judged on (row order of main).
+void print_table(const std::vector<Row>& rows, int rounds, bool with_runs) {
+  std::printf("contact loop: simd runs as %s\n\n", bearing::simd_target().c_str());
+  std::printf("| row | rounds | min [ms] | median [ms] | per force evaluation (min) [ns] |\n");
+  std::printf("| --- | ---: | ---: | ---: | ---: |\n");
+  for (const Row& r : rows) {
+    std::printf("| %s | %d | %.2f | %.2f | ", r.name.c_str(), rounds, 1e3 * minimum(r.times),
+                1e3 * median(r.times));
+    if (r.evals > 0)
+      std::printf("%.1f |\n", 1e9 * minimum(r.times) / r.evals);
+    else
+      std::printf("– |\n");
+  }
+  auto ratio = [&](int a, int b) { return minimum(rows[a].times) / minimum(rows[b].times); };
+  std::printf(
+      "\nratios of minima: force simd/scalar %.3f (scalar/simd %.2fx); RK4 simd/scalar "
+      "%.3f; RK4 simd / bare loop %.3f; RK4 scalar / bare loop %.3f",
+      ratio(0, 1), ratio(1, 0), ratio(2, 3), ratio(2, 4), ratio(3, 4));
+  std::printf("; seed 004 balls/2-DOF: simd %.3f, scalar %.3f; balls simd/scalar %.3f", ratio(7, 5),
+              ratio(8, 6), ratio(7, 8));
+  if (with_runs)
+    std::printf("; run simd / bare loop %.3f; run scalar / bare loop %.3f", ratio(9, 4),
+                ratio(10, 4));
+  std::printf("\n");
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -318,27 +344,6 @@ int main(int argc, char** argv) {
   for (int i = 0; i < rounds; ++i)
     for (Row& r : rows) r.times.push_back(seconds(r.body));
 
-  std::printf("contact loop: simd runs as %s\n\n", bearing::simd_target().c_str());
-  std::printf("| row | rounds | min [ms] | median [ms] | per force evaluation (min) [ns] |\n");
-  std::printf("| --- | ---: | ---: | ---: | ---: |\n");
-  for (const Row& r : rows) {
-    std::printf("| %s | %d | %.2f | %.2f | ", r.name.c_str(), rounds, 1e3 * minimum(r.times),
-                1e3 * median(r.times));
-    if (r.evals > 0)
-      std::printf("%.1f |\n", 1e9 * minimum(r.times) / r.evals);
-    else
-      std::printf("– |\n");
-  }
-  auto ratio = [&](int a, int b) { return minimum(rows[a].times) / minimum(rows[b].times); };
-  std::printf(
-      "\nratios of minima: force simd/scalar %.3f (scalar/simd %.2fx); RK4 simd/scalar "
-      "%.3f; RK4 simd / bare loop %.3f; RK4 scalar / bare loop %.3f",
-      ratio(0, 1), ratio(1, 0), ratio(2, 3), ratio(2, 4), ratio(3, 4));
-  std::printf("; seed 004 balls/2-DOF: simd %.3f, scalar %.3f; balls simd/scalar %.3f", ratio(7, 5),
-              ratio(8, 6), ratio(7, 8));
-  if (!sim.empty())
-    std::printf("; run simd / bare loop %.3f; run scalar / bare loop %.3f", ratio(9, 4),
-                ratio(10, 4));
-  std::printf("\n");
+  print_table(rows, rounds, !sim.empty());
   return 0;
 }
