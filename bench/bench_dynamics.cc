@@ -44,6 +44,7 @@
 #include "bearing/signal/statistics.h"
 #include "bearing/simulation.h"
 #include "bearing/solvers/integrator.h"
+#include "seed004_case.h"
 
 namespace {
 
@@ -87,34 +88,8 @@ const Problem& three_dof() {
   return p;
 }
 
-// Issue 7: seed 004's SKF 6304 (examples/seed004_6304.toml: 2000 rpm, 2000 N along +x, clearance
-// 30 um, m = 0.4 kg, c = 350 N s/m), read from the example file itself. The 2-DOF variant is the
-// same file with model.kind = "2dof" and without its [cage] and [ball] tables, which the case
-// reader accepts only for model.kind = "balls".
-std::string seed004_path() {
-  return std::string(BEARING_EXAMPLES_DIR) + "/seed004_6304.toml";
-}
-
-std::string seed004_toml(bool balls) {
-  std::ifstream in(seed004_path());
-  if (!in) throw std::runtime_error("cannot read " + seed004_path());
-  std::string text, line;
-  bool skip = false;
-  while (std::getline(in, line)) {
-    const auto first = line.find_first_not_of(" \t");
-    if (first != std::string::npos && line[first] == '[') {
-      const std::string header = line.substr(first, line.find(']', first) + 1 - first);
-      skip = !balls && (header == "[cage]" || header == "[ball]");
-    }
-    if (!skip) text += line + '\n';
-  }
-  return text;
-}
-
-Case seed004_case(bool balls, std::vector<Override> overrides = {}) {
-  if (!balls) overrides.insert(overrides.begin(), {"model.kind", "2dof"});
-  return bearing::parse_case(seed004_toml(balls), seed004_path(), overrides, BEARING_EXAMPLES_DIR);
-}
+using bench::seed004_case;
+using bench::seed004_path;
 
 // The three variants timed: the 2-DOF model, and the ball-DOF model with cage slip 0.02 without
 // and with traction (mu_m = 0.01, the example's); the example's own run has slip 0.

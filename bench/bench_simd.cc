@@ -38,6 +38,7 @@
 #include "bearing/models/bearing_model.h"
 #include "bearing/simulation.h"
 #include "bearing/solvers/integrator.h"
+#include "seed004_case.h"
 
 extern char** environ;
 
@@ -163,37 +164,14 @@ bool run_process(const std::string& sim, const char* loop, const std::string& ou
          WEXITSTATUS(status) == 0;
 }
 
-// Seed 004's 6304 as bench_dynamics.cc reads it: the example file, its [cage] and [ball] tables
-// dropped for the 2-DOF model.
-std::string seed004_toml(bool balls) {
-  const std::string path = std::string(BEARING_EXAMPLES_DIR) + "/seed004_6304.toml";
-  std::FILE* f = std::fopen(path.c_str(), "r");
-  if (!f) throw std::runtime_error("cannot read " + path);
-  std::string text, line;
-  char buf[4096];
-  bool skip = false;
-  while (std::fgets(buf, sizeof buf, f)) {
-    line = buf;
-    const auto first = line.find_first_not_of(" \t");
-    if (first != std::string::npos && line[first] == '[') {
-      const std::string header = line.substr(first, line.find(']', first) + 1 - first);
-      skip = !balls && (header == "[cage]" || header == "[ball]");
-    }
-    if (!skip) text += line;
-  }
-  std::fclose(f);
-  return text;
-}
-
+// Seed 004's 6304 (seed004_case.h), with the contact loop and, for the balls, slip and traction.
 bearing::Case seed004(bool balls, const char* loop) {
   std::vector<bearing::Override> o = {{"solver.contact_loop", loop}};
   if (balls) {
     o.push_back({"cage.slip", "0.02"});
     o.push_back({"cage.friction", "0.01"});
-  } else {
-    o.push_back({"model.kind", "2dof"});
   }
-  return bearing::parse_case(seed004_toml(balls), "seed004_6304.toml", o, BEARING_EXAMPLES_DIR);
+  return bench::seed004_case(balls, o);
 }
 
 struct Row {
