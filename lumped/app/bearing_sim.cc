@@ -122,13 +122,20 @@ std::shared_ptr<const bearing::SweepDesign> design_of(const SweepOptions& o) {
 // `sweep`: every case of the design (or of its --part), in parallel; sweep.csv streamed to a
 // temporary file and renamed into place only when complete; --resume DIR continues one.
 int sweep_command(const SweepOptions& o, bool tty) {
+  const bool resume = !o.resume.empty();
+  if (resume && (!o.vary.empty() || !o.sample.empty() || !o.cases.empty() || !o.sets.empty() ||
+                 !o.case_path.empty() || !o.part.empty() || !o.out_dir.empty()))
+    throw bearing::InputError("--resume " + o.resume +
+                              " takes the design, case and part from its sweep.design.json; give "
+                              "only --jobs and --quiet with it");
+  if (!resume && o.out_dir.empty()) throw bearing::InputError("sweep: --out DIR is required");
   const auto progress = [&](std::size_t done, std::size_t total) {
     if (tty) std::fprintf(stderr, "\rsweep %zu/%zu cases", done, total);
     if (tty && done == total) std::fprintf(stderr, "\n");
   };
   bearing::SweepCounts counts;
   std::string out_dir = o.out_dir;
-  if (!o.resume.empty()) {
+  if (resume) {
     counts = bearing::resume_sweep(o.resume, o.jobs, progress);
     out_dir = o.resume;
   } else {
@@ -268,18 +275,7 @@ int main(int argc, char** argv) {
       return 0;
     }
     if (*run) return run_command(case_path, overrides_of(sets), out_dir, json, quiet, tty);
-    if (*sweep) {
-      const bool resume = !so.resume.empty();
-      if (resume &&
-          (!so.vary.empty() || !so.sample.empty() || !so.cases.empty() || !so.sets.empty() ||
-           !so.case_path.empty() || !so.part.empty() || !so.out_dir.empty()))
-        throw bearing::InputError(
-            "--resume " + so.resume +
-            " takes the design, case and part from its sweep.design.json; give only --jobs "
-            "and --quiet with it");
-      if (!resume && so.out_dir.empty()) throw bearing::InputError("sweep: --out DIR is required");
-      return sweep_command(so, tty);
-    }
+    if (*sweep) return sweep_command(so, tty);
     if (*merge) {
       const bearing::SweepCounts counts = bearing::merge_sweeps(merge_out, merge_dirs);
       std::cout << "merge: " << counts.cases << " cases, " << counts.failed << " failed; wrote "

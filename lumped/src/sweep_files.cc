@@ -195,7 +195,6 @@ SweepCounts write_sweep(const std::string& dir, const SweepPlan& plan, int threa
       if (kept.header.empty()) kept.bytes = 0;
       if (fs::exists(tmp)) fs::resize_file(tmp, kept.bytes);
     } else {
-      fs::remove(file, ec);
       write_text(record, sweep_record(plan), dir);
     }
     std::ofstream f(tmp, std::ios::binary | (resume ? std::ios::app : std::ios::trunc));
@@ -290,6 +289,10 @@ std::vector<MergePart> check_parts(const std::vector<std::string>& dirs) {
 }  // namespace
 
 SweepCounts merge_sweeps(const std::string& out, const std::vector<std::string>& dirs) {
+  std::error_code ec;
+  for (const auto& d : dirs)
+    if (fs::equivalent(out, d, ec))
+      throw InputError("merge: OUT " + out + " is one of the parts; write the merge elsewhere");
   const std::vector<MergePart> parts = check_parts(dirs);
   const std::size_t keys =
       design_from_json(parts.front().record.at("design").dump())->keys().size();
@@ -305,7 +308,6 @@ SweepCounts merge_sweeps(const std::string& out, const std::vector<std::string>&
                        parts.front().dir + "/sweep.csv");
     if (fields(h) > fields(header) || header.empty()) header = h;
   }
-  std::error_code ec;
   fs::create_directories(out, ec);
   if (ec) throw InputError("merge " + out + ": cannot create the folder (" + ec.message() + ")");
   const fs::path tmp = fs::path(out) / kPartial;

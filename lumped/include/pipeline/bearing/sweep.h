@@ -159,7 +159,8 @@ SweepPlan read_sweep_record(const std::string& dir);
 /// renames it to DIR/sweep.csv when every row is in. A whole sweep then removes the record (only
 /// sweep.csv is left); a part keeps it for `merge`. With `resume`, the complete rows already in
 /// the temporary file are kept (a truncated last line is dropped) and only the others run.
-/// `runner` defaults to run_sweep. Throws InputError.
+/// On an error the temporary file and the record stay, for --resume. `runner` defaults to
+/// run_sweep (an MPI runner with its signature may take its place). Throws InputError.
 SweepCounts write_sweep(const std::string& dir, const SweepPlan& plan, int threads,
                         const SweepProgress& progress = {}, const SweepRunner& runner = {},
                         bool resume = false);
