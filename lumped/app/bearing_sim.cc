@@ -4,9 +4,11 @@
 #include <unistd.h>
 
 #include <chrono>
+#include <cstdint>
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -86,29 +88,99 @@ int run_command(const std::string& case_path, const std::vector<bearing::Overrid
   return 0;
 }
 
-// `sweep`: every point of the --vary grid, in parallel; sweep.csv streamed to a temporary file
-// and renamed into place only when complete.
-int sweep_command(const std::string& case_path, const std::vector<bearing::Override>& base,
-                  const std::vector<std::string>& vary, const std::string& out_dir, int jobs,
-                  bool tty) {
-  std::vector<bearing::SweepAxis> axes;
-  for (const auto& v : vary) axes.push_back(bearing::parse_vary(v));
-  // Check the base case before starting many runs of it.
-  load(case_path, base);
-  const auto loader = [&](const std::vector<bearing::Override>& point) {
-    auto all = base;
-    all.insert(all.end(), point.begin(), point.end());
-    return load(case_path, all);
-  };
+constexpr const char* kVersion = "bearing-sim 0.1.0";
+
+// The sweep options of the command line, as given.
+struct SweepOptions {
+  std::vector<std::string> vary, sample, sets;
+  std::size_t samples = 0;
+  std::uint64_t seed = 1;
+  std::string cases, part, resume, out_dir, case_path;
+  int jobs = 0;
+};
+
+// The design the options name: --vary (grid), --sample (random) or --cases (list), one of them.
+std::shared_ptr<const bearing::SweepDesign> design_of(const SweepOptions& o) {
+  const int kinds = !o.vary.empty() + !o.sample.empty() + !o.cases.empty();
+  if (kinds != 1)
+    throw bearing::InputError(
+        "sweep: give one design: --vary KEY=FROM:TO:N (grid), --sample KEY=DIST(...) with "
+        "--samples N (random) or --cases FILE.csv (list); they do not mix");
+  if (!o.vary.empty()) {
+    std::vector<bearing::SweepAxis> axes;
+    for (const auto& v : o.vary) axes.push_back(bearing::parse_vary(v));
+    return bearing::grid_design(std::move(axes));
+  }
+  if (!o.cases.empty()) return bearing::list_design_from_csv(o.cases);
+  if (o.samples == 0)
+    throw bearing::InputError("--sample needs --samples N (the number of cases, N ≥ 1)");
+  std::vector<bearing::SweepSample> samples;
+  for (const auto& s : o.sample) samples.push_back(bearing::parse_sample(s));
+  return bearing::random_design(std::move(samples), o.samples, o.seed);
+}
+
+// `sweep`: every case of the design (or of its --part), in parallel; sweep.csv streamed to a
+// temporary file and renamed into place only when complete; --resume DIR continues one.
+int sweep_command(const SweepOptions& o, bool tty) {
+  const bool resume = !o.resume.empty();
+  if (resume && (!o.vary.empty() || !o.sample.empty() || !o.cases.empty() || !o.sets.empty() ||
+                 !o.case_path.empty() || !o.part.empty() || !o.out_dir.empty()))
+    throw bearing::InputError("--resume " + o.resume +
+                              " takes the design, case and part from its sweep.design.json; give "
+                              "only --jobs and --quiet with it");
+  if (!resume && o.out_dir.empty()) throw bearing::InputError("sweep: --out DIR is required");
   const auto progress = [&](std::size_t done, std::size_t total) {
     if (tty) std::fprintf(stderr, "\rsweep %zu/%zu cases", done, total);
     if (tty && done == total) std::fprintf(stderr, "\n");
   };
-  const bearing::SweepCounts counts = bearing::write_sweep(out_dir, axes, loader, jobs, progress);
+  bearing::SweepCounts counts;
+  std::string out_dir = o.out_dir;
+  if (resume) {
+    counts = bearing::resume_sweep(o.resume, o.jobs, progress);
+    out_dir = o.resume;
+  } else {
+    bearing::SweepPlan plan;
+    plan.design = design_of(o);
+    plan.base = bearing::sweep_base(o.case_path, overrides_of(o.sets));
+    if (!o.part.empty()) plan.part = bearing::parse_part(o.part);
+    plan.program = kVersion;
+    counts = bearing::write_sweep(out_dir, plan, o.jobs, progress);
+  }
   const std::filesystem::path file = std::filesystem::path(out_dir) / "sweep.csv";
   std::cout << "sweep: " << counts.cases << " cases, " << counts.failed << " failed; wrote "
             << file.string() << "\n";
   return counts.failed == counts.cases ? 3 : 0;
+}
+
+// The sweep options on `cmd`.
+void add_sweep_options(CLI::App* cmd, SweepOptions& o) {
+  cmd->add_option(
+         "--vary", o.vary,
+         "Grid design: KEY=FROM:TO:N, N values from FROM to TO (units allowed), repeat "
+         "for more keys (Cartesian product), e.g. --vary operation.speed=1000rpm:3000rpm:5")
+      ->allow_extra_args(false);
+  cmd->add_option("--sample", o.sample,
+                  "Random design: KEY=uniform(a, b) | normal(mean, sd) | loguniform(a, b) "
+                  "(units allowed), repeat for more keys; with --samples and --seed")
+      ->allow_extra_args(false);
+  cmd->add_option("--samples", o.samples, "Number of cases of a random design")
+      ->check(CLI::PositiveNumber);
+  cmd->add_option("--seed", o.seed,
+                  "Seed of a random design (default 1): the same seed gives the same cases")
+      ->capture_default_str();
+  cmd->add_option("--cases", o.cases,
+                  "List design: a CSV file, header = case-file keys, one row per case (SI "
+                  "numbers or values with units)");
+  cmd->add_option("--part", o.part,
+                  "K/N: run only the K-th (1..N) of N contiguous blocks of the cases; the parts "
+                  "are joined by `bearing-sim merge`");
+  cmd->add_option("--resume", o.resume,
+                  "Continue the sweep killed in DIR: the design is read from "
+                  "DIR/sweep.design.json, finished rows are kept, the rest run");
+  cmd->add_option("--out", o.out_dir,
+                  "Folder for sweep.csv and, while running (and for a --part), sweep.design.json");
+  cmd->add_option("--jobs", o.jobs, "Parallel cases (default: all cores)")
+      ->check(CLI::NonNegativeNumber);
 }
 
 }  // namespace
@@ -123,16 +195,14 @@ int main(int argc, char** argv) {
       "\"15.081 mm\", \"2000 rpm\", \"0.05 kN\", \"208 GPa\", \"30 deg\"."};
   app.require_subcommand(1);
   // The instruction set of the SIMD contact loop on this CPU (bearing/contact_loop.h).
-  app.set_version_flag("--version",
-                       "bearing-sim 0.1.0 (contact loop: simd as " + bearing::simd_target() + ")");
+  app.set_version_flag("--version", std::string(kVersion) + " (contact loop: simd as " +
+                                        bearing::simd_target() + ")");
 
   std::string case_path;
   std::vector<std::string> sets;
   bool json = false;
   bool quiet = false;
   std::string out_dir;
-  std::vector<std::string> vary;
-  int jobs = 0;
 
   auto* info = app.add_subcommand(
       "info",
@@ -163,23 +233,26 @@ int main(int argc, char** argv) {
   run->add_flag("--json", json, "Print summary.json instead of the readable summary");
   run->add_flag("--quiet", quiet, "No progress on stderr (also off when stderr is not a terminal)");
 
+  SweepOptions so;
   auto* sweep = app.add_subcommand(
       "sweep",
-      "Run a case for every combination of the --vary values, in parallel, and write "
-      "DIR/sweep.csv: "
-      "the varied values (SI), status, error, then each ring channel's rms, ptp, kurtosis, crest "
-      "and largest peak. A failed case is reported in its row; the others go on.");
-  add_case_options(sweep, case_path, sets);
-  sweep
-      ->add_option("--vary", vary,
-                   "KEY=FROM:TO:N, N values from FROM to TO (units allowed), repeat for more keys "
-                   "(Cartesian product), e.g. --vary operation.speed=1000rpm:3000rpm:5")
-      ->required()
-      ->allow_extra_args(false);
-  sweep->add_option("--out", out_dir, "Folder for sweep.csv (created if missing)")->required();
-  sweep->add_option("--jobs", jobs, "Parallel cases (default: all cores)")
-      ->check(CLI::NonNegativeNumber);
+      "Run a case for every point of a design (--vary grid, --sample random or --cases list), "
+      "in parallel, and write DIR/sweep.csv: the design's values (SI), status, error, then each "
+      "ring channel's rms, ptp, kurtosis, crest and largest peak. A failed case is reported in "
+      "its row; the others go on. A killed sweep continues with --resume DIR.");
+  add_case_options(sweep, so.case_path, so.sets);
+  add_sweep_options(sweep, so);
   sweep->add_flag("--quiet", quiet, "No progress on stderr");
+
+  std::string merge_out;
+  std::vector<std::string> merge_dirs;
+  auto* merge = app.add_subcommand(
+      "merge",
+      "Join the folders of the parts (--part K/N) of one sweep into OUT/sweep.csv, the same "
+      "file as one run of the whole design; refuses parts of different designs, missing or "
+      "repeated parts");
+  merge->add_option("OUT", merge_out, "Folder for the merged sweep.csv")->required();
+  merge->add_option("DIRS", merge_dirs, "The parts' folders")->required();
 
   auto* presets = app.add_subcommand("presets", "List the catalogue bearings and their sources");
 
@@ -202,7 +275,13 @@ int main(int argc, char** argv) {
       return 0;
     }
     if (*run) return run_command(case_path, overrides_of(sets), out_dir, json, quiet, tty);
-    if (*sweep) return sweep_command(case_path, overrides_of(sets), vary, out_dir, jobs, tty);
+    if (*sweep) return sweep_command(so, tty);
+    if (*merge) {
+      const bearing::SweepCounts counts = bearing::merge_sweeps(merge_out, merge_dirs);
+      std::cout << "merge: " << counts.cases << " cases, " << counts.failed << " failed; wrote "
+                << (std::filesystem::path(merge_out) / "sweep.csv").string() << "\n";
+      return 0;
+    }
   } catch (const bearing::InputError& e) {
     std::cerr << "bearing-sim: error: " << e.what() << "\n";
     return 2;

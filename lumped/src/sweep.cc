@@ -22,18 +22,6 @@ namespace fs = std::filesystem;
 
 namespace {
 
-std::string si_text(double v, const SweepAxis& axis) {
-  char buf[64];
-  if (axis.integer) {
-    std::snprintf(buf, sizeof buf, "%lld", static_cast<long long>(std::llround(v)));
-    return buf;
-  }
-  std::snprintf(buf, sizeof buf, "%.17g", v);
-  const std::string unit(si_unit(axis.dimension));
-  // Angles and speeds need a unit even in SI; others read plain numbers as SI.
-  return unit.empty() ? std::string(buf) : "\"" + std::string(buf) + " " + unit + "\"";
-}
-
 double parse_end(const std::string& text, const SweepAxis& axis, const std::string& what) {
   const std::string key = "--vary " + axis.key + " (" + what + ")";
   if (axis.integer) {
@@ -134,7 +122,8 @@ SweepPoint sweep_point(const std::vector<SweepAxis>& axes, std::size_t index) {
   for (std::size_t a = 0; a < axes.size(); ++a) {
     const double v = axes[a].values[digit[a]];
     p.values.push_back(v);
-    p.overrides.push_back({axes[a].key, si_text(v, axes[a])});
+    p.overrides.push_back(
+        {axes[a].key, sweep_value_text(v, {axes[a].key, axes[a].dimension, axes[a].integer})});
   }
   return p;
 }
@@ -231,6 +220,27 @@ SweepCsvWriter::SweepCsvWriter(const std::vector<SweepAxis>& axes,
                                std::function<void(std::string_view)> out)
     : out_(std::move(out)) {
   for (const auto& a : axes) keys_.push_back(a.key);
+}
+
+SweepCsvWriter::SweepCsvWriter(std::vector<std::string> keys,
+                               std::function<void(std::string_view)> out)
+    : keys_(std::move(keys)), out_(std::move(out)) {}
+
+// The header is: keys, status, error, six fields per ring channel (the first `<ch>.rms`), three
+// per microphone (`mic<i>.spl_total` …).
+void SweepCsvWriter::continue_after(std::string_view header) {
+  started_ = true;
+  std::size_t start = 0;
+  for (;;) {
+    const auto comma = header.find(',', start);
+    const std::string_view field = header.substr(start, comma - start);
+    constexpr std::string_view rms = ".rms", spl = ".spl_total";
+    if (field.size() > rms.size() && field.substr(field.size() - rms.size()) == rms)
+      channels_.emplace_back(field.substr(0, field.size() - rms.size()));
+    if (field.size() > spl.size() && field.substr(field.size() - spl.size()) == spl) ++microphones_;
+    if (comma == std::string_view::npos) break;
+    start = comma + 1;
+  }
 }
 
 void SweepCsvWriter::add(const SweepRow& row) {

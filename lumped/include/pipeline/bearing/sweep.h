@@ -2,32 +2,21 @@
 // `bearing-sim sweep`: many variants of one case, run in parallel, one summary row each.
 
 #include <functional>
+#include <memory>
 #include <string>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 #include "bearing/case_file.h"
 #include "bearing/simulation.h"
+#include "bearing/sweep_design.h"
 
 namespace bearing {
-
-/// One varied key: `KEY=FROM:TO:N`, N values spaced linearly from FROM to TO inclusive.
-struct SweepAxis {
-  std::string key;  ///< case-file key, e.g. "operation.speed", "waviness.inner.0.amplitude"
-  std::vector<double> values;  ///< SI values
-  Dimension dimension = Dimension::dimensionless;
-  bool integer = false;  ///< the key takes whole numbers (values must come out whole)
-};
 
 /// Parses `KEY=FROM:TO:N`; FROM and TO may carry units ("1000rpm:3000rpm:5"), N in 1…100000.
 /// Throws InputError naming `--vary`, the text and what is allowed.
 SweepAxis parse_vary(std::string_view text);
-
-/// One case of the sweep: the values of every axis and the overrides that set them.
-struct SweepPoint {
-  std::vector<double> values;
-  std::vector<Override> overrides;
-};
 
 /// The number of cases: the product of the axes' sizes (0 without axes). Throws InputError if
 /// it does not fit a std::size_t.
@@ -64,6 +53,11 @@ void run_sweep(const SweepLoader& load, std::size_t cases,
                const std::function<void(std::size_t, SweepRow&&)>& sink,
                const SweepProgress& progress = {});
 
+/// A function with run_sweep's signature (the threads of one process, or MPI ranks).
+using SweepRunner = std::function<void(
+    const SweepLoader&, std::size_t, const std::function<SweepPoint(std::size_t)>&, int,
+    const std::function<void(std::size_t, SweepRow&&)>&, const SweepProgress&)>;
+
 /// Every point's row at once, in the order of `points` (the streaming run_sweep above, collected).
 std::vector<SweepRow> run_sweep(const SweepLoader& load, const std::vector<SweepPoint>& points,
                                 int threads, const SweepProgress& progress = {});
@@ -81,6 +75,10 @@ std::string sweep_csv(const std::vector<SweepAxis>& axes, const std::vector<Swee
 class SweepCsvWriter {
  public:
   SweepCsvWriter(const std::vector<SweepAxis>& axes, std::function<void(std::string_view)> out);
+  SweepCsvWriter(std::vector<std::string> keys, std::function<void(std::string_view)> out);
+  /// Continues a file that already holds `header` (its first line, without the newline): the
+  /// columns are taken from it and no header is written. Call before the first add().
+  void continue_after(std::string_view header);
   void add(const SweepRow& row);
   /// Writes what is still held (a sweep where no case succeeded). Call once, after the last row.
   void finish();
@@ -109,5 +107,72 @@ struct SweepCounts {
 /// Throws InputError if the folder or the file cannot be written.
 SweepCounts write_sweep(const std::string& dir, const std::vector<SweepAxis>& axes,
                         const SweepLoader& load, int threads, const SweepProgress& progress = {});
+
+/// The base case of a sweep as it was read: the case file's text (or the built-in default's),
+/// its name in messages, the folder its tables are found in, and the --set overrides. Every case
+/// of the sweep is parse_case(text, source, overrides + point, base_dir), at the start and on
+/// --resume alike.
+struct SweepBase {
+  std::string source;
+  std::string text;
+  std::string base_dir;
+  std::vector<Override> overrides;
+};
+
+/// Reads CASE (empty: the built-in default case) as read_case_file would; checks that the base
+/// case with `overrides` resolves. Throws InputError.
+SweepBase sweep_base(const std::string& case_path, std::vector<Override> overrides);
+
+/// The base case with a point's overrides after the base's.
+Case load_sweep_case(const SweepBase& base, const std::vector<Override>& point);
+
+/// `--part K/N`: the K-th (1 … N) of N contiguous blocks of the design's cases.
+struct SweepPart {
+  std::size_t index = 1;
+  std::size_t count = 1;
+};
+
+/// Parses "K/N" (1 ≤ K ≤ N ≤ 10^6). Throws InputError naming --part and the text.
+SweepPart parse_part(std::string_view text);
+
+/// The cases [first, end) of `part` of a design of `cases` cases: first = ⌊cases·(K−1)/N⌋.
+std::pair<std::size_t, std::size_t> part_range(std::size_t cases, SweepPart part);
+
+/// Everything a sweep folder needs to be run, resumed or merged: recorded at the start in
+/// DIR/sweep.design.json.
+struct SweepPlan {
+  std::shared_ptr<const SweepDesign> design;
+  SweepBase base;
+  SweepPart part;
+  std::string program;  ///< e.g. "bearing-sim 0.1.0"; parts of one design must agree
+};
+
+/// The plan as the JSON text of sweep.design.json (format, program, design, cases, base with
+/// its resolved TOML, part with its first and end case).
+std::string sweep_record(const SweepPlan& plan);
+
+/// Reads DIR/sweep.design.json back. Throws InputError naming the file.
+SweepPlan read_sweep_record(const std::string& dir);
+
+/// Runs the plan's cases (all, or its part) into DIR (created if missing): writes
+/// DIR/sweep.design.json, streams the rows to DIR/.sweep.csv.partial (flushed row by row) and
+/// renames it to DIR/sweep.csv when every row is in. A whole sweep then removes the record (only
+/// sweep.csv is left); a part keeps it for `merge`. With `resume`, the complete rows already in
+/// the temporary file are kept (a truncated last line is dropped) and only the others run.
+/// On an error the temporary file and the record stay, for --resume. `runner` defaults to
+/// run_sweep (an MPI runner with its signature may take its place). Throws InputError.
+SweepCounts write_sweep(const std::string& dir, const SweepPlan& plan, int threads,
+                        const SweepProgress& progress = {}, const SweepRunner& runner = {},
+                        bool resume = false);
+
+/// `bearing-sim sweep --resume DIR`: the plan read back from DIR, then write_sweep(resume).
+SweepCounts resume_sweep(const std::string& dir, int threads, const SweepProgress& progress = {},
+                         const SweepRunner& runner = {});
+
+/// `bearing-sim merge OUT DIR…`: checks that the folders hold complete parts of one design (the
+/// same record but for the part; every part once, none missing) and writes OUT/sweep.csv, the
+/// same bytes as one run of the whole design. Returns the counts. Throws InputError naming the
+/// folder and what differs.
+SweepCounts merge_sweeps(const std::string& out, const std::vector<std::string>& dirs);
 
 }  // namespace bearing
