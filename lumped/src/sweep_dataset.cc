@@ -1,0 +1,384 @@
+#include "bearing/sweep_dataset.h"
+
+#include <hdf5.h>
+
+#include <algorithm>
+#include <filesystem>
+#include <string_view>
+#include <system_error>
+
+#include "bearing/errors.h"
+#include "bearing/output.h"
+
+namespace bearing {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+constexpr int kFormatVersion = 1;
+constexpr unsigned kDeflateLevel = 4;
+constexpr std::size_t kChunkBytes = 256 * 1024;
+constexpr const char* kLayout =
+    "/cases/<index> per case (attrs index, values, status, error, case_toml) holding float64 "
+    "tables response, spectrum, envelope (samples x columns; attrs columns, units) and summary "
+    "(rows mean, rms, ptp, kurtosis, crest x channel columns; attrs rows, columns, units, "
+    "summary_json); see sweep_dataset.h";
+
+constexpr std::pair<SweepSave, const char*> kSaveNames[] = {{SweepSave::response, "response"},
+                                                            {SweepSave::spectrum, "spectrum"},
+                                                            {SweepSave::envelope, "envelope"},
+                                                            {SweepSave::summary, "summary"}};
+
+// An HDF5 identifier closed by its own close function when it goes out of scope.
+class Handle {
+ public:
+  Handle(hid_t id, herr_t (*close)(hid_t), const char* what) : id_(id), close_(close) {
+    if (id_ < 0) throw InputError(std::string("sweep.h5: HDF5 cannot ") + what);
+  }
+  ~Handle() {
+    if (id_ >= 0) close_(id_);
+  }
+  Handle(Handle&& o) noexcept : id_(o.id_), close_(o.close_) { o.id_ = -1; }
+  Handle(const Handle&) = delete;
+  Handle& operator=(const Handle&) = delete;
+  Handle& operator=(Handle&&) = delete;
+  operator hid_t() const { return id_; }
+  /// Closes now, reporting a failure (a file's last write happens here).
+  void close(const char* what) {
+    const herr_t status = close_(id_);
+    id_ = -1;
+    if (status < 0) throw InputError(std::string("sweep.h5: HDF5 cannot ") + what);
+  }
+
+ private:
+  hid_t id_;
+  herr_t (*close_)(hid_t);
+};
+
+void check(herr_t status, const char* what) {
+  if (status < 0) throw InputError(std::string("sweep.h5: HDF5 cannot ") + what);
+}
+
+// HDF5 prints its error stack by default; the errors are reported as exceptions instead, so the
+// printing is off while this lives (and restored after).
+class QuietErrors {
+ public:
+  QuietErrors() {
+    H5Eget_auto2(H5E_DEFAULT, &func_, &data_);
+    H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);
+  }
+  ~QuietErrors() { H5Eset_auto2(H5E_DEFAULT, func_, data_); }
+
+ private:
+  H5E_auto2_t func_ = nullptr;
+  void* data_ = nullptr;
+};
+
+// Variable-length UTF-8 strings: h5py 3 reads them as str.
+Handle string_type() {
+  Handle t(H5Tcopy(H5T_C_S1), H5Tclose, "copy the string type");
+  check(H5Tset_size(t, H5T_VARIABLE), "size the string type");
+  check(H5Tset_cset(t, H5T_CSET_UTF8), "set UTF-8");
+  return t;
+}
+
+void write_attribute(hid_t object, const char* name, hid_t file_type, hid_t memory_type,
+                     hid_t space, const void* data) {
+  Handle a(H5Acreate2(object, name, file_type, space, H5P_DEFAULT, H5P_DEFAULT), H5Aclose,
+           "create an attribute");
+  // An empty array (no varied keys) has nothing to write; h5py reads it as an array of shape (0,).
+  if (H5Sget_simple_extent_npoints(space) > 0)
+    check(H5Awrite(a, memory_type, data), "write an attribute");
+}
+
+void string_attribute(hid_t object, const char* name, const std::string& value) {
+  Handle type = string_type();
+  Handle space(H5Screate(H5S_SCALAR), H5Sclose, "create a dataspace");
+  const char* p = value.c_str();
+  write_attribute(object, name, type, type, space, &p);
+}
+
+void strings_attribute(hid_t object, const char* name, const std::vector<std::string>& values) {
+  Handle type = string_type();
+  const hsize_t n = values.size();
+  Handle space(H5Screate_simple(1, &n, nullptr), H5Sclose, "create a dataspace");
+  std::vector<const char*> p;
+  for (const auto& v : values) p.push_back(v.c_str());
+  write_attribute(object, name, type, type, space, p.data());
+}
+
+void doubles_attribute(hid_t object, const char* name, const std::vector<double>& values) {
+  const hsize_t n = values.size();
+  Handle space(H5Screate_simple(1, &n, nullptr), H5Sclose, "create a dataspace");
+  write_attribute(object, name, H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, space, values.data());
+}
+
+void integer_attribute(hid_t object, const char* name, long long value) {
+  Handle space(H5Screate(H5S_SCALAR), H5Sclose, "create a dataspace");
+  write_attribute(object, name, H5T_STD_I64LE, H5T_NATIVE_LLONG, space, &value);
+}
+
+void index_attribute(hid_t object, std::size_t index) {
+  Handle space(H5Screate(H5S_SCALAR), H5Sclose, "create a dataspace");
+  const unsigned long long v = index;
+  write_attribute(object, "index", H5T_STD_U64LE, H5T_NATIVE_ULLONG, space, &v);
+}
+
+// A table in memory: row-major doubles and the names (and units) of its columns.
+struct Table {
+  std::size_t rows = 0;
+  std::vector<std::string> columns, units;
+  std::vector<double> values;
+};
+
+// The table as a float64 dataset (rows, columns) with attributes columns and units: chunked by
+// whole rows (≈kChunkBytes per chunk) and compressed (shuffle, deflate). An empty table cannot be
+// chunked: it is stored contiguous.
+void write_table(hid_t group, const char* name, const Table& t) {
+  const hsize_t dims[2] = {t.rows, t.columns.size()};
+  Handle space(H5Screate_simple(2, dims, nullptr), H5Sclose, "create a dataspace");
+  Handle plist(H5Pcreate(H5P_DATASET_CREATE), H5Pclose, "create a property list");
+  if (dims[0] > 0 && dims[1] > 0) {
+    const hsize_t per_chunk = std::max<hsize_t>(1, kChunkBytes / (sizeof(double) * dims[1]));
+    const hsize_t chunk[2] = {std::min(dims[0], per_chunk), dims[1]};
+    check(H5Pset_chunk(plist, 2, chunk), "set the chunk size");
+    check(H5Pset_shuffle(plist), "set the shuffle filter");
+    check(H5Pset_deflate(plist, kDeflateLevel), "set the deflate filter");
+  }
+  Handle ds(H5Dcreate2(group, name, H5T_IEEE_F64LE, space, H5P_DEFAULT, plist, H5P_DEFAULT),
+            H5Dclose, "create a dataset");
+  if (!t.values.empty())
+    check(H5Dwrite(ds, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, t.values.data()),
+          "write a dataset");
+  strings_attribute(ds, "columns", t.columns);
+  strings_attribute(ds, "units", t.units);
+}
+
+// The abscissa `x` [x_unit] then one column per name with column(i)[k]: the layout of the .npy
+// tables of output.cc (write_table there), whose names and units columns.json lists.
+template <class Column>
+Table make_table(const std::string& x_name, const std::string& x_unit, const std::vector<double>& x,
+                 const std::vector<std::string>& names, const std::vector<std::string>& units,
+                 const Column& column) {
+  Table t;
+  t.rows = x.size();
+  t.columns.push_back(x_name);
+  t.units.push_back(x_unit);
+  t.columns.insert(t.columns.end(), names.begin(), names.end());
+  t.units.insert(t.units.end(), units.begin(), units.end());
+  const std::size_t width = t.columns.size();
+  t.values.resize(t.rows * width);
+  for (std::size_t k = 0; k < t.rows; ++k) t.values[k * width] = x[k];
+  for (std::size_t i = 0; i < names.size(); ++i) {
+    const std::vector<double>& v = column(i);
+    for (std::size_t k = 0; k < t.rows; ++k) t.values[k * width + 1 + i] = v[k];
+  }
+  return t;
+}
+
+Table response_table(const Response& r) {
+  std::vector<std::string> names, units;
+  for (const Channel& ch : r.channels) names.push_back(ch.name), units.push_back(ch.unit);
+  return make_table("t", "s", r.time, names, units,
+                    [&](std::size_t i) -> const std::vector<double>& { return r.values[i]; });
+}
+
+std::string unit_of(const Response& r, const std::string& name) {
+  for (const Channel& ch : r.channels)
+    if (ch.name == name) return ch.unit;
+  return "";
+}
+
+Table spectrum_table(const Response& r, const RunSummary& s) {
+  static const std::vector<double> none;
+  std::vector<std::string> units;
+  for (const auto& name : s.spectrum_channels) units.push_back(unit_of(r, name));
+  return make_table("frequency", "Hz", s.spectra.empty() ? none : s.spectra.front().frequency,
+                    s.spectrum_channels, units, [&](std::size_t i) -> const std::vector<double>& {
+                      return s.spectra[i].amplitude;
+                    });
+}
+
+Table envelope_table(const RunSummary& s) {
+  std::vector<std::string> names, units;
+  for (const EnvelopeSummary& e : s.envelopes)
+    names.push_back("env_" + e.channel), units.push_back(e.unit);
+  return make_table("frequency", "Hz", s.envelopes.front().spectrum.frequency, names, units,
+                    [&](std::size_t i) -> const std::vector<double>& {
+                      return s.envelopes[i].spectrum.amplitude;
+                    });
+}
+
+// summary: (5, channels), rows mean, rms, ptp, kurtosis, crest.
+void write_summary(hid_t group, const RunSummary& s, const std::string& summary_json) {
+  static const std::vector<std::string> rows = {"mean", "rms", "ptp", "kurtosis", "crest"};
+  Table t;
+  t.rows = rows.size();
+  for (const ChannelSummary& ch : s.channels)
+    t.columns.push_back(ch.name), t.units.push_back(ch.unit);
+  const std::size_t width = t.columns.size();
+  t.values.resize(t.rows * width);
+  for (std::size_t i = 0; i < width; ++i) {
+    const auto& st = s.channels[i].statistics;
+    const double v[] = {st.mean, st.rms, st.ptp, st.kurtosis, st.crest};
+    for (std::size_t k = 0; k < t.rows; ++k) t.values[k * width + i] = v[k];
+  }
+  write_table(group, "summary", t);
+  Handle ds(H5Dopen2(group, "summary", H5P_DEFAULT), H5Dclose, "open the summary");
+  strings_attribute(ds, "rows", rows);
+  if (!summary_json.empty()) string_attribute(ds, "summary_json", summary_json);
+}
+
+bool has(const std::vector<SweepSave>& what, SweepSave w) {
+  return std::find(what.begin(), what.end(), w) != what.end();
+}
+
+}  // namespace
+
+std::vector<SweepSave> parse_sweep_save(const std::vector<std::string>& texts) {
+  std::vector<SweepSave> out;
+  for (const std::string& text : texts) {
+    std::string_view rest = text;
+    while (true) {
+      const std::size_t comma = rest.find(',');
+      const std::string_view name = rest.substr(0, comma);
+      bool found = false;
+      for (const auto& [w, n] : kSaveNames)
+        if (name == n) {
+          found = true;
+          if (!has(out, w)) out.push_back(w);
+        }
+      if (!found)
+        throw InputError("--save " + text + ": unknown \"" + std::string(name) +
+                         "\"; allowed: response, spectrum, envelope, summary (a comma list, or "
+                         "--save repeated)");
+      if (comma == std::string_view::npos) break;
+      rest.remove_prefix(comma + 1);
+    }
+  }
+  return out;
+}
+
+const char* sweep_save_name(SweepSave what) {
+  for (const auto& [w, n] : kSaveNames)
+    if (w == what) return n;
+  return "";
+}
+
+struct SweepDataset::File {
+  fs::path path, temporary;
+  std::vector<SweepSave> what;
+  int digits = 6;
+  std::size_t cases = 0;  // groups written
+  std::unique_ptr<Handle> file, cases_group;
+  bool closed = false;
+};
+
+SweepDataset::SweepDataset() = default;
+
+SweepDataset::~SweepDataset() {
+  if (!file_ || file_->closed) return;
+  file_->cases_group.reset();
+  file_->file.reset();
+  std::error_code ec;
+  fs::remove(file_->temporary, ec);
+}
+
+void SweepDataset::open(const std::string& path, const std::vector<SweepDatasetKey>& keys,
+                        const std::vector<SweepSave>& what, std::size_t cases) {
+  QuietErrors quiet;
+  auto f = std::make_unique<File>();
+  f->path = path;
+  f->temporary = f->path.parent_path() / ("." + f->path.filename().string() + ".partial");
+  f->what = what;
+  for (std::size_t n = cases > 0 ? cases - 1 : 0; n >= 1000000; n /= 10) ++f->digits;
+  if (!H5Zfilter_avail(H5Z_FILTER_DEFLATE) || !H5Zfilter_avail(H5Z_FILTER_SHUFFLE))
+    throw InputError("sweep.h5: this HDF5 library has no deflate or shuffle filter");
+  // Strong close: closing the file closes whatever is still open in it.
+  Handle fapl(H5Pcreate(H5P_FILE_ACCESS), H5Pclose, "create a property list");
+  check(H5Pset_fclose_degree(fapl, H5F_CLOSE_STRONG), "set the close degree");
+  f->file =
+      std::make_unique<Handle>(H5Fcreate(f->temporary.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, fapl),
+                               H5Fclose, ("create " + f->temporary.string()).c_str());
+  file_ = std::move(f);  // from here on the destructor removes the temporary file
+  const hid_t root = *file_->file;
+  string_attribute(root, "format", "bearing-sim sweep");
+  integer_attribute(root, "format_version", kFormatVersion);
+  std::vector<std::string> names, units, saved;
+  for (const auto& k : keys) names.push_back(k.name), units.push_back(k.unit);
+  for (SweepSave w : what) saved.push_back(sweep_save_name(w));
+  strings_attribute(root, "keys", names);
+  strings_attribute(root, "key_units", units);
+  strings_attribute(root, "saved", saved);
+  string_attribute(root, "layout", kLayout);
+  file_->cases_group = std::make_unique<Handle>(
+      H5Gcreate2(root, "cases", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), H5Gclose, "create /cases");
+}
+
+std::string SweepDataset::group_name(std::size_t index) const {
+  std::string s = std::to_string(index);
+  const std::size_t width = file_ ? static_cast<std::size_t>(file_->digits) : 6;
+  if (s.size() < width) s.insert(0, width - s.size(), '0');
+  return s;
+}
+
+void SweepDataset::add_case(std::size_t index, const std::vector<double>& values, const Case& c,
+                            const SimulationResult& r, const RunSummary& s) {
+  const bool summary = file_ && has(file_->what, SweepSave::summary);
+  add_case(index, values, case_to_toml(c), r.response, s,
+           summary ? summary_json(c, r, s).dump(2) + "\n" : std::string());
+}
+
+void SweepDataset::add_case(std::size_t index, const std::vector<double>& values,
+                            const std::string& case_toml, const Response& response,
+                            const RunSummary& s, const std::string& summary_json) {
+  if (!file_ || file_->closed) throw InputError("sweep.h5: add_case before open or after close");
+  QuietErrors quiet;
+  const std::string name = group_name(index);
+  Handle g(H5Gcreate2(*file_->cases_group, name.c_str(), H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT),
+           H5Gclose, ("create the group of case " + name).c_str());
+  index_attribute(g, index);
+  doubles_attribute(g, "values", values);
+  string_attribute(g, "status", "ok");
+  string_attribute(g, "case_toml", case_toml);
+  for (SweepSave w : file_->what) {
+    if (w == SweepSave::response) write_table(g, "response", response_table(response));
+    if (w == SweepSave::spectrum) write_table(g, "spectrum", spectrum_table(response, s));
+    if (w == SweepSave::envelope && !s.envelopes.empty())
+      write_table(g, "envelope", envelope_table(s));
+    if (w == SweepSave::summary) write_summary(g, s, summary_json);
+  }
+  ++file_->cases;
+}
+
+void SweepDataset::add_failed_case(std::size_t index, const std::vector<double>& values,
+                                   const std::string& error, const std::string& case_toml) {
+  if (!file_ || file_->closed) throw InputError("sweep.h5: add_case before open or after close");
+  QuietErrors quiet;
+  const std::string name = group_name(index);
+  Handle g(H5Gcreate2(*file_->cases_group, name.c_str(), H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT),
+           H5Gclose, ("create the group of case " + name).c_str());
+  index_attribute(g, index);
+  doubles_attribute(g, "values", values);
+  string_attribute(g, "status", "failed");
+  string_attribute(g, "error", error);
+  if (!case_toml.empty()) string_attribute(g, "case_toml", case_toml);
+  ++file_->cases;
+}
+
+void SweepDataset::close() {
+  if (!file_ || file_->closed) throw InputError("sweep.h5: close before open or twice");
+  QuietErrors quiet;
+  integer_attribute(*file_->file, "cases", static_cast<long long>(file_->cases));
+  file_->cases_group->close("close /cases");
+  file_->file->close(("write " + file_->temporary.string() + " (disk full?)").c_str());
+  std::error_code ec;
+  fs::rename(file_->temporary, file_->path, ec);
+  if (ec)
+    throw InputError("cannot rename " + file_->temporary.string() + " to " + file_->path.string() +
+                     " (" + ec.message() + ")");
+  file_->closed = true;
+}
+
+}  // namespace bearing
