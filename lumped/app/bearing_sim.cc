@@ -23,6 +23,9 @@
 #include "bearing/presets.h"
 #include "bearing/simulation.h"
 #include "bearing/sweep.h"
+#ifdef BEARING_WITH_HDF5
+#include "bearing/sweep_dataset.h"
+#endif
 
 namespace {
 
@@ -96,8 +99,37 @@ struct SweepOptions {
   std::size_t samples = 0;
   std::uint64_t seed = 1;
   std::string cases, part, resume, out_dir, case_path;
+  std::vector<std::string> save;
   int jobs = 0;
 };
+
+// `--save`: DIR/sweep.h5 fed by write_sweep's rows in case order (its own file, renamed into
+// place just before sweep.csv). Without HDF5 in the build, --save is an error.
+#ifdef BEARING_WITH_HDF5
+bearing::SweepRowHook save_hook(bearing::SweepDataset& dataset, const std::string& out_dir,
+                                const bearing::SweepDesign& design,
+                                const std::vector<std::string>& save) {
+  const std::vector<bearing::SweepSave> what = bearing::parse_sweep_save(save);
+  if (what.empty()) return {};
+  std::vector<bearing::SweepDatasetKey> keys;
+  for (const auto& k : design.keys())
+    keys.push_back({k.key, std::string(bearing::si_unit(k.dimension))});
+  std::error_code ec;
+  std::filesystem::create_directories(out_dir, ec);
+  if (ec)
+    throw bearing::InputError("--out " + out_dir + ": cannot create the folder (" + ec.message() +
+                              ")");
+  dataset.open((std::filesystem::path(out_dir) / "sweep.h5").string(), keys, what, design.size());
+  return {[&dataset](std::size_t i, const bearing::SweepRow& row) {
+            if (row.result)
+              dataset.add_case(i, row.values, row.result->c, row.result->result,
+                               row.result->summary);
+            else
+              dataset.add_failed_case(i, row.values, row.error);
+          },
+          [&dataset] { dataset.close(); }};
+}
+#endif
 
 // The design the options name: --vary (grid), --sample (random) or --cases (list), one of them.
 std::shared_ptr<const bearing::SweepDesign> design_of(const SweepOptions& o) {
@@ -129,12 +161,19 @@ int sweep_command(const SweepOptions& o, bool tty) {
                               " takes the design, case and part from its sweep.design.json; give "
                               "only --jobs and --quiet with it");
   if (!resume && o.out_dir.empty()) throw bearing::InputError("sweep: --out DIR is required");
+#ifndef BEARING_WITH_HDF5
+  if (!o.save.empty())
+    throw bearing::InputError(
+        "--save: this bearing-sim was built without HDF5 (Debian: libhdf5-dev), so it cannot "
+        "write sweep.h5");
+#endif
   const auto progress = [&](std::size_t done, std::size_t total) {
     if (tty) std::fprintf(stderr, "\rsweep %zu/%zu cases", done, total);
     if (tty && done == total) std::fprintf(stderr, "\n");
   };
   bearing::SweepCounts counts;
   std::string out_dir = o.out_dir;
+  bool saved = false;  // sweep.h5 written too
   if (resume) {
     counts = bearing::resume_sweep(o.resume, o.jobs, progress);
     out_dir = o.resume;
@@ -144,11 +183,18 @@ int sweep_command(const SweepOptions& o, bool tty) {
     plan.base = bearing::sweep_base(o.case_path, overrides_of(o.sets));
     if (!o.part.empty()) plan.part = bearing::parse_part(o.part);
     plan.program = kVersion;
-    counts = bearing::write_sweep(out_dir, plan, o.jobs, progress);
+#ifdef BEARING_WITH_HDF5
+    bearing::SweepDataset dataset;
+    const bearing::SweepRowHook hook = save_hook(dataset, out_dir, *plan.design, o.save);
+#else
+    const bearing::SweepRowHook hook;
+#endif
+    counts = bearing::write_sweep(out_dir, plan, o.jobs, progress, {}, false, hook);
+    saved = static_cast<bool>(hook.add);
   }
   const std::filesystem::path file = std::filesystem::path(out_dir) / "sweep.csv";
   std::cout << "sweep: " << counts.cases << " cases, " << counts.failed << " failed; wrote "
-            << file.string() << "\n";
+            << file.string() << (saved ? " and sweep.h5" : "") << "\n";
   return counts.failed == counts.cases ? 3 : 0;
 }
 
@@ -179,6 +225,10 @@ void add_sweep_options(CLI::App* cmd, SweepOptions& o) {
                   "DIR/sweep.design.json, finished rows are kept, the rest run");
   cmd->add_option("--out", o.out_dir,
                   "Folder for sweep.csv and, while running (and for a --part), sweep.design.json");
+  cmd->add_option("--save", o.save,
+                  "response,spectrum,envelope,summary (any of them; comma list or repeated): "
+                  "each case's arrays into DIR/sweep.h5 (HDF5)")
+      ->allow_extra_args(false);
   cmd->add_option("--jobs", o.jobs, "Parallel cases (default: all cores)")
       ->check(CLI::NonNegativeNumber);
 }

@@ -138,15 +138,18 @@ std::vector<SweepPoint> sweep_points(const std::vector<SweepAxis>& axes) {
 
 namespace {
 
-SweepRow run_point(const SweepLoader& load, const SweepPoint& point) {
+SweepRow run_point(const SweepLoader& load, const SweepPoint& point, bool keep) {
   SweepRow row;
   row.values = point.values;
   try {
-    const Case c = load(point.overrides);
-    const SimulationResult r = simulate(c);
+    Case c = load(point.overrides);
+    SimulationResult r = simulate(c);
     RunSummary summary = summarize(c, r);
-    row.channels = std::move(summary.channels);
-    if (summary.noise) row.microphones = std::move(summary.noise->microphones);
+    row.channels = summary.channels;
+    if (summary.noise) row.microphones = summary.noise->microphones;
+    if (keep)
+      row.result = std::make_shared<const SweepCaseResult>(
+          SweepCaseResult{std::move(c), std::move(r), std::move(summary)});
     row.ok = true;
   } catch (const std::exception& e) {
     row.ok = false;
@@ -163,7 +166,7 @@ constexpr std::size_t kWindowPerWorker = 4;
 void run_sweep(const SweepLoader& load, std::size_t cases,
                const std::function<SweepPoint(std::size_t)>& point, int threads,
                const std::function<void(std::size_t, SweepRow&&)>& sink,
-               const SweepProgress& progress) {
+               const SweepProgress& progress, bool keep_results) {
   if (cases == 0) return;
   unsigned n = threads > 0 ? static_cast<unsigned>(threads) : std::thread::hardware_concurrency();
   n = static_cast<unsigned>(std::max<std::size_t>(1, std::min<std::size_t>(n, cases)));
@@ -184,7 +187,7 @@ void run_sweep(const SweepLoader& load, std::size_t cases,
         if (next >= cases || sink_error) return;
         i = next++;
       }
-      SweepRow row = run_point(load, point(i));
+      SweepRow row = run_point(load, point(i), keep_results);
       std::lock_guard<std::mutex> lock(mutex);
       waiting.emplace(i, std::move(row));
       if (progress) progress(++done, cases);
@@ -323,45 +326,6 @@ std::string sweep_csv(const std::vector<SweepAxis>& axes, const std::vector<Swee
   for (const auto& r : rows) writer.add(r);
   writer.finish();
   return out;
-}
-
-SweepCounts write_sweep(const std::string& dir, const std::vector<SweepAxis>& axes,
-                        const SweepLoader& load, int threads, const SweepProgress& progress) {
-  std::error_code ec;
-  fs::create_directories(dir, ec);
-  if (ec) throw InputError("--out " + dir + ": cannot create the folder (" + ec.message() + ")");
-  const fs::path file = fs::path(dir) / "sweep.csv";
-  const fs::path tmp = fs::path(dir) / ".sweep.csv.partial";
-  SweepCounts counts;
-  counts.cases = sweep_size(axes);
-  try {
-    std::ofstream f(tmp, std::ios::binary | std::ios::trunc);
-    const auto cannot_write = [&] {
-      return InputError("--out " + dir + ": cannot write sweep.csv");
-    };
-    if (!f) throw cannot_write();
-    SweepCsvWriter writer(axes, [&](std::string_view s) {
-      if (!f.write(s.data(), static_cast<std::streamsize>(s.size()))) throw cannot_write();
-    });
-    run_sweep(
-        load, counts.cases, [&](std::size_t i) { return sweep_point(axes, i); }, threads,
-        [&](std::size_t, SweepRow&& row) {
-          counts.failed += row.ok ? 0 : 1;
-          writer.add(row);
-        },
-        progress);
-    writer.finish();
-    f.close();
-    if (!f) throw cannot_write();
-    fs::rename(tmp, file);
-  } catch (const fs::filesystem_error& e) {
-    fs::remove(tmp, ec);
-    throw InputError("--out " + dir + ": " + e.what());
-  } catch (...) {
-    fs::remove(tmp, ec);
-    throw;
-  }
-  return counts;
 }
 
 }  // namespace bearing

@@ -175,7 +175,14 @@ SweepPlan read_sweep_record(const std::string& dir) {
 }
 
 SweepCounts write_sweep(const std::string& dir, const SweepPlan& plan, int threads,
-                        const SweepProgress& progress, const SweepRunner& runner, bool resume) {
+                        const SweepProgress& progress, const SweepRunner& runner, bool resume,
+                        const SweepRowHook& hook) {
+  if (hook.add && runner)
+    throw InputError(
+        "--save: not with this runner (under mpirun the runs' arrays stay on their "
+        "ranks): save a data set with --jobs on one machine, or one --part each");
+  if (hook.add && resume)
+    throw InputError("--save with --resume: the killed sweep's sweep.h5 is gone; run it again");
   std::error_code ec;
   fs::create_directories(dir, ec);
   if (ec) throw InputError("--out " + dir + ": cannot create the folder (" + ec.message() + ")");
@@ -209,12 +216,14 @@ SweepCounts write_sweep(const std::string& dir, const SweepPlan& plan, int threa
     if (!kept.header.empty()) writer.continue_after(kept.header);
     counts.failed = kept.failed;
     const std::size_t start = first + kept.rows;
-    const auto run = runner ? runner : SweepRunner([](auto&&... a) { run_sweep(a...); });
+    const bool keep = static_cast<bool>(hook.add);
+    const auto run = runner ? runner : SweepRunner([keep](auto&&... a) { run_sweep(a..., keep); });
     run([&](const std::vector<Override>& point) { return load_sweep_case(plan.base, point); },
         end - start, [&](std::size_t i) { return design.point(start + i); }, threads,
-        [&](std::size_t, SweepRow&& row) {
+        [&](std::size_t i, SweepRow&& row) {
           counts.failed += row.ok ? 0 : 1;
           writer.add(row);
+          if (keep) hook.add(start + i, row);
         },
         [&](std::size_t done, std::size_t) {
           if (progress) progress(kept.rows + done, counts.cases);
@@ -222,6 +231,7 @@ SweepCounts write_sweep(const std::string& dir, const SweepPlan& plan, int threa
     writer.finish();
     f.close();
     if (!f) throw cannot_write();
+    if (hook.commit) hook.commit();
     fs::rename(tmp, file);
     if (plan.part.count == 1) fs::remove(record);
   } catch (const fs::filesystem_error& e) {

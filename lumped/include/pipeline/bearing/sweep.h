@@ -29,12 +29,21 @@ SweepPoint sweep_point(const std::vector<SweepAxis>& axes, std::size_t index);
 /// Every case of the Cartesian product at once (sweep_point for each index).
 std::vector<SweepPoint> sweep_points(const std::vector<SweepAxis>& axes);
 
+/// The whole run of a case, for writers of per-case arrays (sweep.h5, sweep_dataset.h).
+struct SweepCaseResult {
+  Case c;  ///< the resolved case
+  SimulationResult result;
+  RunSummary summary;
+};
+
 struct SweepRow {
   std::vector<double> values;  ///< the point's values (SI)
   bool ok = false;
   std::string error;                          ///< why the case failed (empty if ok)
   std::vector<ChannelSummary> channels;       ///< the run's summary (empty if it failed)
   std::vector<MicrophoneLevels> microphones;  ///< sound levels ([acoustics] only)
+  /// The whole run, only when run_sweep's `keep_results` is set (null otherwise, or if it failed).
+  std::shared_ptr<const SweepCaseResult> result;
 };
 
 /// Builds the case of a point: the base file + the point's overrides.
@@ -47,11 +56,13 @@ using SweepProgress = std::function<void(std::size_t, std::size_t)>;
 /// done. A worker starts case i only while i < (rows handed over) + 4 × workers, so at most that
 /// many finished rows wait for an earlier one: memory does not grow with the number of cases. A
 /// failed case is reported in its row and does not stop the others; an exception from `sink`
-/// stops the sweep (no new cases start) and is rethrown once the running ones are done.
+/// stops the sweep (no new cases start) and is rethrown once the running ones are done. With
+/// `keep_results` each successful row also holds its whole run (SweepRow::result): memory stays
+/// bounded by the same window.
 void run_sweep(const SweepLoader& load, std::size_t cases,
                const std::function<SweepPoint(std::size_t)>& point, int threads,
                const std::function<void(std::size_t, SweepRow&&)>& sink,
-               const SweepProgress& progress = {});
+               const SweepProgress& progress = {}, bool keep_results = false);
 
 /// A function with run_sweep's signature (the threads of one process, or MPI ranks).
 using SweepRunner = std::function<void(
@@ -95,18 +106,20 @@ class SweepCsvWriter {
   std::string line_;
 };
 
+/// A further output of write_sweep beside sweep.csv (e.g. sweep.h5 of `--save`): `add(i, row)`
+/// gets every row in case order with its whole run (SweepRow::result); `commit()` runs once after
+/// the last row and before sweep.csv is renamed into place. An exception from either stops the
+/// sweep, and sweep.csv is not written.
+struct SweepRowHook {
+  std::function<void(std::size_t, const SweepRow&)> add;
+  std::function<void()> commit;
+};
+
 /// Counts of a sweep written by write_sweep.
 struct SweepCounts {
   std::size_t cases = 0;
   std::size_t failed = 0;
 };
-
-/// `bearing-sim sweep`: runs every case of the axes' product (run_sweep) and streams the rows to
-/// `dir`/sweep.csv (created if missing) under a temporary name, renamed into place only when every
-/// row is written; on any failure the temporary file is removed and nothing else is touched.
-/// Throws InputError if the folder or the file cannot be written.
-SweepCounts write_sweep(const std::string& dir, const std::vector<SweepAxis>& axes,
-                        const SweepLoader& load, int threads, const SweepProgress& progress = {});
 
 /// The base case of a sweep as it was read: the case file's text (or the built-in default's),
 /// its name in messages, the folder its tables are found in, and the --set overrides. Every case
@@ -161,9 +174,12 @@ SweepPlan read_sweep_record(const std::string& dir);
 /// the temporary file are kept (a truncated last line is dropped) and only the others run.
 /// On an error the temporary file and the record stay, for --resume. `runner` defaults to
 /// run_sweep (an MPI runner with its signature may take its place). Throws InputError.
+/// With `hook.add` (a further output, e.g. `--save`'s sweep.h5) every row also goes to the hook
+/// with its whole run, from run_sweep in this process: not with another `runner` (InputError), and
+/// not on `resume` (the hook's file of the killed sweep is gone; InputError).
 SweepCounts write_sweep(const std::string& dir, const SweepPlan& plan, int threads,
                         const SweepProgress& progress = {}, const SweepRunner& runner = {},
-                        bool resume = false);
+                        bool resume = false, const SweepRowHook& hook = {});
 
 /// `bearing-sim sweep --resume DIR`: the plan read back from DIR, then write_sweep(resume).
 SweepCounts resume_sweep(const std::string& dir, int threads, const SweepProgress& progress = {},

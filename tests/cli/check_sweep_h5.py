@@ -1,0 +1,119 @@
+#!/usr/bin/python3
+"""`bearing-sim sweep --save …` read back with h5py: a 3-case sweep writes DIR/sweep.h5 whose root
+names the design (keys, key_units, saved, cases, format_version); each case's group holds its
+index, values and resolved case TOML; `bearing-sim run` of that very TOML with output.format = "npy"
+gives files equal to the group's tables bit for bit, with the names and units columns.json lists,
+and the summary's summary_json equals the run's summary.json (but for case.source and
+case.bearing). Datasets are chunked with shuffle + gzip 4. A failed case keeps its group with the
+error; a sweep.h5 that cannot be put in place fails the sweep and leaves no sweep.csv. Skipped
+(exit 77) when h5py cannot be imported.
+
+    check_sweep_h5.py BEARING_SIM WORK_DIR
+"""
+import json
+import pathlib
+import shutil
+import subprocess
+import sys
+
+try:
+    import h5py
+    import numpy as np
+except ImportError as e:
+    print(f"SKIP: h5py is not importable by {sys.executable} ({e}); "
+          "install python3-h5py to run this check")
+    sys.exit(77)
+
+sim, work = sys.argv[1], pathlib.Path(sys.argv[2])
+shutil.rmtree(work, ignore_errors=True)
+short = ["--quiet", "--set", "solver.duration=0.3", "--set", "solver.transient=0.1",
+         "--set", "output.envelope_band=auto"]
+subprocess.run([sim, "sweep", "--out", str(work / "sweep"), "--jobs", "2",
+                "--vary", "operation.speed=1000rpm:3000rpm:3", "--save", "response,spectrum",
+                "--save", "envelope", "--save", "summary", *short],
+               check=True, stdout=subprocess.DEVNULL)
+
+failures = 0
+
+
+def check(what, ok):
+    global failures
+    print(f"{what}: {'ok' if ok else 'FAILED'}")
+    failures += not ok
+
+
+def same_bits(a, b):
+    return a.dtype == b.dtype and a.shape == b.shape and a.tobytes() == b.tobytes()
+
+
+files = sorted(p.name for p in (work / "sweep").iterdir())
+check("only sweep.csv and sweep.h5, no temporary file", files == ["sweep.csv", "sweep.h5"])
+with h5py.File(work / "sweep" / "sweep.h5", "r") as f:
+    check("root format", f.attrs["format"] == "bearing-sim sweep")
+    check("root format_version 1", int(f.attrs["format_version"]) == 1)
+    check("root keys", list(f.attrs["keys"]) == ["operation.speed"])
+    check("root key_units", list(f.attrs["key_units"]) == ["rad/s"])
+    check("root saved", list(f.attrs["saved"]) == ["response", "spectrum", "envelope", "summary"])
+    check("root cases", int(f.attrs["cases"]) == 3)
+    check("groups in case order", list(f["cases"]) == ["000000", "000001", "000002"])
+    speeds = [2 * np.pi * rpm / 60 for rpm in (1000, 2000, 3000)]
+    for i, name in enumerate(f["cases"]):
+        g = f["cases"][name]
+        check(f"{name}: index", int(g.attrs["index"]) == i)
+        check(f"{name}: values", np.allclose(g.attrs["values"], [speeds[i]], rtol=1e-12))
+        check(f"{name}: status ok", g.attrs["status"] == "ok")
+        # The stored case, run on its own, gives the same arrays.
+        case = work / f"case{i}.toml"
+        case.write_text(g.attrs["case_toml"])
+        out = work / f"run{i}"
+        subprocess.run([sim, "run", str(case), "--out", str(out), "--quiet",
+                        "--set", "output.format=npy"], check=True, stdout=subprocess.DEVNULL)
+        columns = json.loads((out / "columns.json").read_text())["tables"]
+        for stem in ("response", "spectrum", "envelope"):
+            d = g[stem]
+            table = columns[f"{stem}.npy"]
+            check(f"{name}/{stem}: bit for bit {stem}.npy",
+                  same_bits(d[()], np.load(out / f"{stem}.npy")))
+            check(f"{name}/{stem}: columns as columns.json", list(d.attrs["columns"]) == table["columns"])
+            check(f"{name}/{stem}: units as columns.json", list(d.attrs["units"]) == table["units"])
+            check(f"{name}/{stem}: chunked, shuffle, gzip 4",
+                  d.chunks is not None and d.shuffle and d.compression == "gzip"
+                  and d.compression_opts == 4)
+        summary = json.loads((out / "summary.json").read_text())
+        stored = json.loads(g["summary"].attrs["summary_json"])
+        # Where the case came from differs (the file here), and the resolved TOML keeps the
+        # preset's numbers but not its name (a rerun says bearing "custom").
+        for s in (summary, stored):
+            del s["case"]["source"], s["case"]["bearing"]
+        check(f"{name}/summary: summary_json as summary.json", stored == summary)
+        s = g["summary"]
+        rows, cols = list(s.attrs["rows"]), list(s.attrs["columns"])
+        check(f"{name}/summary: rms of ay as summary.json",
+              s[rows.index("rms"), cols.index("ay")] == summary["channels"]["ay"]["rms"])
+
+# A failed case keeps its group, with the error; the others go on.
+tiny = ["--quiet", "--set", "solver.duration=0.05", "--set", "solver.transient=0.01"]
+subprocess.run([sim, "sweep", "--out", str(work / "failed"), "--save", "summary",
+                "--vary", "bearing.clearance=-100um:10um:2", *tiny],
+               check=True, stdout=subprocess.DEVNULL)
+with h5py.File(work / "failed" / "sweep.h5", "r") as f:
+    g = f["cases/000000"]
+    check("failed case: status", g.attrs["status"] == "failed")
+    check("failed case: error names the key", "bearing.clearance" in g.attrs["error"])
+    check("failed case: no tables", len(g) == 0)
+    check("next case ok", f["cases/000001"].attrs["status"] == "ok" and "summary" in f["cases/000001"])
+
+# All or nothing: when sweep.h5 cannot be put in place (a folder of that name is in the way), the
+# sweep fails (exit 2), writes no sweep.csv and leaves no temporary HDF5 file; the sweep's own
+# record and partial rows stay, as after any interrupted sweep (docs/bearing-sim.md, --resume).
+blocked = work / "blocked"
+(blocked / "sweep.h5" / "x").mkdir(parents=True)
+run = subprocess.run([sim, "sweep", "--out", str(blocked), "--save", "summary",
+                      "--vary", "operation.speed=1000rpm:2000rpm:2", *tiny],
+                     stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, text=True)
+check("blocked: exit 2", run.returncode == 2)
+check("blocked: the message names sweep.h5", "sweep.h5" in run.stderr)
+check("blocked: nothing else written", sorted(p.name for p in blocked.iterdir()) ==
+      [".sweep.csv.partial", "sweep.design.json", "sweep.h5"])
+print(f"{failures} failed")
+sys.exit(1 if failures else 0)
