@@ -13,6 +13,7 @@
 #include <map>
 #include <mutex>
 #include <thread>
+#include <utility>
 
 #include "bearing/errors.h"
 
@@ -316,7 +317,8 @@ std::string sweep_csv(const std::vector<SweepAxis>& axes, const std::vector<Swee
 }
 
 SweepCounts write_sweep(const std::string& dir, const std::vector<SweepAxis>& axes,
-                        const SweepLoader& load, int threads, const SweepProgress& progress) {
+                        const SweepLoader& load, int threads, const SweepProgress& progress,
+                        const SweepRunner& runner) {
   std::error_code ec;
   fs::create_directories(dir, ec);
   if (ec) throw InputError("--out " + dir + ": cannot create the folder (" + ec.message() + ")");
@@ -333,7 +335,9 @@ SweepCounts write_sweep(const std::string& dir, const std::vector<SweepAxis>& ax
     SweepCsvWriter writer(axes, [&](std::string_view s) {
       if (!f.write(s.data(), static_cast<std::streamsize>(s.size()))) throw cannot_write();
     });
-    run_sweep(
+    const SweepRunner run =
+        runner ? runner : [](auto&&... a) { run_sweep(std::forward<decltype(a)>(a)...); };
+    run(
         load, counts.cases, [&](std::size_t i) { return sweep_point(axes, i); }, threads,
         [&](std::size_t, SweepRow&& row) {
           counts.failed += row.ok ? 0 : 1;

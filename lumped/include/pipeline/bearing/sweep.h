@@ -103,11 +103,17 @@ struct SweepCounts {
   std::size_t failed = 0;
 };
 
-/// `bearing-sim sweep`: runs every case of the axes' product (run_sweep) and streams the rows to
-/// `dir`/sweep.csv (created if missing) under a temporary name, renamed into place only when every
-/// row is written; on any failure the temporary file is removed and nothing else is touched.
-/// Throws InputError if the folder or the file cannot be written.
+/// A function with the streaming run_sweep's signature (run_sweep, or run_sweep_mpi).
+using SweepRunner = std::function<void(
+    const SweepLoader&, std::size_t, const std::function<SweepPoint(std::size_t)>&, int,
+    const std::function<void(std::size_t, SweepRow&&)>&, const SweepProgress&)>;
+
+/// `bearing-sim sweep`: runs every case of the axes' product (with `runner`; empty: run_sweep) and
+/// streams the rows to `dir`/sweep.csv (created if missing) under a temporary name, renamed into
+/// place only when every row is written; on any failure the temporary file is removed and nothing
+/// else is touched. Throws InputError if the folder or the file cannot be written.
 SweepCounts write_sweep(const std::string& dir, const std::vector<SweepAxis>& axes,
-                        const SweepLoader& load, int threads, const SweepProgress& progress = {});
+                        const SweepLoader& load, int threads, const SweepProgress& progress = {},
+                        const SweepRunner& runner = {});
 
 }  // namespace bearing
