@@ -5,6 +5,7 @@
 
 #include <chrono>
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <iostream>
 #include <string>
@@ -21,8 +22,64 @@
 #include "bearing/presets.h"
 #include "bearing/simulation.h"
 #include "bearing/sweep.h"
+#ifdef BEARING_WITH_MPI
+#include <mpi.h>
+
+#include "bearing/sweep_mpi.h"
+#endif
 
 namespace {
+
+#ifdef BEARING_WITH_MPI
+// MPI is started only under a launcher (mpirun, srun: their variables are set), so a plain
+// `bearing-sim` behaves exactly as one built without MPI. Under mpirun only rank 0 prints and
+// writes; the other ranks only run sweep cases.
+struct MpiSession {
+  bool active = false;
+  MpiSession(int& argc, char**& argv) {
+    bool launched = false;
+    for (const char* v : {"OMPI_COMM_WORLD_SIZE", "PMIX_RANK", "PMI_RANK", "PMI_SIZE"})
+      launched = launched || std::getenv(v) != nullptr;
+    if (!launched) return;
+    int provided = 0;
+    MPI_Init_thread(&argc, &argv, MPI_THREAD_FUNNELED, &provided);
+    active = true;
+    if (provided < MPI_THREAD_FUNNELED) {
+      std::fprintf(stderr, "bearing-sim: error: this MPI cannot run threads beside MPI calls\n");
+      MPI_Abort(MPI_COMM_WORLD, 1);
+    }
+  }
+  ~MpiSession() {
+    if (active) MPI_Finalize();
+  }
+};
+int world_rank() {
+  return bearing::mpi_rank();
+}
+int world_size() {
+  return bearing::mpi_size();
+}
+// An error on one rank ends every rank (the others would wait for it forever).
+int fail(int code) {
+  if (world_size() > 1) MPI_Abort(MPI_COMM_WORLD, code);
+  return code;
+}
+#else
+int world_rank() {
+  return 0;
+}
+int world_size() {
+  return 1;
+}
+int fail(int code) {
+  return code;
+}
+#endif
+// "bearing-sim", or on ranks other than 0 "bearing-sim (rank N)".
+std::string who() {
+  return world_rank() == 0 ? "bearing-sim"
+                           : "bearing-sim (rank " + std::to_string(world_rank()) + ")";
+}
 
 constexpr const char* kCaseHelp =
     "TOML case file (see docs/case-files.md and examples/); without it the built-in default case "
@@ -104,7 +161,17 @@ int sweep_command(const std::string& case_path, const std::vector<bearing::Overr
     if (tty) std::fprintf(stderr, "\rsweep %zu/%zu cases", done, total);
     if (tty && done == total) std::fprintf(stderr, "\n");
   };
-  const bearing::SweepCounts counts = bearing::write_sweep(out_dir, axes, loader, jobs, progress);
+  bearing::SweepRunner runner;  // run_sweep; under mpirun the ranks share the cases
+#ifdef BEARING_WITH_MPI
+  if (world_size() > 1) runner = bearing::run_sweep_mpi;
+  if (world_rank() != 0) {
+    runner(loader, bearing::sweep_size(axes),
+           [&](std::size_t i) { return bearing::sweep_point(axes, i); }, jobs, {}, {});
+    return 0;
+  }
+#endif
+  const bearing::SweepCounts counts =
+      bearing::write_sweep(out_dir, axes, loader, jobs, progress, runner);
   const std::filesystem::path file = std::filesystem::path(out_dir) / "sweep.csv";
   std::cout << "sweep: " << counts.cases << " cases, " << counts.failed << " failed; wrote "
             << file.string() << "\n";
@@ -114,6 +181,9 @@ int sweep_command(const std::string& case_path, const std::vector<bearing::Overr
 }  // namespace
 
 int main(int argc, char** argv) {
+#ifdef BEARING_WITH_MPI
+  MpiSession mpi(argc, argv);
+#endif
   // GSL's default handler aborts; the library checks GSL's return codes itself.
   gsl_set_error_handler_off();
 
@@ -183,8 +253,14 @@ int main(int argc, char** argv) {
 
   auto* presets = app.add_subcommand("presets", "List the catalogue bearings and their sources");
 
-  CLI11_PARSE(app, argc, argv);
-  const bool tty = isatty(STDERR_FILENO) && !quiet;
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    return world_rank() == 0 ? app.exit(e) : e.get_exit_code();
+  }
+  const bool tty = isatty(STDERR_FILENO) && !quiet && world_rank() == 0;
+  // Under mpirun, every command but sweep runs on rank 0 alone.
+  if (!*sweep && world_rank() != 0) return 0;
 
   try {
     if (*presets) {
@@ -204,14 +280,14 @@ int main(int argc, char** argv) {
     if (*run) return run_command(case_path, overrides_of(sets), out_dir, json, quiet, tty);
     if (*sweep) return sweep_command(case_path, overrides_of(sets), vary, out_dir, jobs, tty);
   } catch (const bearing::InputError& e) {
-    std::cerr << "bearing-sim: error: " << e.what() << "\n";
-    return 2;
+    std::cerr << who() << ": error: " << e.what() << "\n";
+    return fail(2);
   } catch (const bearing::SolverError& e) {
-    std::cerr << "bearing-sim: solver error: " << e.what() << "\n";
-    return 3;
+    std::cerr << who() << ": solver error: " << e.what() << "\n";
+    return fail(3);
   } catch (const std::exception& e) {
-    std::cerr << "bearing-sim: internal error: " << e.what() << "\n";
-    return 1;
+    std::cerr << who() << ": internal error: " << e.what() << "\n";
+    return fail(1);
   }
   return 0;
 }

@@ -70,8 +70,13 @@ class Coordinator {
               const std::function<SweepPoint(std::size_t)>& point,
               const std::function<void(std::size_t, SweepRow&&)>& sink,
               const SweepProgress& progress, std::size_t window, int workers)
-      : load_(load), cases_(cases), point_(point), sink_(sink), progress_(progress),
-        window_(window), workers_(workers) {}
+      : load_(load),
+        cases_(cases),
+        point_(point),
+        sink_(sink),
+        progress_(progress),
+        window_(window),
+        workers_(workers) {}
 
   void run(int threads) {
     std::vector<std::thread> pool;
@@ -271,8 +276,7 @@ class Worker {
       for (auto& [i, row] : out) {
         buffer.clear();
         encode_sweep_row(i, row, buffer);
-        MPI_Send(buffer.data(), static_cast<int>(buffer.size()), MPI_BYTE, 0, kRow,
-                 MPI_COMM_WORLD);
+        MPI_Send(buffer.data(), static_cast<int>(buffer.size()), MPI_BYTE, 0, kRow, MPI_COMM_WORLD);
         --in_hand;
         if (!stopped) {
           request();

@@ -109,8 +109,8 @@ ChannelSummary decode_channel(Reader& r) {
 }
 
 void encode_microphone(Writer& w, const MicrophoneLevels& m) {
-  for (double v : {m.microphone.radius, m.microphone.angle, m.position.x(), m.position.y(),
-                   m.p_rms, m.p_rms_ring, m.p_rms_balls})
+  for (double v : {m.microphone.radius, m.microphone.angle, m.position.x(), m.position.y(), m.p_rms,
+                   m.p_rms_ring, m.p_rms_balls})
     w.raw(v);
   for (const auto* v : {&m.spl_total, &m.spl_ring, &m.spl_balls, &m.nearest_ball_surface})
     w.maybe(*v);
@@ -121,8 +121,7 @@ MicrophoneLevels decode_microphone(Reader& r) {
   for (double* v : {&m.microphone.radius, &m.microphone.angle, &m.position.x(), &m.position.y(),
                     &m.p_rms, &m.p_rms_ring, &m.p_rms_balls})
     *v = r.raw<double>();
-  for (auto* v : {&m.spl_total, &m.spl_ring, &m.spl_balls, &m.nearest_ball_surface})
-    *v = r.maybe();
+  for (auto* v : {&m.spl_total, &m.spl_ring, &m.spl_balls, &m.nearest_ball_surface}) *v = r.maybe();
   return m;
 }
 
