@@ -247,7 +247,10 @@ int main(int argc, char** argv) {
       ->required()
       ->allow_extra_args(false);
   sweep->add_option("--out", out_dir, "Folder for sweep.csv (created if missing)")->required();
-  sweep->add_option("--jobs", jobs, "Parallel cases (default: all cores)")
+  sweep
+      ->add_option("--jobs", jobs,
+                   "Parallel cases (default: all cores); under mpirun, per rank (default: the "
+                   "cores shared among the machine's ranks)")
       ->check(CLI::NonNegativeNumber);
   sweep->add_flag("--quiet", quiet, "No progress on stderr");
 

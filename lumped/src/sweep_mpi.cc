@@ -51,14 +51,15 @@ SweepRow run_one(const SweepLoader& load, const SweepPoint& point) {
   return out;
 }
 
-// `threads`, or with 0 this node's cores shared among its ranks.
+// `threads`, or with 0 this node's cores shared among its ranks. Collective (every rank calls
+// it, whatever its `threads`).
 int threads_of_rank(int threads) {
-  if (threads > 0) return threads;
   MPI_Comm node;
   MPI_Comm_split_type(MPI_COMM_WORLD, MPI_COMM_TYPE_SHARED, 0, MPI_INFO_NULL, &node);
   int ranks = 1;
   MPI_Comm_size(node, &ranks);
   MPI_Comm_free(&node);
+  if (threads > 0) return threads;
   const int cores = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
   return std::max(1, cores / ranks);
 }

@@ -14,14 +14,15 @@ namespace bearing {
 
 /// run_sweep across the ranks of MPI_COMM_WORLD. Every rank calls it with the same arguments
 /// (`threads` may differ per rank). Cases are dealt dynamically: rank 0 hands out case indices
-/// one at a time to whichever worker asks (a rank with `threads` workers keeps that many cases
-/// in hand), runs cases on its own `threads` workers too, receives the other ranks' rows and
-/// hands every row to `sink(i, row)` in case order, serialised, on rank 0 only; `progress` is
-/// called on rank 0 only. The rows are those of run_sweep with one thread, bit for bit (the same
-/// code runs each case). Memory does not grow with `cases`: no case is handed out more than
-/// 4 × (workers of all ranks) cases ahead of the oldest unfinished one, so rank 0 holds at most
-/// that many finished rows. Other ranks return when there is no case left for them. With one
-/// rank it is run_sweep. `threads` = 0: the cores of this node shared among its ranks.
+/// one at a time to whichever rank asks (a rank keeps `threads` + 1 cases asked for or in hand,
+/// so a thread that finishes finds the next case waiting), runs cases on its own `threads` workers
+/// too, receives the other ranks' rows and hands every row to `sink(i, row)` in case order,
+/// serialised, on rank 0 only; `progress` is called on rank 0 only. The rows are those of run_sweep
+/// with one thread, bit for bit (the same code runs each case). Memory does not grow with `cases`:
+/// no case is handed out more than 4 × (workers of all ranks) cases ahead of the oldest unfinished
+/// one, so rank 0 holds at most that many finished rows. Other ranks return when there is no case
+/// left for them. With one rank it is run_sweep. `threads` = 0: the cores of this node shared among
+/// its ranks.
 ///
 /// An exception from `sink` stops the dealing; rank 0 rethrows it once every rank has finished
 /// its cases in hand. A failed case is reported in its row, as in run_sweep. Any other error
