@@ -1,7 +1,10 @@
 // Sweeps across MPI ranks: rank 0 deals case indices on request and puts the rows back in case
 // order; every rank runs cases on its own threads. Only the thread that called run_sweep_mpi
-// talks MPI (MPI_THREAD_FUNNELED); it polls (MPI_Iprobe, then a short wait on a condition
-// variable) instead of blocking in MPI, whose blocking calls spin a core that the cases need.
+// talks MPI (MPI_THREAD_FUNNELED); it polls (MPI_Iprobe, then a wait on a condition variable
+// that a finished row ends early) instead of blocking in MPI, whose blocking calls spin a core
+// that the cases need. The waits back off from 50 µs to 500 µs while nothing comes: each poll
+// costs a few µs of CPU, and a fixed 100 µs poll on both ranks took ~12 % of the cases' CPU time
+// (bench/README.md, issue 20); the case asked for ahead (kPrefetch) hides the latency.
 //
 // Messages (MPI_COMM_WORLD):
 //   worker → 0  kRequest (empty)  one more case, please (a worker keeps threads + 1 asked for)
@@ -39,8 +42,14 @@ enum Tag : int { kRequest = 1, kRow = 2, kDone = 3, kAssign = 4 };
 constexpr std::size_t kWindowPerWorker = 4;
 // Cases a rank asks for beyond its threads, so a thread that finishes finds the next one waiting.
 constexpr int kPrefetch = 1;
-// How long the MPI thread sleeps when there is nothing to do.
-constexpr auto kPoll = std::chrono::microseconds(100);
+// How long the MPI thread sleeps when there is nothing to do: doubling from the first to the last.
+constexpr auto kPollFirst = std::chrono::microseconds(50);
+constexpr auto kPollLast = std::chrono::microseconds(500);
+
+// The wait before the next poll: back to the first after activity, else twice the last one.
+std::chrono::microseconds next_wait(std::chrono::microseconds wait, bool active) {
+  return active ? kPollFirst : std::min(2 * wait, kPollLast);
+}
 
 // One case, run exactly as run_sweep runs it (the same code, so the same bits).
 SweepRow run_one(const SweepLoader& load, const SweepPoint& point) {
@@ -185,12 +194,14 @@ class Coordinator {
   void coordinate() {
     std::deque<int> requests;
     int done_workers = 0;
+    auto wait = kPollFirst;
     while (done_workers < workers_) {
       const bool received = receive(requests, done_workers);
       const bool served = serve(requests);
+      wait = next_wait(wait, received || served);
       if (!received && !served) {
         std::unique_lock<std::mutex> lock(mutex_);
-        can_start_.wait_for(lock, kPoll);
+        can_start_.wait_for(lock, wait);
       }
     }
   }
@@ -268,6 +279,7 @@ class Worker {
     int in_hand = 0;   // cases received and not yet sent back
     bool stopped = false;
     std::string buffer;
+    auto wait = kPollFirst;
     while (!stopped || open > 0 || in_hand > 0) {
       std::deque<std::pair<std::size_t, SweepRow>> out;
       {
@@ -301,9 +313,10 @@ class Worker {
         ++in_hand;
         ready_.notify_one();
       }
+      wait = next_wait(wait, !out.empty() || assigned);
       if (out.empty() && !assigned) {
         std::unique_lock<std::mutex> lock(mutex_);
-        finished_one_.wait_for(lock, kPoll, [&] { return !finished_.empty(); });
+        finished_one_.wait_for(lock, wait, [&] { return !finished_.empty(); });
       }
     }
   }
