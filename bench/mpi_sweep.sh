@@ -40,16 +40,20 @@ cases_of() {
 speed=($(cases_of 1000) --set solver.duration=0.3 --set solver.transient=0.1 --jobs 1 --quiet)
 
 median() { sort -g | awk '{ v[NR] = $1 } END { print v[int((NR + 1) / 2)] }'; }
+# Wall seconds of "$@" on stdout; its CPU seconds (user + system, all ranks) added to $work/cpu.
 seconds() {
-  local start end
-  start=$(date +%s.%N)
-  "$@" >/dev/null
-  end=$(date +%s.%N)
-  awk -v a="$start" -v b="$end" 'BEGIN { printf "%.3f\n", b - a }'
+  "$gnu_time" -f '%e %U %S' -o "$work/time" "$@" >/dev/null
+  read -r wall user sys <"$work/time"
+  echo "$user $sys" >>"$work/cpu"
+  echo "$wall"
 }
+# CPU seconds the whole machine spent busy (all but idle and iowait), from /proc/stat.
+busy() { awk '/^cpu / { print ($2 + $3 + $4 + $7 + $8 + $9) / 100 }' /proc/stat; }
 
 "$sim" sweep "${speed[@]}" --out "$work/serial" >/dev/null  # reference, and a warm page cache
 load_before=$(cut -d' ' -f1-3 /proc/loadavg)
+busy_before=$(busy)
+: >"$work/cpu"
 : >"$work/np1"
 : >"$work/np2"
 same=yes
@@ -61,6 +65,8 @@ for ((i = 0; i < repeats; ++i)); do
   done
 done
 load_after=$(cut -d' ' -f1-3 /proc/loadavg)
+others=$(awk -v a="$busy_before" -v b="$(busy)" '{ s += $1 + $2 } END { printf "%.1f", b - a - s }' \
+  "$work/cpu")
 t1=$(median <"$work/np1")
 t2=$(median <"$work/np2")
 
@@ -82,7 +88,8 @@ m10k=$(mem 10000)
 
 echo "bearing-sim sweep under mpirun — $(date '+%F %H:%M'), $(nproc) cores," \
   "$(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | sed 's/^ //')"
-echo "load average before / after the timing: $load_before / $load_after"
+echo "load average before / after the timing: $load_before / $load_after;" \
+  "CPU used by other processes during it: $others s"
 printf '%-62s %10s\n' "1000 cases x 0.3 s, --jobs 1" "wall [s]"
 printf '%-62s %10s\n' "mpirun -np 1 (runs: $(paste -sd' ' "$work/np1"))" "$t1"
 printf '%-62s %10s\n' "mpirun -np 2 (runs: $(paste -sd' ' "$work/np2"))" "$t2"
