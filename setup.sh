@@ -10,6 +10,7 @@ packages=(
   build-essential cmake ninja-build ccache pkg-config git
   libeigen3-dev libgsl-dev libtomlplusplus-dev nlohmann-json3-dev libcli11-dev   # lumped/
   libhwy-dev                                                                     # lumped/: SIMD contact loop
+  mpi-default-dev                                                                # lumped/: sweeps under mpirun (with mpi-default-bin)
   googletest libgtest-dev libgmock-dev libbenchmark-dev                          # tests/, bench/
   libdeal.ii-dev petsc-dev mpi-default-bin gmsh                                  # fem/, meshes/
   python3-matplotlib python3-numpy python3-jsonschema chromium                   # verification/: figures, report tests

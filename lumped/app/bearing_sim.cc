@@ -6,6 +6,7 @@
 #include <chrono>
 #include <cstdint>
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <iostream>
 #include <memory>
@@ -26,8 +27,64 @@
 #ifdef BEARING_WITH_HDF5
 #include "bearing/sweep_dataset.h"
 #endif
+#ifdef BEARING_WITH_MPI
+#include <mpi.h>
+
+#include "bearing/sweep_mpi.h"
+#endif
 
 namespace {
+
+#ifdef BEARING_WITH_MPI
+// MPI is started only under a launcher (mpirun, srun: their variables are set), so a plain
+// `bearing-sim` behaves exactly as one built without MPI. Under mpirun only rank 0 prints and
+// writes; the other ranks only run sweep cases.
+struct MpiSession {
+  bool active = false;
+  MpiSession(int& argc, char**& argv) {
+    bool launched = false;
+    for (const char* v : {"OMPI_COMM_WORLD_SIZE", "PMIX_RANK", "PMI_RANK", "PMI_SIZE"})
+      launched = launched || std::getenv(v) != nullptr;
+    if (!launched) return;
+    int provided = 0;
+    MPI_Init_thread(&argc, &argv, MPI_THREAD_FUNNELED, &provided);
+    active = true;
+    if (provided < MPI_THREAD_FUNNELED) {
+      std::fprintf(stderr, "bearing-sim: error: this MPI cannot run threads beside MPI calls\n");
+      MPI_Abort(MPI_COMM_WORLD, 1);
+    }
+  }
+  ~MpiSession() {
+    if (active) MPI_Finalize();
+  }
+};
+int world_rank() {
+  return bearing::mpi_rank();
+}
+int world_size() {
+  return bearing::mpi_size();
+}
+// An error on one rank ends every rank (the others would wait for it forever).
+int fail(int code) {
+  if (world_size() > 1) MPI_Abort(MPI_COMM_WORLD, code);
+  return code;
+}
+#else
+int world_rank() {
+  return 0;
+}
+int world_size() {
+  return 1;
+}
+int fail(int code) {
+  return code;
+}
+#endif
+// "bearing-sim", or on ranks other than 0 "bearing-sim (rank N)".
+std::string who() {
+  return world_rank() == 0 ? "bearing-sim"
+                           : "bearing-sim (rank " + std::to_string(world_rank()) + ")";
+}
 
 constexpr const char* kCaseHelp =
     "TOML case file (see docs/case-files.md and examples/); without it the built-in default case "
@@ -171,11 +228,32 @@ int sweep_command(const SweepOptions& o, bool tty) {
     if (tty) std::fprintf(stderr, "\rsweep %zu/%zu cases", done, total);
     if (tty && done == total) std::fprintf(stderr, "\n");
   };
+  bearing::SweepRunner runner;  // run_sweep; under mpirun the ranks share the cases
+#ifdef BEARING_WITH_MPI
+  if (world_size() > 1) {
+    if (resume)
+      throw bearing::InputError("--resume " + o.resume +
+                                ": not under mpirun yet; resume it with --jobs on one machine");
+    runner = bearing::run_sweep_mpi;
+  }
+  if (world_rank() != 0) {  // a worker: the same plan, cases dealt by rank 0
+    const auto design = design_of(o);
+    const bearing::SweepBase base = bearing::sweep_base(o.case_path, overrides_of(o.sets));
+    bearing::SweepPart part;
+    if (!o.part.empty()) part = bearing::parse_part(o.part);
+    const auto [first, end] = bearing::part_range(design->size(), part);
+    runner(
+        [&](const std::vector<bearing::Override>& p) { return bearing::load_sweep_case(base, p); },
+        end - first, [&, first = first](std::size_t i) { return design->point(first + i); }, o.jobs,
+        {}, {});
+    return 0;
+  }
+#endif
   bearing::SweepCounts counts;
   std::string out_dir = o.out_dir;
   bool saved = false;  // sweep.h5 written too
   if (resume) {
-    counts = bearing::resume_sweep(o.resume, o.jobs, progress);
+    counts = bearing::resume_sweep(o.resume, o.jobs, progress, runner);
     out_dir = o.resume;
   } else {
     bearing::SweepPlan plan;
@@ -189,7 +267,7 @@ int sweep_command(const SweepOptions& o, bool tty) {
 #else
     const bearing::SweepRowHook hook;
 #endif
-    counts = bearing::write_sweep(out_dir, plan, o.jobs, progress, {}, false, hook);
+    counts = bearing::write_sweep(out_dir, plan, o.jobs, progress, runner, false, hook);
     saved = static_cast<bool>(hook.add);
   }
   const std::filesystem::path file = std::filesystem::path(out_dir) / "sweep.csv";
@@ -229,13 +307,18 @@ void add_sweep_options(CLI::App* cmd, SweepOptions& o) {
                   "response,spectrum,envelope,summary (any of them; comma list or repeated): "
                   "each case's arrays into DIR/sweep.h5 (HDF5)")
       ->allow_extra_args(false);
-  cmd->add_option("--jobs", o.jobs, "Parallel cases (default: all cores)")
+  cmd->add_option("--jobs", o.jobs,
+                  "Parallel cases (default: all cores); under mpirun, per rank (default: the "
+                  "cores shared among the machine's ranks)")
       ->check(CLI::NonNegativeNumber);
 }
 
 }  // namespace
 
 int main(int argc, char** argv) {
+#ifdef BEARING_WITH_MPI
+  MpiSession mpi(argc, argv);
+#endif
   // GSL's default handler aborts; the library checks GSL's return codes itself.
   gsl_set_error_handler_off();
 
@@ -306,8 +389,14 @@ int main(int argc, char** argv) {
 
   auto* presets = app.add_subcommand("presets", "List the catalogue bearings and their sources");
 
-  CLI11_PARSE(app, argc, argv);
-  const bool tty = isatty(STDERR_FILENO) && !quiet;
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    return world_rank() == 0 ? app.exit(e) : e.get_exit_code();
+  }
+  const bool tty = isatty(STDERR_FILENO) && !quiet && world_rank() == 0;
+  // Under mpirun, every command but sweep runs on rank 0 alone.
+  if (!*sweep && world_rank() != 0) return 0;
 
   try {
     if (*presets) {
@@ -333,14 +422,14 @@ int main(int argc, char** argv) {
       return 0;
     }
   } catch (const bearing::InputError& e) {
-    std::cerr << "bearing-sim: error: " << e.what() << "\n";
-    return 2;
+    std::cerr << who() << ": error: " << e.what() << "\n";
+    return fail(2);
   } catch (const bearing::SolverError& e) {
-    std::cerr << "bearing-sim: solver error: " << e.what() << "\n";
-    return 3;
+    std::cerr << who() << ": solver error: " << e.what() << "\n";
+    return fail(3);
   } catch (const std::exception& e) {
-    std::cerr << "bearing-sim: internal error: " << e.what() << "\n";
-    return 1;
+    std::cerr << who() << ": internal error: " << e.what() << "\n";
+    return fail(1);
   }
   return 0;
 }

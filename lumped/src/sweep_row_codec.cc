@@ -1,0 +1,159 @@
+// SweepRow ↔ bytes: a flat little format of fixed-size fields (raw doubles, 64-bit counts) and
+// length-prefixed strings, in the order of the structs' members.
+
+#include "bearing/sweep_row_codec.h"
+
+#include <cstdint>
+#include <cstring>
+#include <optional>
+#include <stdexcept>
+#include <type_traits>
+
+namespace bearing {
+
+namespace {
+
+class Writer {
+ public:
+  explicit Writer(std::string& out) : out_(out) {}
+  template <class T>
+  void raw(T v) {
+    static_assert(std::is_trivially_copyable_v<T>);
+    char bytes[sizeof(T)];
+    std::memcpy(bytes, &v, sizeof(T));
+    out_.append(bytes, sizeof(T));
+  }
+  void size(std::size_t n) { raw(static_cast<std::uint64_t>(n)); }
+  void text(const std::string& s) {
+    size(s.size());
+    out_.append(s);
+  }
+  void maybe(const std::optional<double>& v) {
+    raw(static_cast<std::uint8_t>(v.has_value()));
+    if (v) raw(*v);
+  }
+
+ private:
+  std::string& out_;
+};
+
+class Reader {
+ public:
+  explicit Reader(std::string_view in) : in_(in) {}
+  template <class T>
+  T raw() {
+    need(sizeof(T));
+    T v;
+    std::memcpy(&v, in_.data() + at_, sizeof(T));
+    at_ += sizeof(T);
+    return v;
+  }
+  std::size_t size() {
+    const auto n = raw<std::uint64_t>();
+    if (n > in_.size() - at_) fail();  // every element takes at least one byte
+    return static_cast<std::size_t>(n);
+  }
+  std::string text() {
+    const std::size_t n = size();
+    std::string s(in_.substr(at_, n));
+    at_ += n;
+    return s;
+  }
+  std::optional<double> maybe() {
+    if (raw<std::uint8_t>() == 0) return std::nullopt;
+    return raw<double>();
+  }
+  void finish() const {
+    if (at_ != in_.size()) fail();
+  }
+
+ private:
+  void need(std::size_t n) const {
+    if (n > in_.size() - at_) fail();
+  }
+  [[noreturn]] static void fail() { throw std::runtime_error("sweep row: malformed bytes"); }
+  std::string_view in_;
+  std::size_t at_ = 0;
+};
+
+void encode_channel(Writer& w, const ChannelSummary& c) {
+  w.text(c.name);
+  w.text(c.unit);
+  w.raw(static_cast<std::int32_t>(c.group));
+  const ChannelStatistics& s = c.statistics;
+  for (double v : {s.mean, s.rms, s.ptp, s.kurtosis, s.crest}) w.raw(v);
+  w.size(c.peaks.size());
+  for (const Peak& p : c.peaks) {
+    w.raw(p.frequency);
+    w.raw(p.amplitude);
+    w.text(p.label);
+    w.raw(p.label_error);
+  }
+}
+
+ChannelSummary decode_channel(Reader& r) {
+  ChannelSummary c;
+  c.name = r.text();
+  c.unit = r.text();
+  c.group = static_cast<ChannelGroup>(r.raw<std::int32_t>());
+  ChannelStatistics& s = c.statistics;
+  for (double* v : {&s.mean, &s.rms, &s.ptp, &s.kurtosis, &s.crest}) *v = r.raw<double>();
+  c.peaks.resize(r.size());
+  for (Peak& p : c.peaks) {
+    p.frequency = r.raw<double>();
+    p.amplitude = r.raw<double>();
+    p.label = r.text();
+    p.label_error = r.raw<double>();
+  }
+  return c;
+}
+
+void encode_microphone(Writer& w, const MicrophoneLevels& m) {
+  for (double v : {m.microphone.radius, m.microphone.angle, m.position.x(), m.position.y(), m.p_rms,
+                   m.p_rms_ring, m.p_rms_balls})
+    w.raw(v);
+  for (const auto* v : {&m.spl_total, &m.spl_ring, &m.spl_balls, &m.nearest_ball_surface})
+    w.maybe(*v);
+}
+
+MicrophoneLevels decode_microphone(Reader& r) {
+  MicrophoneLevels m;
+  for (double* v : {&m.microphone.radius, &m.microphone.angle, &m.position.x(), &m.position.y(),
+                    &m.p_rms, &m.p_rms_ring, &m.p_rms_balls})
+    *v = r.raw<double>();
+  for (auto* v : {&m.spl_total, &m.spl_ring, &m.spl_balls, &m.nearest_ball_surface}) *v = r.maybe();
+  return m;
+}
+
+}  // namespace
+
+void encode_sweep_row(std::size_t index, const SweepRow& row, std::string& out) {
+  Writer w(out);
+  w.size(index);
+  w.size(row.values.size());
+  for (double v : row.values) w.raw(v);
+  w.raw(static_cast<std::uint8_t>(row.ok));
+  w.text(row.error);
+  w.size(row.channels.size());
+  for (const auto& c : row.channels) encode_channel(w, c);
+  w.size(row.microphones.size());
+  for (const auto& m : row.microphones) encode_microphone(w, m);
+}
+
+SweepRow decode_sweep_row(std::string_view bytes, std::size_t& index) {
+  Reader r(bytes);
+  index = static_cast<std::size_t>(r.raw<std::uint64_t>());
+  SweepRow row;
+  row.values.resize(r.size());
+  for (double& v : row.values) v = r.raw<double>();
+  row.ok = r.raw<std::uint8_t>() != 0;
+  row.error = r.text();
+  const std::size_t channels = r.size();
+  for (std::size_t i = 0; i < channels; ++i) row.channels.push_back(decode_channel(r));
+  const std::size_t microphones = r.size();
+  for (std::size_t i = 0; i < microphones; ++i) row.microphones.push_back(decode_microphone(r));
+  r.finish();
+  return row;
+}
+
+}  // namespace bearing

@@ -1,0 +1,68 @@
+#!/usr/bin/env bash
+# `mpirun -np N bearing-sim sweep` writes the sweep.csv of `bearing-sim sweep --jobs 1`, byte for
+# byte (issue 20): 2 and 3 ranks, 1 and 2 threads per rank, failed cases (negative clearance) and
+# microphone levels in the rows; only rank 0 prints; an input error ends every rank (no hang).
+#
+#   tests/cli/sweep_mpi.sh BEARING_SIM WORK_DIR mpi|nompi
+#
+# Exit 77 (skipped, with the reason) when bearing-sim was built without MPI or mpirun is missing.
+set -euo pipefail
+sim=$1
+work=$2
+built=$3
+
+if [[ $built != mpi ]]; then
+  echo "skipped: bearing-sim was built without MPI (install mpi-default-dev and reconfigure)"
+  exit 77
+fi
+if ! command -v mpirun >/dev/null; then
+  echo "skipped: mpirun not found (Debian package mpi-default-bin)"
+  exit 77
+fi
+# This test may run as root (containers) and on fewer cores than ranks.
+flags=(--oversubscribe)
+if [[ $(id -u) -eq 0 ]]; then flags+=(--allow-run-as-root); fi
+mpi() { timeout 300 mpirun "${flags[@]}" "$@"; }
+
+rm -rf "$work"
+mkdir -p "$work"
+sweep=(sweep --vary bearing.clearance=-20um:20um:3 --vary operation.speed=1000rpm:3000rpm:5
+  --set solver.duration=0.05 --set solver.transient=0.01
+  --set 'acoustics.microphones=[[0.5, "0 deg"], [1.0, "90 deg"]]' --quiet)
+
+"$sim" "${sweep[@]}" --jobs 1 --out "$work/serial" >/dev/null
+status=0
+for run in "2 1" "2 2" "3 1"; do
+  read -r ranks jobs <<<"$run"
+  out=$work/np${ranks}_jobs${jobs}
+  mpi -np "$ranks" "$sim" "${sweep[@]}" --jobs "$jobs" --out "$out" >"$out.stdout"
+  if cmp "$work/serial/sweep.csv" "$out/sweep.csv"; then
+    echo "ok: mpirun -np $ranks, --jobs $jobs: the same sweep.csv as --jobs 1"
+  else
+    echo "FAILED: mpirun -np $ranks, --jobs $jobs: sweep.csv differs from --jobs 1"
+    status=1
+  fi
+  if [[ $(grep -c '^sweep: 15 cases, 5 failed' "$out.stdout") -ne 1 ]]; then
+    echo "FAILED: mpirun -np $ranks: expected one summary line (rank 0's), got:"
+    cat "$out.stdout"
+    status=1
+  fi
+done
+
+# An error on every rank (an unknown key) ends the run with an error, not a hang.
+set +e
+mpi -np 2 "$sim" sweep --vary operation.sped=1:2:2 --out "$work/bad" >"$work/bad.log" 2>&1
+rc=$?
+set -e
+if [[ $rc -eq 0 || $rc -eq 124 ]]; then
+  echo "FAILED: an unknown key under mpirun: exit $rc (0: no error, 124: hung)"
+  cat "$work/bad.log"
+  status=1
+elif ! grep -q 'operation.sped' "$work/bad.log"; then
+  echo "FAILED: an unknown key under mpirun: the message does not name it"
+  cat "$work/bad.log"
+  status=1
+else
+  echo "ok: an input error under mpirun ends every rank (exit $rc)"
+fi
+exit $status
