@@ -231,21 +231,33 @@ int sweep_command(const SweepOptions& o, bool tty) {
   bearing::SweepRunner runner;  // run_sweep; under mpirun the ranks share the cases
 #ifdef BEARING_WITH_MPI
   if (world_size() > 1) {
-    if (resume)
-      throw bearing::InputError("--resume " + o.resume +
-                                ": not under mpirun yet; resume it with --jobs on one machine");
-    runner = bearing::run_sweep_mpi;
+    // Rank 0 tells the workers how many cases remain (fewer than the part's on --resume); they
+    // are the part's last ones, so every rank maps rank 0's case numbers to the same points.
+    runner = [](const bearing::SweepLoader& load, std::size_t cases, const auto& point, int jobs,
+                const auto& sink, const bearing::SweepProgress& progress) {
+      unsigned long long n = cases;
+      MPI_Bcast(&n, 1, MPI_UNSIGNED_LONG_LONG, 0, MPI_COMM_WORLD);
+      bearing::run_sweep_mpi(load, cases, point, jobs, sink, progress);
+    };
   }
-  if (world_rank() != 0) {  // a worker: the same plan, cases dealt by rank 0
-    const auto design = design_of(o);
-    const bearing::SweepBase base = bearing::sweep_base(o.case_path, overrides_of(o.sets));
-    bearing::SweepPart part;
-    if (!o.part.empty()) part = bearing::parse_part(o.part);
-    const auto [first, end] = bearing::part_range(design->size(), part);
-    runner(
-        [&](const std::vector<bearing::Override>& p) { return bearing::load_sweep_case(base, p); },
-        end - first, [&, first = first](std::size_t i) { return design->point(first + i); }, o.jobs,
-        {}, {});
+  if (world_rank() != 0) {  // a worker: the same plan; rank 0 deals the cases and writes
+    bearing::SweepPlan plan;
+    if (resume) {
+      plan = bearing::read_sweep_record(o.resume);
+    } else {
+      plan.design = design_of(o);
+      plan.base = bearing::sweep_base(o.case_path, overrides_of(o.sets));
+      if (!o.part.empty()) plan.part = bearing::parse_part(o.part);
+    }
+    const std::size_t end = bearing::part_range(plan.design->size(), plan.part).second;
+    unsigned long long n = 0;
+    MPI_Bcast(&n, 1, MPI_UNSIGNED_LONG_LONG, 0, MPI_COMM_WORLD);
+    const std::size_t start = end - static_cast<std::size_t>(n);
+    bearing::run_sweep_mpi(
+        [&](const std::vector<bearing::Override>& p) {
+          return bearing::load_sweep_case(plan.base, p);
+        },
+        n, [&](std::size_t i) { return plan.design->point(start + i); }, o.jobs, {}, {});
     return 0;
   }
 #endif

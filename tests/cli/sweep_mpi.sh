@@ -65,4 +65,34 @@ elif ! grep -q 'operation.sped' "$work/bad.log"; then
 else
   echo "ok: an input error under mpirun ends every rank (exit $rc)"
 fi
+# A sweep killed under mpirun (SIGKILL to every process) and resumed under mpirun gives the file of
+# an uninterrupted run: rank 0 tells the workers how many cases remain, so they map its case
+# numbers to the same points.
+many=(--vary operation.speed=1000rpm:3000rpm:150 --set solver.duration=0.1
+      --set solver.transient=0.02)
+"$sim" sweep "${many[@]}" --out "$work/whole" --jobs 1 --quiet >/dev/null
+mpi -np 2 "$sim" sweep "${many[@]}" --out "$work/killed" --jobs 1 >/dev/null 2>&1 &
+launcher=$!
+for _ in $(seq 1 400); do
+  if [[ -f $work/killed/.sweep.csv.partial ]] &&
+     (($(wc -l <"$work/killed/.sweep.csv.partial") > 20)); then
+    break
+  fi
+  sleep 0.05
+done
+pkill -9 -f -- "--out $work/killed" || true
+wait "$launcher" 2>/dev/null || true
+if [[ -f $work/killed/sweep.csv ]]; then
+  echo "FAILED: the sweep to kill finished before it was killed; make it longer"
+  status=1
+else
+  mpi -np 2 "$sim" sweep --resume "$work/killed" --jobs 1 >"$work/resume.log" 2>&1 || true
+  if cmp "$work/whole/sweep.csv" "$work/killed/sweep.csv"; then
+    echo "ok: killed and resumed under mpirun: the same sweep.csv as an uninterrupted run"
+  else
+    echo "FAILED: killed and resumed under mpirun: sweep.csv differs"
+    cat "$work/resume.log"
+    status=1
+  fi
+fi
 exit $status
