@@ -282,6 +282,8 @@ int sweep_command(const SweepOptions& o, bool tty) {
     counts = bearing::write_sweep(out_dir, plan, o.jobs, progress, runner, false, hook);
     saved = static_cast<bool>(hook.add);
   }
+  // A sweep.h5 an earlier sweep left here does not belong to this sweep.csv.
+  if (!saved) std::filesystem::remove(std::filesystem::path(out_dir) / "sweep.h5");
   const std::filesystem::path file = std::filesystem::path(out_dir) / "sweep.csv";
   std::cout << "sweep: " << counts.cases << " cases, " << counts.failed << " failed; wrote "
             << file.string() << (saved ? " and sweep.h5" : "") << "\n";

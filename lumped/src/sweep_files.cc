@@ -183,6 +183,11 @@ SweepCounts write_sweep(const std::string& dir, const SweepPlan& plan, int threa
         "ranks): save a data set with --jobs on one machine, or one --part each");
   if (hook.add && resume)
     throw InputError("--save with --resume: the killed sweep's sweep.h5 is gone; run it again");
+  if (plan.part.count > plan.design->size())
+    throw InputError("--part " + std::to_string(plan.part.index) + "/" +
+                     std::to_string(plan.part.count) + ": more parts than the design's " +
+                     std::to_string(plan.design->size()) + " cases; use at most " +
+                     std::to_string(plan.design->size()) + " parts");
   std::error_code ec;
   fs::create_directories(dir, ec);
   if (ec) throw InputError("--out " + dir + ": cannot create the folder (" + ec.message() + ")");

@@ -115,5 +115,12 @@ check("blocked: exit 2", run.returncode == 2)
 check("blocked: the message names sweep.h5", "sweep.h5" in run.stderr)
 check("blocked: nothing else written", sorted(p.name for p in blocked.iterdir()) ==
       [".sweep.csv.partial", "sweep.design.json", "sweep.h5"])
+# A sweep without --save into the folder of one with it removes the sweep.h5 that no longer
+# belongs to its sweep.csv.
+subprocess.run([sim, "sweep", "--out", str(work / "failed"), "--vary",
+                "bearing.clearance=0um:10um:2", *tiny], check=True, stdout=subprocess.DEVNULL)
+check("rerun without --save: the old sweep.h5 is gone",
+      not (work / "failed" / "sweep.h5").exists() and (work / "failed" / "sweep.csv").exists())
+
 print(f"{failures} failed")
 sys.exit(1 if failures else 0)

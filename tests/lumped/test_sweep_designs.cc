@@ -120,4 +120,23 @@ TEST(SweepDesign, PartsTileTheDesign) {
     EXPECT_THROW(bearing::parse_part(bad), InputError) << bad;
 }
 
+TEST(SweepDesign, MorePartsThanCasesIsAnInputError) {
+  bearing::SweepPlan plan;
+  std::vector<bearing::SweepAxis> axes = {bearing::parse_vary("operation.speed=1000rpm:2000rpm:3")};
+  plan.design = bearing::grid_design(std::move(axes));
+  plan.base = bearing::sweep_base("", {{"solver.duration", "0.01 s"}, {"solver.transient", "0 s"}});
+  plan.part = bearing::parse_part("2/4");
+  const auto dir = std::filesystem::temp_directory_path() / "bearing_sweep_parts_check";
+  std::filesystem::remove_all(dir);
+  try {
+    bearing::write_sweep(dir.string(), plan, 1);
+    ADD_FAILURE() << "no error";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("--part 2/4"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("3 cases"), std::string::npos) << e.what();
+  }
+  EXPECT_FALSE(std::filesystem::exists(dir));  // checked before anything is written
+  std::filesystem::remove_all(dir);
+}
+
 }  // namespace
