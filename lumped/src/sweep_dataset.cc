@@ -275,6 +275,21 @@ struct SweepDataset::File {
   bool closed = false;
 };
 
+namespace {
+
+// The group `name` of one case with its index, the design's values (SI) and its status.
+Handle case_group(hid_t cases, const std::string& name, std::size_t index,
+                  const std::vector<double>& values, const char* status) {
+  Handle g(H5Gcreate2(cases, name.c_str(), H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), H5Gclose,
+           ("create the group of case " + name).c_str());
+  index_attribute(g, index);
+  doubles_attribute(g, "values", values);
+  string_attribute(g, "status", status);
+  return g;
+}
+
+}  // namespace
+
 SweepDataset::SweepDataset() = default;
 
 SweepDataset::~SweepDataset() {
@@ -335,12 +350,7 @@ void SweepDataset::add_case(std::size_t index, const std::vector<double>& values
                             const RunSummary& s, const std::string& summary_json) {
   if (!file_ || file_->closed) throw InputError("sweep.h5: add_case before open or after close");
   QuietErrors quiet;
-  const std::string name = group_name(index);
-  Handle g(H5Gcreate2(*file_->cases_group, name.c_str(), H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT),
-           H5Gclose, ("create the group of case " + name).c_str());
-  index_attribute(g, index);
-  doubles_attribute(g, "values", values);
-  string_attribute(g, "status", "ok");
+  const Handle g = case_group(*file_->cases_group, group_name(index), index, values, "ok");
   string_attribute(g, "case_toml", case_toml);
   for (SweepSave w : file_->what) {
     if (w == SweepSave::response) write_table(g, "response", response_table(response));
@@ -356,12 +366,7 @@ void SweepDataset::add_failed_case(std::size_t index, const std::vector<double>&
                                    const std::string& error, const std::string& case_toml) {
   if (!file_ || file_->closed) throw InputError("sweep.h5: add_case before open or after close");
   QuietErrors quiet;
-  const std::string name = group_name(index);
-  Handle g(H5Gcreate2(*file_->cases_group, name.c_str(), H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT),
-           H5Gclose, ("create the group of case " + name).c_str());
-  index_attribute(g, index);
-  doubles_attribute(g, "values", values);
-  string_attribute(g, "status", "failed");
+  const Handle g = case_group(*file_->cases_group, group_name(index), index, values, "failed");
   string_attribute(g, "error", error);
   if (!case_toml.empty()) string_attribute(g, "case_toml", case_toml);
   ++file_->cases;
