@@ -25,11 +25,6 @@ constexpr const char* kLayout =
     "(rows mean, rms, ptp, kurtosis, crest x channel columns; attrs rows, columns, units, "
     "summary_json); see sweep_dataset.h";
 
-constexpr std::pair<SweepSave, const char*> kSaveNames[] = {{SweepSave::response, "response"},
-                                                            {SweepSave::spectrum, "spectrum"},
-                                                            {SweepSave::envelope, "envelope"},
-                                                            {SweepSave::summary, "summary"}};
-
 // An HDF5 identifier closed by its own close function when it goes out of scope.
 class Handle {
  public:
@@ -125,17 +120,10 @@ void index_attribute(hid_t object, std::size_t index) {
   write_attribute(object, "index", H5T_STD_U64LE, H5T_NATIVE_ULLONG, space, &v);
 }
 
-// A table in memory: row-major doubles and the names (and units) of its columns.
-struct Table {
-  std::size_t rows = 0;
-  std::vector<std::string> columns, units;
-  std::vector<double> values;
-};
-
 // The table as a float64 dataset (rows, columns) with attributes columns and units: chunked by
 // whole rows (≈kChunkBytes per chunk) and compressed (shuffle, deflate). An empty table cannot be
 // chunked: it is stored contiguous.
-void write_table(hid_t group, const char* name, const Table& t) {
+void write_table(hid_t group, const char* name, const SweepTable& t) {
   const hsize_t dims[2] = {t.rows, t.columns.size()};
   Handle space(H5Screate_simple(2, dims, nullptr), H5Sclose, "create a dataspace");
   Handle plist(H5Pcreate(H5P_DATASET_CREATE), H5Pclose, "create a property list");
@@ -155,116 +143,7 @@ void write_table(hid_t group, const char* name, const Table& t) {
   strings_attribute(ds, "units", t.units);
 }
 
-// The abscissa `x` [x_unit] then one column per name with column(i)[k]: the layout of the .npy
-// tables of output.cc (write_table there), whose names and units columns.json lists.
-template <class Column>
-Table make_table(const std::string& x_name, const std::string& x_unit, const std::vector<double>& x,
-                 const std::vector<std::string>& names, const std::vector<std::string>& units,
-                 const Column& column) {
-  Table t;
-  t.rows = x.size();
-  t.columns.push_back(x_name);
-  t.units.push_back(x_unit);
-  t.columns.insert(t.columns.end(), names.begin(), names.end());
-  t.units.insert(t.units.end(), units.begin(), units.end());
-  const std::size_t width = t.columns.size();
-  t.values.resize(t.rows * width);
-  for (std::size_t k = 0; k < t.rows; ++k) t.values[k * width] = x[k];
-  for (std::size_t i = 0; i < names.size(); ++i) {
-    const std::vector<double>& v = column(i);
-    for (std::size_t k = 0; k < t.rows; ++k) t.values[k * width + 1 + i] = v[k];
-  }
-  return t;
-}
-
-Table response_table(const Response& r) {
-  std::vector<std::string> names, units;
-  for (const Channel& ch : r.channels) names.push_back(ch.name), units.push_back(ch.unit);
-  return make_table("t", "s", r.time, names, units,
-                    [&](std::size_t i) -> const std::vector<double>& { return r.values[i]; });
-}
-
-std::string unit_of(const Response& r, const std::string& name) {
-  for (const Channel& ch : r.channels)
-    if (ch.name == name) return ch.unit;
-  return "";
-}
-
-Table spectrum_table(const Response& r, const RunSummary& s) {
-  static const std::vector<double> none;
-  std::vector<std::string> units;
-  for (const auto& name : s.spectrum_channels) units.push_back(unit_of(r, name));
-  return make_table("frequency", "Hz", s.spectra.empty() ? none : s.spectra.front().frequency,
-                    s.spectrum_channels, units, [&](std::size_t i) -> const std::vector<double>& {
-                      return s.spectra[i].amplitude;
-                    });
-}
-
-Table envelope_table(const RunSummary& s) {
-  std::vector<std::string> names, units;
-  for (const EnvelopeSummary& e : s.envelopes)
-    names.push_back("env_" + e.channel), units.push_back(e.unit);
-  return make_table("frequency", "Hz", s.envelopes.front().spectrum.frequency, names, units,
-                    [&](std::size_t i) -> const std::vector<double>& {
-                      return s.envelopes[i].spectrum.amplitude;
-                    });
-}
-
-// summary: (5, channels), rows mean, rms, ptp, kurtosis, crest.
-void write_summary(hid_t group, const RunSummary& s, const std::string& summary_json) {
-  static const std::vector<std::string> rows = {"mean", "rms", "ptp", "kurtosis", "crest"};
-  Table t;
-  t.rows = rows.size();
-  for (const ChannelSummary& ch : s.channels)
-    t.columns.push_back(ch.name), t.units.push_back(ch.unit);
-  const std::size_t width = t.columns.size();
-  t.values.resize(t.rows * width);
-  for (std::size_t i = 0; i < width; ++i) {
-    const auto& st = s.channels[i].statistics;
-    const double v[] = {st.mean, st.rms, st.ptp, st.kurtosis, st.crest};
-    for (std::size_t k = 0; k < t.rows; ++k) t.values[k * width + i] = v[k];
-  }
-  write_table(group, "summary", t);
-  Handle ds(H5Dopen2(group, "summary", H5P_DEFAULT), H5Dclose, "open the summary");
-  strings_attribute(ds, "rows", rows);
-  if (!summary_json.empty()) string_attribute(ds, "summary_json", summary_json);
-}
-
-bool has(const std::vector<SweepSave>& what, SweepSave w) {
-  return std::find(what.begin(), what.end(), w) != what.end();
-}
-
 }  // namespace
-
-std::vector<SweepSave> parse_sweep_save(const std::vector<std::string>& texts) {
-  std::vector<SweepSave> out;
-  for (const std::string& text : texts) {
-    std::string_view rest = text;
-    while (true) {
-      const std::size_t comma = rest.find(',');
-      const std::string_view name = rest.substr(0, comma);
-      bool found = false;
-      for (const auto& [w, n] : kSaveNames)
-        if (name == n) {
-          found = true;
-          if (!has(out, w)) out.push_back(w);
-        }
-      if (!found)
-        throw InputError("--save " + text + ": unknown \"" + std::string(name) +
-                         "\"; allowed: response, spectrum, envelope, summary (a comma list, or "
-                         "--save repeated)");
-      if (comma == std::string_view::npos) break;
-      rest.remove_prefix(comma + 1);
-    }
-  }
-  return out;
-}
-
-const char* sweep_save_name(SweepSave what) {
-  for (const auto& [w, n] : kSaveNames)
-    if (w == what) return n;
-  return "";
-}
 
 struct SweepDataset::File {
   fs::path path, temporary;
@@ -340,24 +219,30 @@ std::string SweepDataset::group_name(std::size_t index) const {
 
 void SweepDataset::add_case(std::size_t index, const std::vector<double>& values, const Case& c,
                             const SimulationResult& r, const RunSummary& s) {
-  const bool summary = file_ && has(file_->what, SweepSave::summary);
-  add_case(index, values, case_to_toml(c), r.response, s,
-           summary ? summary_json(c, r, s).dump(2) + "\n" : std::string());
+  if (!file_ || file_->closed) throw InputError("sweep.h5: add_case before open or after close");
+  add_case(index, values, sweep_case_tables(c, r, s, file_->what));
 }
 
 void SweepDataset::add_case(std::size_t index, const std::vector<double>& values,
                             const std::string& case_toml, const Response& response,
                             const RunSummary& s, const std::string& summary_json) {
   if (!file_ || file_->closed) throw InputError("sweep.h5: add_case before open or after close");
+  add_case(index, values, sweep_case_tables(case_toml, response, s, summary_json, file_->what));
+}
+
+void SweepDataset::add_case(std::size_t index, const std::vector<double>& values,
+                            const SweepCaseTables& t) {
+  if (!file_ || file_->closed) throw InputError("sweep.h5: add_case before open or after close");
   QuietErrors quiet;
   const Handle g = case_group(*file_->cases_group, group_name(index), index, values, "ok");
-  string_attribute(g, "case_toml", case_toml);
-  for (SweepSave w : file_->what) {
-    if (w == SweepSave::response) write_table(g, "response", response_table(response));
-    if (w == SweepSave::spectrum) write_table(g, "spectrum", spectrum_table(response, s));
-    if (w == SweepSave::envelope && !s.envelopes.empty())
-      write_table(g, "envelope", envelope_table(s));
-    if (w == SweepSave::summary) write_summary(g, s, summary_json);
+  string_attribute(g, "case_toml", t.case_toml);
+  for (const SweepTable& table : t.tables) {
+    write_table(g, table.name.c_str(), table);
+    if (table.row_names.empty() && table.name != "summary") continue;
+    Handle ds(H5Dopen2(g, table.name.c_str(), H5P_DEFAULT), H5Dclose, "open a table");
+    if (!table.row_names.empty()) strings_attribute(ds, "rows", table.row_names);
+    if (table.name == "summary" && !t.summary_json.empty())
+      string_attribute(ds, "summary_json", t.summary_json);
   }
   ++file_->cases;
 }

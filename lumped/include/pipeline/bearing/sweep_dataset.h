@@ -35,18 +35,9 @@
 
 #include "bearing/case_file.h"
 #include "bearing/simulation.h"
+#include "bearing/sweep_tables.h"
 
 namespace bearing {
-
-/// What `--save` may name.
-enum class SweepSave { response, spectrum, envelope, summary };
-
-/// Parses `--save` values: each a name or a comma list ("response,summary"), repeats allowed.
-/// Throws InputError naming `--save`, the text and the names allowed. Empty input: empty result.
-std::vector<SweepSave> parse_sweep_save(const std::vector<std::string>& texts);
-
-/// The name of a SweepSave ("response", …).
-const char* sweep_save_name(SweepSave what);
 
 /// One varied key of the design: its name and the SI unit of its values ("" if dimensionless).
 struct SweepDatasetKey {
@@ -76,6 +67,8 @@ class SweepDataset {
   /// `summary`, the summary.json text ("" leaves the attribute out).
   void add_case(std::size_t index, const std::vector<double>& values, const std::string& case_toml,
                 const Response& response, const RunSummary& s, const std::string& summary_json);
+  /// The same from the tables of sweep_case_tables (built where the case ran).
+  void add_case(std::size_t index, const std::vector<double>& values, const SweepCaseTables& t);
   /// A case that failed: its group with status "failed", `error` and, if known, `case_toml`.
   void add_failed_case(std::size_t index, const std::vector<double>& values,
                        const std::string& error, const std::string& case_toml = "");
