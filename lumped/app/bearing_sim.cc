@@ -177,10 +177,10 @@ bearing::SweepRowHook save_hook(bearing::SweepDataset& dataset, const std::strin
     throw bearing::InputError("--out " + out_dir + ": cannot create the folder (" + ec.message() +
                               ")");
   dataset.open((std::filesystem::path(out_dir) / "sweep.h5").string(), keys, what, design.size());
-  return {[&dataset](std::size_t i, const bearing::SweepRow& row) {
-            if (row.result)
-              dataset.add_case(i, row.values, row.result->c, row.result->result,
-                               row.result->summary);
+  return {what,
+          [&dataset](std::size_t i, const bearing::SweepRow& row) {
+            if (row.tables)
+              dataset.add_case(i, row.values, *row.tables);
             else
               dataset.add_failed_case(i, row.values, row.error);
           },
@@ -234,10 +234,10 @@ int sweep_command(const SweepOptions& o, bool tty) {
     // Rank 0 tells the workers how many cases remain (fewer than the part's on --resume); they
     // are the part's last ones, so every rank maps rank 0's case numbers to the same points.
     runner = [](const bearing::SweepLoader& load, std::size_t cases, const auto& point, int jobs,
-                const auto& sink, const bearing::SweepProgress& progress) {
+                const auto& sink, const bearing::SweepProgress& progress, const auto& save) {
       unsigned long long n = cases;
       MPI_Bcast(&n, 1, MPI_UNSIGNED_LONG_LONG, 0, MPI_COMM_WORLD);
-      bearing::run_sweep_mpi(load, cases, point, jobs, sink, progress);
+      bearing::run_sweep_mpi(load, cases, point, jobs, sink, progress, save);
     };
   }
   if (world_rank() != 0) {  // a worker: the same plan; rank 0 deals the cases and writes
@@ -257,7 +257,8 @@ int sweep_command(const SweepOptions& o, bool tty) {
         [&](const std::vector<bearing::Override>& p) {
           return bearing::load_sweep_case(plan.base, p);
         },
-        n, [&](std::size_t i) { return plan.design->point(start + i); }, o.jobs, {}, {});
+        n, [&](std::size_t i) { return plan.design->point(start + i); }, o.jobs, {}, {},
+        bearing::parse_sweep_save(o.save));
     return 0;
   }
 #endif

@@ -138,18 +138,18 @@ std::vector<SweepPoint> sweep_points(const std::vector<SweepAxis>& axes) {
 
 namespace {
 
-SweepRow run_point(const SweepLoader& load, const SweepPoint& point, bool keep) {
+SweepRow run_point(const SweepLoader& load, const SweepPoint& point,
+                   const std::vector<SweepSave>& save) {
   SweepRow row;
   row.values = point.values;
   try {
-    Case c = load(point.overrides);
-    SimulationResult r = simulate(c);
+    const Case c = load(point.overrides);
+    const SimulationResult r = simulate(c);
     RunSummary summary = summarize(c, r);
-    row.channels = summary.channels;
-    if (summary.noise) row.microphones = summary.noise->microphones;
-    if (keep)
-      row.result = std::make_shared<const SweepCaseResult>(
-          SweepCaseResult{std::move(c), std::move(r), std::move(summary)});
+    if (!save.empty())
+      row.tables = std::make_shared<const SweepCaseTables>(sweep_case_tables(c, r, summary, save));
+    row.channels = std::move(summary.channels);
+    if (summary.noise) row.microphones = std::move(summary.noise->microphones);
     row.ok = true;
   } catch (const std::exception& e) {
     row.ok = false;
@@ -166,7 +166,7 @@ constexpr std::size_t kWindowPerWorker = 4;
 void run_sweep(const SweepLoader& load, std::size_t cases,
                const std::function<SweepPoint(std::size_t)>& point, int threads,
                const std::function<void(std::size_t, SweepRow&&)>& sink,
-               const SweepProgress& progress, bool keep_results) {
+               const SweepProgress& progress, const std::vector<SweepSave>& save) {
   if (cases == 0) return;
   unsigned n = threads > 0 ? static_cast<unsigned>(threads) : std::thread::hardware_concurrency();
   n = static_cast<unsigned>(std::max<std::size_t>(1, std::min<std::size_t>(n, cases)));
@@ -187,7 +187,7 @@ void run_sweep(const SweepLoader& load, std::size_t cases,
         if (next >= cases || sink_error) return;
         i = next++;
       }
-      SweepRow row = run_point(load, point(i), keep_results);
+      SweepRow row = run_point(load, point(i), save);
       std::lock_guard<std::mutex> lock(mutex);
       waiting.emplace(i, std::move(row));
       if (progress) progress(++done, cases);

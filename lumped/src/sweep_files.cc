@@ -177,10 +177,6 @@ SweepPlan read_sweep_record(const std::string& dir) {
 SweepCounts write_sweep(const std::string& dir, const SweepPlan& plan, int threads,
                         const SweepProgress& progress, const SweepRunner& runner, bool resume,
                         const SweepRowHook& hook) {
-  if (hook.add && runner)
-    throw InputError(
-        "--save: not with this runner (under mpirun the runs' arrays stay on their "
-        "ranks): save a data set with --jobs on one machine, or one --part each");
   if (hook.add && resume)
     throw InputError("--save with --resume: the killed sweep's sweep.h5 is gone; run it again");
   if (plan.part.count > plan.design->size())
@@ -222,7 +218,8 @@ SweepCounts write_sweep(const std::string& dir, const SweepPlan& plan, int threa
     counts.failed = kept.failed;
     const std::size_t start = first + kept.rows;
     const bool keep = static_cast<bool>(hook.add);
-    const auto run = runner ? runner : SweepRunner([keep](auto&&... a) { run_sweep(a..., keep); });
+    const std::vector<SweepSave> no_tables;
+    const auto run = runner ? runner : SweepRunner([](auto&&... a) { run_sweep(a...); });
     run([&](const std::vector<Override>& point) { return load_sweep_case(plan.base, point); },
         end - start, [&](std::size_t i) { return design.point(start + i); }, threads,
         [&](std::size_t i, SweepRow&& row) {
@@ -232,7 +229,8 @@ SweepCounts write_sweep(const std::string& dir, const SweepPlan& plan, int threa
         },
         [&](std::size_t done, std::size_t) {
           if (progress) progress(kept.rows + done, counts.cases);
-        });
+        },
+        keep ? hook.save : no_tables);
     writer.finish();
     f.close();
     if (!f) throw cannot_write();

@@ -52,11 +52,12 @@ std::chrono::microseconds next_wait(std::chrono::microseconds wait, bool active)
 }
 
 // One case, run exactly as run_sweep runs it (the same code, so the same bits).
-SweepRow run_one(const SweepLoader& load, const SweepPoint& point) {
+SweepRow run_one(const SweepLoader& load, const SweepPoint& point,
+                 const std::vector<SweepSave>& save) {
   SweepRow out;
   run_sweep(
       load, 1, [&](std::size_t) { return point; }, 1,
-      [&](std::size_t, SweepRow&& row) { out = std::move(row); });
+      [&](std::size_t, SweepRow&& row) { out = std::move(row); }, {}, save);
   return out;
 }
 
@@ -79,10 +80,12 @@ class Coordinator {
   Coordinator(const SweepLoader& load, std::size_t cases,
               const std::function<SweepPoint(std::size_t)>& point,
               const std::function<void(std::size_t, SweepRow&&)>& sink,
-              const SweepProgress& progress, std::size_t window, int workers)
+              const SweepProgress& progress, const std::vector<SweepSave>& save, std::size_t window,
+              int workers)
       : load_(load),
         cases_(cases),
         point_(point),
+        save_(save),
         sink_(sink),
         progress_(progress),
         window_(window),
@@ -121,7 +124,7 @@ class Coordinator {
         if (no_more()) return;
         i = next_++;
       }
-      accept(i, run_one(load_, point_(i)));
+      accept(i, run_one(load_, point_(i), save_));
     }
   }
 
@@ -209,6 +212,7 @@ class Coordinator {
   const SweepLoader& load_;
   const std::size_t cases_;
   const std::function<SweepPoint(std::size_t)>& point_;
+  const std::vector<SweepSave>& save_;  // the tables each row carries (sweep --save)
   const std::function<void(std::size_t, SweepRow&&)>& sink_;
   const SweepProgress& progress_;
   const std::size_t window_;
@@ -227,8 +231,9 @@ class Coordinator {
 // Ranks > 0: ask for cases, run them on `threads` threads, send the rows to rank 0.
 class Worker {
  public:
-  Worker(const SweepLoader& load, const std::function<SweepPoint(std::size_t)>& point)
-      : load_(load), point_(point) {}
+  Worker(const SweepLoader& load, const std::function<SweepPoint(std::size_t)>& point,
+         const std::vector<SweepSave>& save)
+      : load_(load), point_(point), save_(save) {}
 
   void run(int threads) {
     std::vector<std::thread> pool;
@@ -263,7 +268,7 @@ class Worker {
         i = todo_.front();
         todo_.pop_front();
       }
-      SweepRow row = run_one(load_, point_(i));
+      SweepRow row = run_one(load_, point_(i), save_);
       std::lock_guard<std::mutex> lock(mutex_);
       finished_.emplace_back(i, std::move(row));
       finished_one_.notify_one();
@@ -323,6 +328,7 @@ class Worker {
 
   const SweepLoader& load_;
   const std::function<SweepPoint(std::size_t)>& point_;
+  const std::vector<SweepSave>& save_;  // the tables each row carries (sweep --save)
   std::mutex mutex_;
   std::condition_variable ready_;         // a case to run, or quit
   std::condition_variable finished_one_;  // a row to send
@@ -352,9 +358,9 @@ int mpi_size() {
 void run_sweep_mpi(const SweepLoader& load, std::size_t cases,
                    const std::function<SweepPoint(std::size_t)>& point, int threads,
                    const std::function<void(std::size_t, SweepRow&&)>& sink,
-                   const SweepProgress& progress) {
+                   const SweepProgress& progress, const std::vector<SweepSave>& save) {
   const int size = mpi_size();
-  if (size <= 1) return run_sweep(load, cases, point, threads, sink, progress);
+  if (size <= 1) return run_sweep(load, cases, point, threads, sink, progress, save);
   const int rank = mpi_rank();
   const int own = threads_of_rank(threads);
   // Every rank's workers, the window of rank 0's reorder buffer: collective, on every rank.
@@ -363,9 +369,9 @@ void run_sweep_mpi(const SweepLoader& load, std::size_t cases,
   MPI_Allreduce(&slots, &all_slots, 1, MPI_INT, MPI_SUM, MPI_COMM_WORLD);
   if (rank == 0) {
     const std::size_t window = kWindowPerWorker * static_cast<std::size_t>(all_slots);
-    Coordinator(load, cases, point, sink, progress, window, size - 1).run(own);
+    Coordinator(load, cases, point, sink, progress, save, window, size - 1).run(own);
   } else {
-    Worker(load, point).run(own);
+    Worker(load, point, save).run(own);
   }
 }
 

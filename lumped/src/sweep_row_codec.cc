@@ -5,6 +5,7 @@
 
 #include <cstdint>
 #include <cstring>
+#include <memory>
 #include <optional>
 #include <stdexcept>
 #include <type_traits>
@@ -125,6 +126,53 @@ MicrophoneLevels decode_microphone(Reader& r) {
   return m;
 }
 
+void encode_strings(Writer& w, const std::vector<std::string>& v) {
+  w.size(v.size());
+  for (const auto& s : v) w.text(s);
+}
+
+std::vector<std::string> decode_strings(Reader& r) {
+  std::vector<std::string> v(r.size());
+  for (auto& s : v) s = r.text();
+  return v;
+}
+
+// `--save`'s tables of the row (sweep_tables.h), if it carries them.
+void encode_tables(Writer& w, const SweepCaseTables* t) {
+  w.raw(static_cast<std::uint8_t>(t != nullptr));
+  if (!t) return;
+  w.text(t->case_toml);
+  w.text(t->summary_json);
+  w.size(t->tables.size());
+  for (const SweepTable& table : t->tables) {
+    w.text(table.name);
+    w.size(table.rows);
+    encode_strings(w, table.columns);
+    encode_strings(w, table.units);
+    encode_strings(w, table.row_names);
+    w.size(table.values.size());
+    for (double v : table.values) w.raw(v);
+  }
+}
+
+std::shared_ptr<const SweepCaseTables> decode_tables(Reader& r) {
+  if (r.raw<std::uint8_t>() == 0) return nullptr;
+  auto t = std::make_shared<SweepCaseTables>();
+  t->case_toml = r.text();
+  t->summary_json = r.text();
+  t->tables.resize(r.size());
+  for (SweepTable& table : t->tables) {
+    table.name = r.text();
+    table.rows = static_cast<std::size_t>(r.raw<std::uint64_t>());
+    table.columns = decode_strings(r);
+    table.units = decode_strings(r);
+    table.row_names = decode_strings(r);
+    table.values.resize(r.size());
+    for (double& v : table.values) v = r.raw<double>();
+  }
+  return t;
+}
+
 }  // namespace
 
 void encode_sweep_row(std::size_t index, const SweepRow& row, std::string& out) {
@@ -138,6 +186,7 @@ void encode_sweep_row(std::size_t index, const SweepRow& row, std::string& out) 
   for (const auto& c : row.channels) encode_channel(w, c);
   w.size(row.microphones.size());
   for (const auto& m : row.microphones) encode_microphone(w, m);
+  encode_tables(w, row.tables.get());
 }
 
 SweepRow decode_sweep_row(std::string_view bytes, std::size_t& index) {
@@ -152,6 +201,7 @@ SweepRow decode_sweep_row(std::string_view bytes, std::size_t& index) {
   for (std::size_t i = 0; i < channels; ++i) row.channels.push_back(decode_channel(r));
   const std::size_t microphones = r.size();
   for (std::size_t i = 0; i < microphones; ++i) row.microphones.push_back(decode_microphone(r));
+  row.tables = decode_tables(r);
   r.finish();
   return row;
 }

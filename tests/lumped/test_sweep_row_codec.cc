@@ -5,6 +5,7 @@
 #include <cstdint>
 #include <cstring>
 #include <limits>
+#include <memory>
 #include <optional>
 #include <stdexcept>
 #include <string>
@@ -163,6 +164,51 @@ TEST(SweepRowCodec, MalformedBytesAreRefused) {
                  std::runtime_error)
         << n;
   EXPECT_THROW(bearing::decode_sweep_row(bytes + "x", index), std::runtime_error);
+}
+
+TEST(SweepRowCodec, SavedTablesRoundTripBitForBit) {
+  // `sweep --save` under mpirun: the tables built on a worker rank reach rank 0's sweep.h5.
+  bearing::SweepRow row = full_row();
+  auto t = std::make_shared<bearing::SweepCaseTables>();
+  t->case_toml = "[bearing]\npreset = \"6308\"\n";
+  t->summary_json = "{\"channels\": {}}\n";
+  bearing::SweepTable response;
+  response.name = "response";
+  response.rows = 2;
+  response.columns = {"t", "x"};
+  response.units = {"s", "m"};
+  response.values = {0.0, -0.0, 5e-6, std::numeric_limits<double>::denorm_min()};
+  bearing::SweepTable summary;
+  summary.name = "summary";
+  summary.rows = 5;
+  summary.columns = {"x"};
+  summary.units = {"m"};
+  summary.row_names = {"mean", "rms", "ptp", "kurtosis", "crest"};
+  summary.values = {1.0, 2.0, 3.0, std::nan(""), std::numeric_limits<double>::infinity()};
+  t->tables = {response, summary};
+  row.tables = t;
+  std::string bytes;
+  bearing::encode_sweep_row(7, row, bytes);
+  std::size_t index = 0;
+  const bearing::SweepRow back = bearing::decode_sweep_row(bytes, index);
+  ASSERT_TRUE(back.tables);
+  EXPECT_EQ(back.tables->case_toml, t->case_toml);
+  EXPECT_EQ(back.tables->summary_json, t->summary_json);
+  ASSERT_EQ(back.tables->tables.size(), 2u);
+  for (std::size_t k = 0; k < 2; ++k) {
+    const bearing::SweepTable &a = t->tables[k], &b = back.tables->tables[k];
+    EXPECT_EQ(a.name, b.name);
+    EXPECT_EQ(a.rows, b.rows);
+    EXPECT_EQ(a.columns, b.columns);
+    EXPECT_EQ(a.units, b.units);
+    EXPECT_EQ(a.row_names, b.row_names);
+    ASSERT_EQ(a.values.size(), b.values.size());
+    for (std::size_t i = 0; i < a.values.size(); ++i) expect_same(a.values[i], b.values[i]);
+  }
+  // A row without tables stays without.
+  bytes.clear();
+  bearing::encode_sweep_row(7, full_row(), bytes);
+  EXPECT_FALSE(bearing::decode_sweep_row(bytes, index).tables);
 }
 
 }  // namespace

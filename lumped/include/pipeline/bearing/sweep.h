@@ -11,6 +11,7 @@
 #include "bearing/case_file.h"
 #include "bearing/simulation.h"
 #include "bearing/sweep_design.h"
+#include "bearing/sweep_tables.h"
 
 namespace bearing {
 
@@ -29,21 +30,15 @@ SweepPoint sweep_point(const std::vector<SweepAxis>& axes, std::size_t index);
 /// Every case of the Cartesian product at once (sweep_point for each index).
 std::vector<SweepPoint> sweep_points(const std::vector<SweepAxis>& axes);
 
-/// The whole run of a case, for writers of per-case arrays (sweep.h5, sweep_dataset.h).
-struct SweepCaseResult {
-  Case c;  ///< the resolved case
-  SimulationResult result;
-  RunSummary summary;
-};
-
 struct SweepRow {
   std::vector<double> values;  ///< the point's values (SI)
   bool ok = false;
   std::string error;                          ///< why the case failed (empty if ok)
   std::vector<ChannelSummary> channels;       ///< the run's summary (empty if it failed)
   std::vector<MicrophoneLevels> microphones;  ///< sound levels ([acoustics] only)
-  /// The whole run, only when run_sweep's `keep_results` is set (null otherwise, or if it failed).
-  std::shared_ptr<const SweepCaseResult> result;
+  /// The tables `--save` asked for (sweep_tables.h), built where the case ran; null when nothing
+  /// is saved or the case failed.
+  std::shared_ptr<const SweepCaseTables> tables;
 };
 
 /// Builds the case of a point: the base file + the point's overrides.
@@ -57,17 +52,18 @@ using SweepProgress = std::function<void(std::size_t, std::size_t)>;
 /// many finished rows wait for an earlier one: memory does not grow with the number of cases. A
 /// failed case is reported in its row and does not stop the others; an exception from `sink`
 /// stops the sweep (no new cases start) and is rethrown once the running ones are done. With
-/// `keep_results` each successful row also holds its whole run (SweepRow::result): memory stays
-/// bounded by the same window.
+/// `save` each successful row also holds those tables of its run (SweepRow::tables), built on the
+/// worker's thread: memory stays bounded by the same window.
 void run_sweep(const SweepLoader& load, std::size_t cases,
                const std::function<SweepPoint(std::size_t)>& point, int threads,
                const std::function<void(std::size_t, SweepRow&&)>& sink,
-               const SweepProgress& progress = {}, bool keep_results = false);
+               const SweepProgress& progress = {}, const std::vector<SweepSave>& save = {});
 
 /// A function with run_sweep's signature (the threads of one process, or MPI ranks).
-using SweepRunner = std::function<void(
-    const SweepLoader&, std::size_t, const std::function<SweepPoint(std::size_t)>&, int,
-    const std::function<void(std::size_t, SweepRow&&)>&, const SweepProgress&)>;
+using SweepRunner = std::function<void(const SweepLoader&, std::size_t,
+                                       const std::function<SweepPoint(std::size_t)>&, int,
+                                       const std::function<void(std::size_t, SweepRow&&)>&,
+                                       const SweepProgress&, const std::vector<SweepSave>&)>;
 
 /// Every point's row at once, in the order of `points` (the streaming run_sweep above, collected).
 std::vector<SweepRow> run_sweep(const SweepLoader& load, const std::vector<SweepPoint>& points,
@@ -107,10 +103,11 @@ class SweepCsvWriter {
 };
 
 /// A further output of write_sweep beside sweep.csv (e.g. sweep.h5 of `--save`): `add(i, row)`
-/// gets every row in case order with its whole run (SweepRow::result); `commit()` runs once after
-/// the last row and before sweep.csv is renamed into place. An exception from either stops the
-/// sweep, and sweep.csv is not written.
+/// gets every row in case order with the tables `save` names (SweepRow::tables, built where the
+/// case ran, on any runner); `commit()` runs once after the last row and before sweep.csv is
+/// renamed into place. An exception from either stops the sweep, and sweep.csv is not written.
 struct SweepRowHook {
+  std::vector<SweepSave> save;
   std::function<void(std::size_t, const SweepRow&)> add;
   std::function<void()> commit;
 };
@@ -175,8 +172,8 @@ SweepPlan read_sweep_record(const std::string& dir);
 /// On an error the temporary file and the record stay, for --resume. `runner` defaults to
 /// run_sweep (an MPI runner with its signature may take its place). Throws InputError.
 /// With `hook.add` (a further output, e.g. `--save`'s sweep.h5) every row also goes to the hook
-/// with its whole run, from run_sweep in this process: not with another `runner` (InputError), and
-/// not on `resume` (the hook's file of the killed sweep is gone; InputError).
+/// with its tables, on any runner; not on `resume` (the hook's file of the killed sweep is gone:
+/// InputError).
 SweepCounts write_sweep(const std::string& dir, const SweepPlan& plan, int threads,
                         const SweepProgress& progress = {}, const SweepRunner& runner = {},
                         bool resume = false, const SweepRowHook& hook = {});

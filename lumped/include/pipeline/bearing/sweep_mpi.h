@@ -30,7 +30,7 @@ namespace bearing {
 void run_sweep_mpi(const SweepLoader& load, std::size_t cases,
                    const std::function<SweepPoint(std::size_t)>& point, int threads,
                    const std::function<void(std::size_t, SweepRow&&)>& sink,
-                   const SweepProgress& progress = {});
+                   const SweepProgress& progress = {}, const std::vector<SweepSave>& save = {});
 
 /// This process's rank in MPI_COMM_WORLD and the world's size (0 and 1 before MPI_Init).
 int mpi_rank();
