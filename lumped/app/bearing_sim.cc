@@ -291,6 +291,41 @@ int sweep_command(const SweepOptions& o, bool tty) {
   return counts.failed == counts.cases ? 3 : 0;
 }
 
+// `merge OUT DIR…`: the parts' sweep.csv into OUT/sweep.csv, and their sweep.h5 (all parts have
+// one, or none) into OUT/sweep.h5; if that fails, the merged sweep.csv is removed again.
+int merge_command(const std::string& out, const std::vector<std::string>& dirs) {
+  namespace fs = std::filesystem;
+  std::vector<std::string> datasets;
+  for (const auto& d : dirs)
+    if (fs::exists(fs::path(d) / "sweep.h5"))
+      datasets.push_back((fs::path(d) / "sweep.h5").string());
+  if (!datasets.empty() && datasets.size() != dirs.size())
+    throw bearing::InputError("merge: " + std::to_string(datasets.size()) + " of the " +
+                              std::to_string(dirs.size()) +
+                              " parts have a sweep.h5: run every part with the same --save");
+#ifndef BEARING_WITH_HDF5
+  if (!datasets.empty())
+    throw bearing::InputError(
+        "merge: the parts have sweep.h5, and this bearing-sim was built without HDF5 (Debian: "
+        "libhdf5-dev)");
+#endif
+  const bearing::SweepCounts counts = bearing::merge_sweeps(out, dirs);
+  const fs::path csv = fs::path(out) / "sweep.csv";
+#ifdef BEARING_WITH_HDF5
+  if (!datasets.empty()) {
+    try {
+      bearing::merge_datasets((fs::path(out) / "sweep.h5").string(), datasets);
+    } catch (...) {
+      fs::remove(csv);
+      throw;
+    }
+  }
+#endif
+  std::cout << "merge: " << counts.cases << " cases, " << counts.failed << " failed; wrote "
+            << csv.string() << (datasets.empty() ? "" : " and sweep.h5") << "\n";
+  return 0;
+}
+
 // The sweep options on `cmd`.
 void add_sweep_options(CLI::App* cmd, SweepOptions& o) {
   cmd->add_option(
@@ -430,12 +465,7 @@ int main(int argc, char** argv) {
     }
     if (*run) return run_command(case_path, overrides_of(sets), out_dir, json, quiet, tty);
     if (*sweep) return sweep_command(so, tty);
-    if (*merge) {
-      const bearing::SweepCounts counts = bearing::merge_sweeps(merge_out, merge_dirs);
-      std::cout << "merge: " << counts.cases << " cases, " << counts.failed << " failed; wrote "
-                << (std::filesystem::path(merge_out) / "sweep.csv").string() << "\n";
-      return 0;
-    }
+    if (*merge) return merge_command(merge_out, merge_dirs);
   } catch (const bearing::InputError& e) {
     std::cerr << who() << ": error: " << e.what() << "\n";
     return fail(2);

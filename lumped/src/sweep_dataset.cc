@@ -271,4 +271,76 @@ void SweepDataset::close() {
   file_->closed = true;
 }
 
+namespace {
+
+// A 1-D attribute of variable-length strings (a part's `saved`).
+std::vector<std::string> read_strings(hid_t object, const char* name) {
+  Handle a(H5Aopen(object, name, H5P_DEFAULT), H5Aclose, "open an attribute");
+  Handle space(H5Aget_space(a), H5Sclose, "read an attribute's dataspace");
+  Handle type = string_type();
+  std::vector<char*> p(static_cast<std::size_t>(H5Sget_simple_extent_npoints(space)), nullptr);
+  if (!p.empty()) check(H5Aread(a, type, p.data()), "read an attribute");
+  std::vector<std::string> out;
+  for (const char* s : p) out.emplace_back(s ? s : "");
+  if (!p.empty()) H5Dvlen_reclaim(type, space, H5P_DEFAULT, p.data());
+  return out;
+}
+
+Handle open_file(const fs::path& path, unsigned flags) {
+  return Handle(H5Fopen(path.c_str(), flags, H5P_DEFAULT), H5Fclose,
+                ("open " + path.string()).c_str());
+}
+
+}  // namespace
+
+std::size_t merge_datasets(const std::string& out, const std::vector<std::string>& parts) {
+  if (parts.empty()) throw InputError("merge: no sweep.h5 to merge");
+  QuietErrors quiet;
+  const fs::path path(out),
+      temporary = path.parent_path() / ("." + path.filename().string() + ".partial");
+  std::vector<std::string> saved;
+  {
+    Handle first = open_file(parts.front(), H5F_ACC_RDONLY);
+    saved = read_strings(first, "saved");
+  }
+  std::error_code ec;
+  fs::copy_file(parts.front(), temporary, fs::copy_options::overwrite_existing, ec);
+  if (ec) throw InputError("merge: cannot write " + temporary.string() + " (" + ec.message() + ")");
+  std::size_t cases = 0;
+  try {
+    Handle merged = open_file(temporary, H5F_ACC_RDWR);
+    Handle into(H5Gopen2(merged, "cases", H5P_DEFAULT), H5Gclose, "open /cases");
+    for (std::size_t k = 1; k < parts.size(); ++k) {
+      Handle part = open_file(parts[k], H5F_ACC_RDONLY);
+      if (read_strings(part, "saved") != saved)
+        throw InputError("merge: " + parts[k] + " saved other tables than " + parts.front() +
+                         " (--save differed between the parts)");
+      Handle from(H5Gopen2(part, "cases", H5P_DEFAULT), H5Gclose, "open /cases");
+      H5G_info_t info;
+      check(H5Gget_info(from, &info), "read /cases");
+      for (hsize_t g = 0; g < info.nlinks; ++g) {
+        char name[64];
+        if (H5Lget_name_by_idx(from, ".", H5_INDEX_NAME, H5_ITER_INC, g, name, sizeof name,
+                               H5P_DEFAULT) < 0)
+          throw InputError("merge: cannot read the case groups of " + parts[k]);
+        if (H5Lexists(into, name, H5P_DEFAULT) > 0)
+          throw InputError("merge: case " + std::string(name) + " is in two parts' sweep.h5");
+        check(H5Ocopy(from, name, into, name, H5P_DEFAULT, H5P_DEFAULT), "copy a case group");
+      }
+    }
+    H5G_info_t info;
+    check(H5Gget_info(into, &info), "read /cases");
+    cases = static_cast<std::size_t>(info.nlinks);
+    check(H5Adelete(merged, "cases"), "replace the count of cases");
+    integer_attribute(merged, "cases", static_cast<long long>(cases));
+    into.close("close /cases");
+    merged.close(("write " + temporary.string()).c_str());
+    fs::rename(temporary, path);
+  } catch (...) {
+    fs::remove(temporary, ec);
+    throw;
+  }
+  return cases;
+}
+
 }  // namespace bearing

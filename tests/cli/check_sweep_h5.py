@@ -122,5 +122,31 @@ subprocess.run([sim, "sweep", "--out", str(work / "failed"), "--vary",
 check("rerun without --save: the old sweep.h5 is gone",
       not (work / "failed" / "sweep.h5").exists() and (work / "failed" / "sweep.csv").exists())
 
+# Parts with --save merged: sweep.h5 holds the whole sweep's groups, datasets and attributes.
+def same_file(x, y):
+    def attrs(o):
+        return {k: (v.tolist() if hasattr(v, "tolist") else v) for k, v in o.attrs.items()}
+    with h5py.File(x, "r") as a, h5py.File(y, "r") as b:
+        same = attrs(a) == attrs(b) and list(a["cases"]) == list(b["cases"])
+        for g in a["cases"]:
+            ga, gb = a["cases"][g], b["cases"][g]
+            same &= attrs(ga) == attrs(gb) and list(ga) == list(gb)
+            for d in ga:
+                same &= ga[d][()].tobytes() == gb[d][()].tobytes() and attrs(ga[d]) == attrs(gb[d])
+        return same
+
+design = ["--vary", "operation.speed=1000rpm:3000rpm:5", "--save", "response,summary", *tiny]
+subprocess.run([sim, "sweep", "--out", str(work / "whole"), *design], check=True,
+               stdout=subprocess.DEVNULL)
+for k in (1, 2):
+    subprocess.run([sim, "sweep", "--out", str(work / f"part{k}"), "--part", f"{k}/2", *design],
+                   check=True, stdout=subprocess.DEVNULL)
+subprocess.run([sim, "merge", str(work / "merged"), str(work / "part2"), str(work / "part1")],
+               check=True, stdout=subprocess.DEVNULL)
+check("merge: sweep.csv as one run",
+      (work / "whole" / "sweep.csv").read_bytes() == (work / "merged" / "sweep.csv").read_bytes())
+check("merge: sweep.h5 as one run", same_file(work / "whole" / "sweep.h5",
+                                              work / "merged" / "sweep.h5"))
+
 print(f"{failures} failed")
 sys.exit(1 if failures else 0)

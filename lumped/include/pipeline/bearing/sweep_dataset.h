@@ -84,4 +84,11 @@ class SweepDataset {
   std::unique_ptr<File> file_;
 };
 
+/// `bearing-sim merge`'s sweep.h5: the parts' files (one per --part, in part order, already
+/// checked to belong to one design) into `out`, written under a temporary name and renamed: the
+/// first part's file with every other part's case groups copied in, and the root's `cases` their
+/// number, which is returned. Throws InputError if the parts saved different tables or share a
+/// case.
+std::size_t merge_datasets(const std::string& out, const std::vector<std::string>& parts);
+
 }  // namespace bearing
