@@ -26,6 +26,7 @@
 #include "bearing/sweep.h"
 #ifdef BEARING_WITH_HDF5
 #include "bearing/sweep_dataset.h"
+#include "bearing/sweep_save.h"
 #endif
 #ifdef BEARING_WITH_MPI
 #include <mpi.h>
@@ -160,33 +161,30 @@ struct SweepOptions {
   int jobs = 0;
 };
 
-// `--save`: DIR/sweep.h5 fed by write_sweep's rows in case order (its own file, renamed into
-// place just before sweep.csv). Without HDF5 in the build, --save is an error.
+// `--save`'s list: given on the command line, or on --resume read from the killed sweep's spool
+// (sweep_save.h). Without HDF5 in the build, --save is an error.
+std::vector<bearing::SweepSave> save_list(const SweepOptions& o) {
 #ifdef BEARING_WITH_HDF5
-bearing::SweepRowHook save_hook(bearing::SweepDataset& dataset, const std::string& out_dir,
-                                const bearing::SweepDesign& design,
-                                const std::vector<std::string>& save) {
-  const std::vector<bearing::SweepSave> what = bearing::parse_sweep_save(save);
-  if (what.empty()) return {};
-  std::vector<bearing::SweepDatasetKey> keys;
-  for (const auto& k : design.keys())
-    keys.push_back({k.key, std::string(bearing::si_unit(k.dimension))});
-  std::error_code ec;
-  std::filesystem::create_directories(out_dir, ec);
-  if (ec)
-    throw bearing::InputError("--out " + out_dir + ": cannot create the folder (" + ec.message() +
-                              ")");
-  dataset.open((std::filesystem::path(out_dir) / "sweep.h5").string(), keys, what, design.size());
-  return {what,
-          [&dataset](std::size_t i, const bearing::SweepRow& row) {
-            if (row.tables)
-              dataset.add_case(i, row.values, *row.tables);
-            else
-              dataset.add_failed_case(i, row.values, row.error);
-          },
-          [&dataset] { dataset.close(); }};
-}
+  return o.resume.empty() ? bearing::parse_sweep_save(o.save) : bearing::spooled_save(o.resume);
+#else
+  if (!o.save.empty())
+    throw bearing::InputError(
+        "--save: this bearing-sim was built without HDF5 (Debian: libhdf5-dev), so it cannot "
+        "write sweep.h5");
+  return {};
 #endif
+}
+
+// write_sweep's hook for --save (sweep_save.h), empty without it.
+bearing::SweepRowHook save_hook(const std::string& dir, const bearing::SweepPlan& plan,
+                                const std::vector<bearing::SweepSave>& what, bool resume) {
+#ifdef BEARING_WITH_HDF5
+  return bearing::sweep_save_hook(dir, plan, what, resume);
+#else
+  (void)dir, (void)plan, (void)what, (void)resume;
+  return {};
+#endif
+}
 
 // The design the options name: --vary (grid), --sample (random) or --cases (list), one of them.
 std::shared_ptr<const bearing::SweepDesign> design_of(const SweepOptions& o) {
@@ -218,12 +216,6 @@ int sweep_command(const SweepOptions& o, bool tty) {
                               " takes the design, case and part from its sweep.design.json; give "
                               "only --jobs and --quiet with it");
   if (!resume && o.out_dir.empty()) throw bearing::InputError("sweep: --out DIR is required");
-#ifndef BEARING_WITH_HDF5
-  if (!o.save.empty())
-    throw bearing::InputError(
-        "--save: this bearing-sim was built without HDF5 (Debian: libhdf5-dev), so it cannot "
-        "write sweep.h5");
-#endif
   const auto progress = [&](std::size_t done, std::size_t total) {
     if (tty) std::fprintf(stderr, "\rsweep %zu/%zu cases", done, total);
     if (tty && done == total) std::fprintf(stderr, "\n");
@@ -258,28 +250,27 @@ int sweep_command(const SweepOptions& o, bool tty) {
           return bearing::load_sweep_case(plan.base, p);
         },
         n, [&](std::size_t i) { return plan.design->point(start + i); }, o.jobs, {}, {},
-        bearing::parse_sweep_save(o.save));
+        save_list(o));
     return 0;
   }
 #endif
   bearing::SweepCounts counts;
   std::string out_dir = o.out_dir;
   bool saved = false;  // sweep.h5 written too
+  const std::vector<bearing::SweepSave> what = save_list(o);
   if (resume) {
-    counts = bearing::resume_sweep(o.resume, o.jobs, progress, runner);
+    const bearing::SweepRowHook hook =
+        save_hook(o.resume, bearing::read_sweep_record(o.resume), what, true);
+    counts = bearing::resume_sweep(o.resume, o.jobs, progress, runner, hook);
     out_dir = o.resume;
+    saved = static_cast<bool>(hook.add);
   } else {
     bearing::SweepPlan plan;
     plan.design = design_of(o);
     plan.base = bearing::sweep_base(o.case_path, overrides_of(o.sets));
     if (!o.part.empty()) plan.part = bearing::parse_part(o.part);
     plan.program = kVersion;
-#ifdef BEARING_WITH_HDF5
-    bearing::SweepDataset dataset;
-    const bearing::SweepRowHook hook = save_hook(dataset, out_dir, *plan.design, o.save);
-#else
-    const bearing::SweepRowHook hook;
-#endif
+    const bearing::SweepRowHook hook = save_hook(out_dir, plan, what, false);
     counts = bearing::write_sweep(out_dir, plan, o.jobs, progress, runner, false, hook);
     saved = static_cast<bool>(hook.add);
   }

@@ -177,8 +177,6 @@ SweepPlan read_sweep_record(const std::string& dir) {
 SweepCounts write_sweep(const std::string& dir, const SweepPlan& plan, int threads,
                         const SweepProgress& progress, const SweepRunner& runner, bool resume,
                         const SweepRowHook& hook) {
-  if (hook.add && resume)
-    throw InputError("--save with --resume: the killed sweep's sweep.h5 is gone; run it again");
   if (plan.part.count > plan.design->size())
     throw InputError("--part " + std::to_string(plan.part.index) + "/" +
                      std::to_string(plan.part.count) + ": more parts than the design's " +
@@ -224,8 +222,8 @@ SweepCounts write_sweep(const std::string& dir, const SweepPlan& plan, int threa
         end - start, [&](std::size_t i) { return design.point(start + i); }, threads,
         [&](std::size_t i, SweepRow&& row) {
           counts.failed += row.ok ? 0 : 1;
+          if (keep) hook.add(start + i, row);  // first: every row kept for --resume has its tables
           writer.add(row);
-          if (keep) hook.add(start + i, row);
         },
         [&](std::size_t done, std::size_t) {
           if (progress) progress(kept.rows + done, counts.cases);
@@ -244,10 +242,10 @@ SweepCounts write_sweep(const std::string& dir, const SweepPlan& plan, int threa
 }
 
 SweepCounts resume_sweep(const std::string& dir, int threads, const SweepProgress& progress,
-                         const SweepRunner& runner) {
+                         const SweepRunner& runner, const SweepRowHook& hook) {
   if (!fs::exists(fs::path(dir) / kRecord) && fs::exists(fs::path(dir) / "sweep.csv"))
     throw InputError("--resume " + dir + ": sweep.csv is complete, nothing to resume");
-  return write_sweep(dir, read_sweep_record(dir), threads, progress, runner, true);
+  return write_sweep(dir, read_sweep_record(dir), threads, progress, runner, true, hook);
 }
 
 namespace {

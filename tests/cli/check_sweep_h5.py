@@ -105,7 +105,7 @@ with h5py.File(work / "failed" / "sweep.h5", "r") as f:
 
 # All or nothing: when sweep.h5 cannot be put in place (a folder of that name is in the way), the
 # sweep fails (exit 2), writes no sweep.csv and leaves no temporary HDF5 file; the sweep's own
-# record and partial rows stay, as after any interrupted sweep (docs/bearing-sim.md, --resume).
+# record, partial rows and spooled tables stay, as after any interrupted sweep (--resume).
 blocked = work / "blocked"
 (blocked / "sweep.h5" / "x").mkdir(parents=True)
 run = subprocess.run([sim, "sweep", "--out", str(blocked), "--save", "summary",
@@ -114,7 +114,7 @@ run = subprocess.run([sim, "sweep", "--out", str(blocked), "--save", "summary",
 check("blocked: exit 2", run.returncode == 2)
 check("blocked: the message names sweep.h5", "sweep.h5" in run.stderr)
 check("blocked: nothing else written", sorted(p.name for p in blocked.iterdir()) ==
-      [".sweep.csv.partial", "sweep.design.json", "sweep.h5"])
+      [".sweep.csv.partial", ".sweep.h5.cases", "sweep.design.json", "sweep.h5"])
 # A sweep without --save into the folder of one with it removes the sweep.h5 that no longer
 # belongs to its sweep.csv.
 subprocess.run([sim, "sweep", "--out", str(work / "failed"), "--vary",
@@ -147,6 +147,32 @@ check("merge: sweep.csv as one run",
       (work / "whole" / "sweep.csv").read_bytes() == (work / "merged" / "sweep.csv").read_bytes())
 check("merge: sweep.h5 as one run", same_file(work / "whole" / "sweep.h5",
                                               work / "merged" / "sweep.h5"))
+
+# A --save sweep killed (SIGKILL) and resumed: sweep.csv and sweep.h5 as an uninterrupted run.
+import signal, time
+long = ["--vary", "operation.speed=1000rpm:3000rpm:150", "--save", "response,summary", "--quiet",
+        "--set", "solver.duration=0.1", "--set", "solver.transient=0.02", "--jobs", "2"]
+subprocess.run([sim, "sweep", "--out", str(work / "uncut"), *long], check=True,
+               stdout=subprocess.DEVNULL)
+killed = subprocess.Popen([sim, "sweep", "--out", str(work / "killed"), *long],
+                          stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
+partial = work / "killed" / ".sweep.csv.partial"
+for _ in range(400):
+    if partial.exists() and partial.read_text().count("\n") > 30:
+        break
+    time.sleep(0.05)
+killed.send_signal(signal.SIGKILL)
+killed.wait()
+if (work / "killed" / "sweep.csv").exists():
+    check("resume --save: the sweep was killed before it finished", False)
+else:
+    subprocess.run([sim, "sweep", "--resume", str(work / "killed"), "--quiet"], check=True,
+                   stdout=subprocess.DEVNULL)
+    check("resume --save: sweep.csv as uninterrupted",
+          (work / "uncut" / "sweep.csv").read_bytes() == (work / "killed" / "sweep.csv").read_bytes())
+    check("resume --save: sweep.h5 as uninterrupted",
+          same_file(work / "uncut" / "sweep.h5", work / "killed" / "sweep.h5"))
+    check("resume --save: no spool left", not (work / "killed" / ".sweep.h5.cases").exists())
 
 print(f"{failures} failed")
 sys.exit(1 if failures else 0)

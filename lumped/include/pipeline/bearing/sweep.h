@@ -172,15 +172,15 @@ SweepPlan read_sweep_record(const std::string& dir);
 /// On an error the temporary file and the record stay, for --resume. `runner` defaults to
 /// run_sweep (an MPI runner with its signature may take its place). Throws InputError.
 /// With `hook.add` (a further output, e.g. `--save`'s sweep.h5) every row also goes to the hook
-/// with its tables, on any runner; not on `resume` (the hook's file of the killed sweep is gone:
-/// InputError).
+/// with its tables, on any runner, before its line is written: on `resume` every kept row has been
+/// given to the hook.
 SweepCounts write_sweep(const std::string& dir, const SweepPlan& plan, int threads,
                         const SweepProgress& progress = {}, const SweepRunner& runner = {},
                         bool resume = false, const SweepRowHook& hook = {});
 
 /// `bearing-sim sweep --resume DIR`: the plan read back from DIR, then write_sweep(resume).
 SweepCounts resume_sweep(const std::string& dir, int threads, const SweepProgress& progress = {},
-                         const SweepRunner& runner = {});
+                         const SweepRunner& runner = {}, const SweepRowHook& hook = {});
 
 /// `bearing-sim merge OUT DIR…`: checks that the folders hold complete parts of one design (the
 /// same record but for the part; every part once, none missing) and writes OUT/sweep.csv, the
