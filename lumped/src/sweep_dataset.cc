@@ -192,6 +192,18 @@ void SweepDataset::open(const std::string& path, const std::vector<SweepDatasetK
   // Strong close: closing the file closes whatever is still open in it.
   Handle fapl(H5Pcreate(H5P_FILE_ACCESS), H5Pclose, "create a property list");
   check(H5Pset_fclose_degree(fapl, H5F_CLOSE_STRONG), "set the close degree");
+  // The 1.8 file format: /cases with many groups keeps its links in a B-tree v2 and a fractal
+  // heap (the 1.6 format's local heap holds every name in memory, which grows with the cases).
+  check(H5Pset_libver_bounds(fapl, H5F_LIBVER_V18, H5F_LIBVER_LATEST), "set the file format");
+  // A bounded metadata cache (default: adaptive up to 32 MiB, which grows with the cases).
+  H5AC_cache_config_t cache;
+  cache.version = H5AC__CURR_CACHE_CONFIG_VERSION;
+  check(H5Pget_mdc_config(fapl, &cache), "read the metadata cache settings");
+  cache.set_initial_size = true;
+  cache.initial_size = 1 << 20;
+  cache.min_size = 1 << 20;
+  cache.max_size = 2 << 20;
+  check(H5Pset_mdc_config(fapl, &cache), "bound the metadata cache");
   f->file =
       std::make_unique<Handle>(H5Fcreate(f->temporary.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, fapl),
                                H5Fclose, ("create " + f->temporary.string()).c_str());
