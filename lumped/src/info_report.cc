@@ -1,5 +1,6 @@
 #include "bearing/info_report.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <sstream>
@@ -21,6 +22,8 @@ InfoReport compute_info(const Case& c) {
   o.exponent = r.contact.exponent;
   r.static_load =
       solve_static_load(c.bearing.balls, r.contact.K, c.bearing.ball_gap(), c.operation.load, o);
+  r.inner_peak_pressure = r.contact.inner.peak_pressure(r.static_load.q_max);
+  r.outer_peak_pressure = r.contact.outer.peak_pressure(r.static_load.q_max);
   const Bearing& b = c.bearing;
   const double wc = cage_speed(b, c.operation.speed);
   for (const LocalDefect& d : c.excitation.defects) {
@@ -65,10 +68,14 @@ nlohmann::json info_json(const InfoReport& r) {
   const auto& cal = r.input.model.calibration;
   if (cal) j["contact"]["calibration"] = calibration_json(*cal, r.contact);
   const auto& s = r.static_load;
-  j["static"] = {{"deflection", {s.deflection.x(), s.deflection.y()}},
-                 {"ball_angles", s.ball_angles},
-                 {"ball_loads", s.ball_loads},
-                 {"q_max", s.q_max}};
+  j["static"] = {
+      {"deflection", {s.deflection.x(), s.deflection.y()}},
+      {"ball_angles", s.ball_angles},
+      {"ball_loads", s.ball_loads},
+      {"q_max", s.q_max},
+      {"peak_pressure", {{"inner", r.inner_peak_pressure}, {"outer", r.outer_peak_pressure}}},
+      {"pressure_limit", kElasticPressureLimit},
+      {"elastic", elastic_limit_warning(r).empty()}};
   for (std::size_t i = 0; i < r.defects.size(); ++i) {
     const LocalDefect& d = r.input.excitation.defects[i];
     const DefectInfo& info = r.defects[i];
@@ -83,11 +90,13 @@ nlohmann::json info_json(const InfoReport& r) {
   }
   // K is in N/m^n with the exponent n beside it (1.5 for the Hertz methods).
   const std::string k_unit = cal ? "N/m^exponent" : "N/m^1.5";
-  j["units"] = {
-      {"case.speed", "rad/s"},       {"case.load", "N"},         {"kinematics", "Hz"},
-      {"contact.*.sum_rho", "1/m"},  {"contact.*.K", k_unit},    {"contact.K", k_unit},
-      {"contact.*.exponent", "1"},   {"contact.exponent", "1"},  {"static.deflection", "m"},
-      {"static.ball_angles", "rad"}, {"static.ball_loads", "N"}, {"static.q_max", "N"}};
+  j["units"] = {{"case.speed", "rad/s"},        {"case.load", "N"},
+                {"kinematics", "Hz"},           {"contact.*.sum_rho", "1/m"},
+                {"contact.*.K", k_unit},        {"contact.K", k_unit},
+                {"contact.*.exponent", "1"},    {"contact.exponent", "1"},
+                {"static.deflection", "m"},     {"static.ball_angles", "rad"},
+                {"static.ball_loads", "N"},     {"static.q_max", "N"},
+                {"static.peak_pressure", "Pa"}, {"static.pressure_limit", "Pa"}};
   if (!r.defects.empty()) {
     for (const char* k :
          {"defects.width", "defects.depth", "defects.inner_drop", "defects.outer_drop"})
@@ -251,6 +260,11 @@ std::string info_text(const InfoReport& r) {
       << " um (|d| = " << fixed(s.deflection.norm() * 1e6, 4) << " um)\n";
     o << "  Q_max = " << num(s.q_max)
       << " N; Q_max Z / F_r = " << num(s.q_max * b.balls / c.operation.load.norm(), 4) << "\n";
+    o << "  peak Hertz pressure at Q_max: inner " << num(r.inner_peak_pressure * 1e-9, 4)
+      << " GPa, outer " << num(r.outer_peak_pressure * 1e-9, 4) << " GPa (elastic limit "
+      << num(kElasticPressureLimit * 1e-9, 2) << " GPa, ISO 76)\n";
+    const std::string warning = elastic_limit_warning(r);
+    if (!warning.empty()) o << "  WARNING: " << warning << "\n";
     o << "  " << rpad("ball", 6) << rpad("angle [deg]", 14) << rpad("approach [um]", 16)
       << rpad("load [N]", 14) << "\n";
     for (std::size_t j = 0; j < s.ball_loads.size(); ++j)
@@ -260,6 +274,21 @@ std::string info_text(const InfoReport& r) {
   }
   o << defects_text(r);
   return o.str();
+}
+
+std::string elastic_limit_warning(const InfoReport& r) {
+  const double p = std::max(r.inner_peak_pressure, r.outer_peak_pressure);
+  if (!(p > kElasticPressureLimit)) return {};
+  const auto gpa = [](double v) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%.3g", v * 1e-9);
+    return std::string(text);
+  };
+  return "the most loaded ball's peak Hertz pressure, " + gpa(p) + " GPa (inner " +
+         gpa(r.inner_peak_pressure) + ", outer " + gpa(r.outer_peak_pressure) +
+         "), passes the elastic limit of " + gpa(kElasticPressureLimit) +
+         " GPa (ISO 76): the contacts yield, and the model's elastic contact law does not hold "
+         "there; reduce operation.load";
 }
 
 }  // namespace bearing

@@ -334,3 +334,38 @@ TEST(CliRun, AcousticsWritesPressureAndLevels) {
 }
 
 }  // namespace
+
+// Issue 21, guard rails: a static load whose peak Hertz pressure passes ISO 76's 4.2 GPa is
+// reported by `info` (text and JSON) and warned about by `run`, which still runs; below it,
+// nothing is said. The pressure follows Hertz's p_max ∝ Q^{1/3} between two loads.
+namespace {
+
+TEST(CliRun, ALoadBeyondTheElasticLimitIsReportedAndWarned) {
+  std::string out;
+  ASSERT_EQ(sim("info --json --set 'operation.load=[0, -40000]'", &out), 0) << out;
+  const auto heavy = nlohmann::json::parse(out)["static"];
+  EXPECT_FALSE(heavy["elastic"].get<bool>());
+  EXPECT_EQ(heavy["pressure_limit"].get<double>(), 4.2e9);
+  EXPECT_GT(heavy["peak_pressure"]["inner"].get<double>(), 4.2e9);
+
+  ASSERT_EQ(sim("info --json --set 'operation.load=[0, -5000]'", &out), 0) << out;
+  const auto light = nlohmann::json::parse(out)["static"];
+  EXPECT_TRUE(light["elastic"].get<bool>());
+  const double ratio =
+      heavy["peak_pressure"]["inner"].get<double>() / light["peak_pressure"]["inner"].get<double>();
+  const double load_ratio = heavy["q_max"].get<double>() / light["q_max"].get<double>();
+  EXPECT_NEAR(ratio, std::cbrt(load_ratio), 1e-9 * ratio);
+
+  ASSERT_EQ(sim("info --set 'operation.load=[0, -40000]'", &out), 0);
+  EXPECT_NE(out.find("WARNING: the most loaded ball's peak Hertz pressure"), std::string::npos);
+  const fs::path dir = fresh_dir("elastic_limit");
+  ASSERT_EQ(sim("run --set 'operation.load=[0, -40000]'" + kShort + " --out " + dir.string(), &out),
+            0)
+      << out;
+  EXPECT_NE(out.find("bearing-sim: warning:"), std::string::npos) << out;
+  EXPECT_NE(out.find("4.2 GPa (ISO 76)"), std::string::npos) << out;
+  ASSERT_EQ(sim("run" + kShort + " --out " + dir.string(), &out), 0);
+  EXPECT_EQ(out.find("warning"), std::string::npos) << out;
+}
+
+}  // namespace

@@ -47,6 +47,11 @@ struct RaceContact {
   double peak_pressure(double load) const;
 };
 
+/// The peak Hertz pressure of ball bearings at their static load rating (ISO 76: 4200 MPa for
+/// self-aligning ball bearings 4600, all other ball bearings 4200) [Pa]: beyond it the contact
+/// deforms plastically, and the lumped model's elastic contact law no longer holds.
+inline constexpr double kElasticPressureLimit = 4.2e9;
+
 /// Hertz constants of one race contact of `b` by the given method.
 RaceContact race_contact(const Bearing& b, Race race, const HertzSolution& method);
 

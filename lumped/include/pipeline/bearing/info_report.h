@@ -27,15 +27,22 @@ struct InfoReport {
   ContactConstants contact;
   BearingFrequencies frequencies;
   StaticLoadResult static_load;
+  double inner_peak_pressure = 0;  ///< peak Hertz pressure of the most loaded ball, inner race [Pa]
+  double outer_peak_pressure = 0;  ///< the same on the outer race [Pa]
   std::vector<DefectInfo> defects;  ///< one per [[defects]] entry
 };
+
+/// The warning `info` and `run` give when the static load's peak Hertz pressure passes
+/// kElasticPressureLimit (contact.h), naming both pressures; empty otherwise.
+std::string elastic_limit_warning(const InfoReport& report);
 
 /// Computes everything `info` shows. Throws InputError / SolverError.
 InfoReport compute_info(const Case& c);
 
 /// JSON with the keys of DESIGN.md: kinematics.{shaft,ftf,bpfo,bpfi,bsf} [Hz],
 /// contact.{inner,outer}.{sum_rho [1/m], f_rho, ellipticity, delta_star, K [N/m^n], exponent n},
-/// contact.K, contact.exponent, static.{deflection [m, m], ball_loads [N], q_max [N]}; plus
+/// contact.K, contact.exponent, static.{deflection [m, m], ball_loads [N], q_max [N],
+/// peak_pressure.{inner, outer} [Pa], pressure_limit [Pa], elastic (bool)}; plus
 /// contact.method, static.ball_angles [rad] and a `units` object; for a calibrated law
 /// contact.calibration (calibration_json, json_helpers.h); with [[defects]], defects[] with
 /// location, width, depth [m], inner_drop, outer_drop [m], crossing, max_step [s] (null at rest).
