@@ -3,6 +3,7 @@
 #include "bearing/sweep_tables.h"
 
 #include <algorithm>
+#include <cmath>
 #include <string_view>
 #include <utility>
 
@@ -151,6 +152,10 @@ SweepCaseTables sweep_case_tables(std::string case_toml, const Response& respons
       out.summary_json = std::move(summary_json);
     }
     t.name = sweep_save_name(w);
+    // As run's files (output.cc): no NaN or Inf reaches sweep.h5; the case is reported failed.
+    for (double v : t.values)
+      if (!std::isfinite(v))
+        throw SolverError("--save: the " + t.name + " table of this case holds a non-finite value");
     out.tables.push_back(std::move(t));
   }
   return out;
