@@ -9,6 +9,8 @@
 
 #include "bearing/case_file.h"
 #include "bearing/errors.h"
+#include "bearing/models/model_registry.h"
+#include "bearing/simulation.h"
 
 namespace {
 
@@ -211,6 +213,15 @@ std::vector<BadCase> bad_cases() {
       {"ball inertia not positive",
        kPreset + "[model]\nkind = \"balls\"\n[ball]\ninertia = \"0 kg m^2\"\n",
        {"ball.inertia", "0 kg m^2", "positive"}},
+      {"axial load on the 2-DOF model",
+       kPreset + "[operation]\nload = [0, -100]\naxial_load = \"50 N\"\n",
+       {"operation.axial_load = 50 N", "model.kind = \"2dof\"", "no axial degree of freedom",
+        "allowed: 0", "\"3dof\" or \"balls\""}},
+      {"axial-only load: no static solution without an axial DOF",
+       kPreset + "[operation]\nload = [0, 0]\naxial_load = \"50 N\"\n[model]\n"
+                 "kind = \"quasistatic\"\n",
+       {"operation.axial_load = 50 N", "\"quasistatic\"", "no ball is in its load zone",
+        "static solution does not exist", "\"3dof\""}},
       {"model kind unknown",
        kPreset + "[model]\nkind = \"4dof\"\n",
        {"model.kind", "4dof", "2dof, 3dof"}},
@@ -303,6 +314,29 @@ TEST(InputErrors, EachMalformedCaseGetsAClearMessage) {
             << bc.what << ": message lacks \"" << s << "\": " << m;
       EXPECT_EQ(m.find('\n'), std::string::npos) << bc.what << ": not one line: " << m;
     }
+  }
+}
+
+// The registry row decides: each kind that carries an axial load reads one (an axial-only load
+// included), each other kind refuses it, so a new kind is covered by its row.
+TEST(InputErrors, AxialLoadFollowsTheModelRegistry) {
+  for (const bearing::ModelDescriptor& d : bearing::model_registry()) {
+    const std::string kind = bearing::name_of(bearing::kModelKinds, d.kind);
+    const std::string toml =
+        "[bearing]\npreset = \"6308\"\n[operation]\nload = [0, 0]\n"
+        "axial_load = \"200 N\"\n[model]\nkind = \"" +
+        kind + "\"\n";
+    if (d.axial_load) {
+      EXPECT_NO_THROW(bearing::parse_case(toml, "t.toml")) << kind;
+      continue;
+    }
+    EXPECT_THROW(bearing::parse_case(toml, "t.toml"), bearing::InputError) << kind;
+    // The library refuses it as well, for a caller that builds ModelInputs itself.
+    bearing::ModelInputs in = bearing::model_inputs(bearing::parse_case(
+        "[bearing]\npreset = \"6308\"\n[model]\nkind = \"" + kind + "\"\n", "t.toml"));
+    in.axial_load = 200;
+    EXPECT_THROW(bearing::make_run(d.kind, in, bearing::SolverSettings{}), bearing::InputError)
+        << kind;
   }
 }
 

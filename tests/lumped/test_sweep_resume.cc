@@ -138,7 +138,7 @@ TEST(CliSweepMerge, PartsMergedEqualOneRun) {
   EXPECT_NE(msg.find("twice"), std::string::npos) << msg;
   const fs::path other = fresh_dir("merge_other");
   ASSERT_EQ(sim("sweep --vary bearing.balls=2:5:4 --vary operation.speed=1000rpm:3000rpm:3" +
-                kQuick + " --set operation.axial_load=5 --out " + other.string() + " --part 2/4"),
+                kQuick + " --set operation.unbalance=1e-6 --out " + other.string() + " --part 2/4"),
             0);
   EXPECT_EQ(sim("merge " + out.string() + " " + p1.string() + " " + other.string() + " " +
                     p34.string() + " " + p4.string(),

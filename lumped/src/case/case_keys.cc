@@ -148,7 +148,8 @@ std::vector<Key> operation_keys() {
           [](auto& c) -> auto& { return c.operation.speed; }, limits::operation_speed),
       load,
       quantity(
-          "operation.axial_load", D::force, "axial load / preload Fz, 3dof",
+          "operation.axial_load", D::force,
+          "axial load / preload Fz (3dof, balls; 0 for the others)",
           [](auto& c) -> auto& { return c.operation.axial_load; }),
       quantity(
           "operation.unbalance", D::mass_length,
@@ -206,8 +207,10 @@ std::vector<Key> model_keys() {
   calibration.write = [](std::ostream& o, const Case& c) {
     if (c.model.calibration) o << "calibration = " << quoted(c.model.calibration->path) << "\n";
   };
+  Key t = table("model", "model choices");
+  t.after = check_model_loads;
   return {
-      table("model", "model choices"),
+      t,
       choice(
           "model.kind",
           "2dof | 3dof | balls (seed 004: ball DOFs, cage slip, friction) | quasistatic (seed "

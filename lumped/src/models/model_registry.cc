@@ -7,6 +7,7 @@
 #include <string>
 
 #include "bearing/errors.h"
+#include "bearing/units.h"
 
 #include "bearing/models/ball_dofs.h"
 #include "bearing/models/three_dof.h"
@@ -35,17 +36,20 @@ const std::vector<ModelDescriptor>& model_registry() {
        "inner ring x, y (seeds 001-003)",
        {},
        false,
+       false,
        free_angle,
        make_two_dof_model},
       {ModelKind::three_dof,
        "x, y and the axial z under an axial load or preload (seed 001)",
        {},
        false,
+       true,
        loaded_angle,
        make_three_dof_model},
       {ModelKind::balls,
        "ball DOFs, cage slip and traction (seed 004)",
        {"cage", "ball"},
+       true,
        true,
        ball_angle,
        [](const ModelInputs& in) -> std::unique_ptr<BearingModel> {
@@ -54,6 +58,7 @@ const std::vector<ModelDescriptor>& model_registry() {
       {ModelKind::quasi_static,
        "equilibrium per output instant, no inertia (seed 000)",
        {},
+       false,
        false,
        free_angle,
        nullptr,
@@ -78,10 +83,29 @@ void check_defects_supported(ModelKind kind, const std::vector<LocalDefect>& def
                    dynamic + ")");
 }
 
+void check_axial_load_supported(ModelKind kind, double axial_load, double radial_load) {
+  if (axial_load == 0 || model_descriptor(kind).axial_load) return;
+  std::string carriers;
+  for (const ModelDescriptor& d : model_registry())
+    if (d.axial_load)
+      carriers +=
+          std::string(carriers.empty() ? "" : " or ") + "\"" + name_of(kModelKinds, d.kind) + "\"";
+  const std::string kind_name = name_of(kModelKinds, kind);
+  const std::string why =
+      radial_load == 0
+          ? "with no radial load no ball is in its load zone, so nothing carries the axial load "
+            "and the static solution does not exist"
+          : "its contacts are radial and would ignore it";
+  throw InputError("operation.axial_load = " + format_number(axial_load) + " N: model.kind = \"" +
+                   kind_name + "\" has no axial degree of freedom (" + why +
+                   "); allowed: 0 with this kind, or model.kind = " + carriers);
+}
+
 std::unique_ptr<ModelRun> make_run(ModelKind kind, const ModelInputs& inputs,
                                    const SolverSettings& solver) {
   const ModelDescriptor& d = model_descriptor(kind);
   check_defects_supported(kind, inputs.defects);
+  check_axial_load_supported(kind, inputs.axial_load, inputs.radial_load().norm());
   if (d.dynamic)
     return make_dynamic_run(d.dynamic(inputs), inputs, solver, d.contact_angle(inputs));
   return d.run(inputs, solver);

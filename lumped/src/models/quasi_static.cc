@@ -51,7 +51,7 @@ class QuasiStatic final : public QuasiStaticModel {
       : set_(in, checked_cage_speed(in), in.bearing.contact_angle),
         gap_(in.bearing.ball_gap()),
         inner_speed_(in.inner_speed),
-        load_(in.load.x(), in.load.y() - (in.gravity ? in.mass * standard_gravity : 0.0)),
+        load_(in.radial_load()),
         unbalance_force_(in.unbalance * in.inner_speed * in.inner_speed),
         phase_(in.cage_phase),
         minimum_load_(quasi_static_minimum_load(in)),

@@ -113,7 +113,7 @@ class ThreeDofModel final : public BearingModel {
         damping_(in.damping),
         axial_damping_(in.axial_damping),
         load_x_(in.load.x()),
-        load_y_(in.load.y() - (in.gravity ? in.mass * standard_gravity : 0.0)),
+        load_y_(in.radial_load().y()),
         load_z_(in.axial_load),
         unbalance_force_(in.unbalance * in.inner_speed * in.inner_speed),
         phase_(in.cage_phase) {}

@@ -32,7 +32,7 @@ class TwoDofModel final : public BearingModel {
         damping_(in.damping),
         gap_(in.bearing.ball_gap()),
         load_x_(in.load.x()),
-        load_y_(in.load.y() - (in.gravity ? in.mass * standard_gravity : 0.0)),
+        load_y_(in.radial_load().y()),
         unbalance_force_(in.unbalance * in.inner_speed * in.inner_speed),
         phase_(in.cage_phase) {}
 

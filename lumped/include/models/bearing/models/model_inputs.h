@@ -7,6 +7,7 @@
 #include <Eigen/Dense>
 
 #include "bearing/bearing.h"
+#include "bearing/constants.h"
 #include "bearing/contact.h"
 #include "bearing/contact_loop.h"
 #include "bearing/excitation.h"
@@ -25,14 +26,20 @@ struct ModelInputs {
   double inner_speed = 0.0;                        ///< ω_i [rad/s], outer ring fixed
   double cage_phase = 0.0;                         ///< φ₀, angle of ball 0 at t = 0 [rad]
   Eigen::Vector2d load = Eigen::Vector2d::Zero();  ///< constant radial load (F_x, F_y) [N]
-  double axial_load = 0.0;                         ///< F_z on the inner ring [N] (3-DOF)
-  double unbalance = 0.0;  ///< m_u e [kg m]; F_u = m_u e ω_i², rotating with the shaft
-  bool gravity = false;    ///< add −m g to F_y (g = standard_gravity = 9.80665 m/s²)
+  double axial_load = 0.0;  ///< F_z on the inner ring [N] (kinds that carry it: model_registry.h)
+  double unbalance = 0.0;   ///< m_u e [kg m]; F_u = m_u e ω_i², rotating with the shaft
+  bool gravity = false;     ///< add −m g to F_y (g = standard_gravity = 9.80665 m/s²)
 
   double mass = 0.0;           ///< inner ring + shaft mass m [kg]
   double damping = 0.0;        ///< radial viscous damping c [N s/m]
   double axial_mass = 0.0;     ///< axial mass [kg] (3-DOF; 0 → same as mass)
   double axial_damping = 0.0;  ///< axial damping [N s/m] (3-DOF)
+
+  /// The constant radial load on the inner ring [N]: `load`, with the weight −m g on F_y when
+  /// `gravity` is on.
+  Eigen::Vector2d radial_load() const {
+    return {load.x(), load.y() - (gravity ? mass * standard_gravity : 0.0)};
+  }
 
   Waviness inner_waviness;               ///< on the inner race (φ = θ_j − ω_i t)
   Waviness outer_waviness;               ///< on the outer race (φ = θ_j)

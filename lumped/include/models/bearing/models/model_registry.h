@@ -42,6 +42,9 @@ struct ModelDescriptor {
   std::vector<std::string> tables;
   /// Has ball DOFs: the spin, outer-load and friction channels (output.ball_dynamics).
   bool ball_dofs;
+  /// Carries operation.axial_load (an axial DOF, or the loaded contact angle). A kind without
+  /// one has no equilibrium for an axial load: check_axial_load_supported refuses it.
+  bool axial_load;
   /// The contact angle the model's kinematics use [rad]: the free one, or the loaded one of the
   /// axial static state.
   double (*contact_angle)(const ModelInputs&);
@@ -70,6 +73,12 @@ std::unique_ptr<ModelRun> make_run(ModelKind kind, const ModelInputs& inputs,
 /// the output instants a quasi-static run would sample. Throws InputError naming [[defects]] and
 /// the kind otherwise.
 void check_defects_supported(ModelKind kind, const std::vector<LocalDefect>& defects);
+
+/// operation.axial_load `axial_load` [N] needs a kind that carries it (ModelDescriptor::
+/// axial_load); `radial_load` [N] (the constant radial load's size, gravity included) only words
+/// the error. Throws InputError naming operation.axial_load, its value and the kinds that carry
+/// it.
+void check_axial_load_supported(ModelKind kind, double axial_load, double radial_load);
 
 /// A dynamic model through the [solver] integrator (dynamic_run.cc); `contact_angle` [rad] the
 /// kind's kinematic angle (ModelDescriptor::contact_angle), which the defects' transit times use.
