@@ -8,10 +8,38 @@
 #include "bearing/constants.h"
 #include "bearing/json_helpers.h"
 #include "bearing/local_defect.h"
+#include "bearing/models/model_registry.h"
+#include "bearing/models/three_dof.h"
 #include "bearing/presets.h"
+#include "bearing/simulation.h"
 #include "bearing/units.h"
 
 namespace bearing {
+
+namespace {
+
+// The case's constant loads on a perfect bearing: the static state the peak pressure is read at.
+ModelInputs static_model_inputs(const Case& c) {
+  ModelInputs in = model_inputs(c);
+  in.inner_waviness = {};
+  in.outer_waviness = {};
+  in.ball_size_errors.clear();
+  in.defects.clear();
+  return in;
+}
+
+// The largest ball load at the kind's static state (its initial displacement) [N].
+double model_static_peak_load(ModelKind kind, const ModelInputs& in) {
+  const ModelDescriptor& d = model_descriptor(kind);
+  if (!d.dynamic) throw std::logic_error("info: an axial load on a kind without a model");
+  const std::unique_ptr<BearingModel> model = d.dynamic(in);
+  const std::vector<double> q = model->initial_displacement();
+  std::vector<double> loads(static_cast<std::size_t>(in.bearing.balls));
+  model->ball_loads(0.0, q.data(), loads.data());
+  return *std::max_element(loads.begin(), loads.end());
+}
+
+}  // namespace
 
 InfoReport compute_info(const Case& c) {
   InfoReport r;
@@ -22,8 +50,15 @@ InfoReport compute_info(const Case& c) {
   o.exponent = r.contact.exponent;
   r.static_load =
       solve_static_load(c.bearing.balls, r.contact.K, c.bearing.ball_gap(), c.operation.load, o);
-  r.inner_peak_pressure = r.contact.inner.peak_pressure(r.static_load.q_max);
-  r.outer_peak_pressure = r.contact.outer.peak_pressure(r.static_load.q_max);
+  r.peak_load = r.static_load.q_max;
+  if (model_descriptor(c.model.kind).axial_load && c.operation.axial_load != 0) {
+    const ModelInputs in = static_model_inputs(c);
+    const AxialPreload a = solve_axial_preload(in);
+    r.axial = AxialStaticInfo{a.contact_angle, a.ball_load, a.z};
+    r.peak_load = model_static_peak_load(c.model.kind, in);
+  }
+  r.inner_peak_pressure = r.contact.inner.peak_pressure(r.peak_load);
+  r.outer_peak_pressure = r.contact.outer.peak_pressure(r.peak_load);
   const Bearing& b = c.bearing;
   const double wc = cage_speed(b, c.operation.speed);
   for (const LocalDefect& d : c.excitation.defects) {
@@ -73,9 +108,14 @@ nlohmann::json info_json(const InfoReport& r) {
       {"ball_angles", s.ball_angles},
       {"ball_loads", s.ball_loads},
       {"q_max", s.q_max},
+      {"peak_load", r.peak_load},
       {"peak_pressure", {{"inner", r.inner_peak_pressure}, {"outer", r.outer_peak_pressure}}},
       {"pressure_limit", kElasticPressureLimit},
       {"elastic", elastic_limit_warning(r).empty()}};
+  if (r.axial)
+    j["static"]["axial"] = {{"contact_angle", r.axial->contact_angle},
+                            {"ball_load", r.axial->ball_load},
+                            {"z", r.axial->z}};
   for (std::size_t i = 0; i < r.defects.size(); ++i) {
     const LocalDefect& d = r.input.excitation.defects[i];
     const DefectInfo& info = r.defects[i];
@@ -90,13 +130,24 @@ nlohmann::json info_json(const InfoReport& r) {
   }
   // K is in N/m^n with the exponent n beside it (1.5 for the Hertz methods).
   const std::string k_unit = cal ? "N/m^exponent" : "N/m^1.5";
-  j["units"] = {{"case.speed", "rad/s"},        {"case.load", "N"},
-                {"kinematics", "Hz"},           {"contact.*.sum_rho", "1/m"},
-                {"contact.*.K", k_unit},        {"contact.K", k_unit},
-                {"contact.*.exponent", "1"},    {"contact.exponent", "1"},
-                {"static.deflection", "m"},     {"static.ball_angles", "rad"},
-                {"static.ball_loads", "N"},     {"static.q_max", "N"},
-                {"static.peak_pressure", "Pa"}, {"static.pressure_limit", "Pa"}};
+  j["units"] = {{"case.speed", "rad/s"},
+                {"case.load", "N"},
+                {"kinematics", "Hz"},
+                {"contact.*.sum_rho", "1/m"},
+                {"contact.*.K", k_unit},
+                {"contact.K", k_unit},
+                {"contact.*.exponent", "1"},
+                {"contact.exponent", "1"},
+                {"static.deflection", "m"},
+                {"static.ball_angles", "rad"},
+                {"static.ball_loads", "N"},
+                {"static.q_max", "N"},
+                {"static.peak_load", "N"},
+                {"static.peak_pressure", "Pa"},
+                {"static.pressure_limit", "Pa"},
+                {"static.axial.contact_angle", "rad"},
+                {"static.axial.ball_load", "N"},
+                {"static.axial.z", "m"}};
   if (!r.defects.empty()) {
     for (const char* k :
          {"defects.width", "defects.depth", "defects.inner_drop", "defects.outer_drop"})
@@ -255,16 +306,27 @@ std::string info_text(const InfoReport& r) {
     o << "  no radial load: inner ring centred, no ball loaded\n";
   } else {
     // Fixed decimals: the solver's round-off (~1e-21 m) is not worth showing as "-1.3e-15 um".
+    if (r.axial) o << "  under the radial load alone (the 2-DOF distribution):\n";
     o << "  inner-ring deflection x = " << fixed(s.deflection.x() * 1e6, 4)
       << " um, y = " << fixed(s.deflection.y() * 1e6, 4)
       << " um (|d| = " << fixed(s.deflection.norm() * 1e6, 4) << " um)\n";
     o << "  Q_max = " << num(s.q_max)
       << " N; Q_max Z / F_r = " << num(s.q_max * b.balls / c.operation.load.norm(), 4) << "\n";
-    o << "  peak Hertz pressure at Q_max: inner " << num(r.inner_peak_pressure * 1e-9, 4)
-      << " GPa, outer " << num(r.outer_peak_pressure * 1e-9, 4) << " GPa (elastic limit "
+  }
+  if (r.axial)
+    o << "  axial load " << num(c.operation.axial_load) << " N alone: contact angle "
+      << fixed(r.axial->contact_angle * 180.0 / pi, 3) << " deg, each ball "
+      << num(r.axial->ball_load) << " N, ring at z = " << fixed(r.axial->z * 1e6, 4) << " um\n";
+  if (r.peak_load > 0) {
+    o << "  peak Hertz pressure at the most loaded ball (" << num(r.peak_load)
+      << (r.axial ? " N, radial and axial loads together" : " N") << "): inner "
+      << num(r.inner_peak_pressure * 1e-9, 4) << " GPa, outer "
+      << num(r.outer_peak_pressure * 1e-9, 4) << " GPa (elastic limit "
       << num(kElasticPressureLimit * 1e-9, 2) << " GPa, ISO 76)\n";
     const std::string warning = elastic_limit_warning(r);
     if (!warning.empty()) o << "  WARNING: " << warning << "\n";
+  }
+  if (c.operation.load.norm() != 0.0) {
     o << "  " << rpad("ball", 6) << rpad("angle [deg]", 14) << rpad("approach [um]", 16)
       << rpad("load [N]", 14) << "\n";
     for (std::size_t j = 0; j < s.ball_loads.size(); ++j)
@@ -288,7 +350,8 @@ std::string elastic_limit_warning(const InfoReport& r) {
          gpa(r.inner_peak_pressure) + ", outer " + gpa(r.outer_peak_pressure) +
          "), passes the elastic limit of " + gpa(kElasticPressureLimit) +
          " GPa (ISO 76): the contacts yield, and the model's elastic contact law does not hold "
-         "there; reduce operation.load";
+         "there; reduce operation.load" +
+         std::string(r.axial ? " or operation.axial_load" : "");
 }
 
 }  // namespace bearing

@@ -368,4 +368,34 @@ TEST(CliRun, ALoadBeyondTheElasticLimitIsReportedAndWarned) {
   EXPECT_EQ(out.find("warning"), std::string::npos) << out;
 }
 
+// With an axial load (a kind that carries it) the peak pressure is read at the kind's static state:
+// under the axial load alone every ball carries Q with Z Q sin α = F_z (the equilibrium, checked
+// here independently of the solver), the peak load is that Q, and a heavy axial load alone passes
+// the limit. Without an axial load the peak load is the radial distribution's Q_max.
+TEST(CliRun, AnAxialLoadCountsTowardTheElasticLimit) {
+  std::string out;
+  const std::string axial_only = " --set 'operation.load=[0, 0]' --set model.kind=3dof";
+  ASSERT_EQ(sim("info --json" + axial_only + " --set operation.axial_load=2000", &out), 0) << out;
+  const auto s = nlohmann::json::parse(out)["static"];
+  const double Q = s["axial"]["ball_load"].get<double>();
+  const double alpha = s["axial"]["contact_angle"].get<double>();
+  EXPECT_NEAR(8 * Q * std::sin(alpha), 2000.0, 1e-9 * 2000.0);  // the 6308 has Z = 8
+  EXPECT_NEAR(s["peak_load"].get<double>(), Q, 1e-9 * Q);
+  EXPECT_TRUE(s["elastic"].get<bool>());
+
+  ASSERT_EQ(sim("info --json" + axial_only + " --set operation.axial_load=150000", &out), 0) << out;
+  const auto heavy = nlohmann::json::parse(out)["static"];
+  EXPECT_FALSE(heavy["elastic"].get<bool>());
+  const double ratio =
+      heavy["peak_pressure"]["inner"].get<double>() / s["peak_pressure"]["inner"].get<double>();
+  EXPECT_NEAR(ratio, std::cbrt(heavy["peak_load"].get<double>() / Q), 1e-9 * ratio);
+  ASSERT_EQ(sim("info" + axial_only + " --set operation.axial_load=150000", &out), 0);
+  EXPECT_NE(out.find("or operation.axial_load"), std::string::npos) << out;
+
+  ASSERT_EQ(sim("info --json --set 'operation.load=[0, -3000]'", &out), 0) << out;
+  const auto radial = nlohmann::json::parse(out)["static"];
+  EXPECT_FALSE(radial.contains("axial"));
+  EXPECT_EQ(radial["peak_load"].get<double>(), radial["q_max"].get<double>());
+}
+
 }  // namespace

@@ -2,6 +2,7 @@
 // `bearing-sim info`: the numbers that follow from a case's geometry and load alone — contact
 // constants, bearing frequencies and the static load distribution — as text and as JSON.
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -22,11 +23,24 @@ struct DefectInfo {
   double max_step = 0;    ///< the largest fixed step a run accepts [s] (crossing / 10)
 };
 
+/// The axial static state of a kind that carries operation.axial_load (model_registry.h).
+struct AxialStaticInfo {
+  double contact_angle = 0;  ///< loaded contact angle α under the axial load alone [rad]
+  double ball_load = 0;      ///< each ball's load under the axial load alone [N]
+  double z = 0;              ///< the inner ring's axial position (0: balls just touch) [m]
+};
+
 struct InfoReport {
   Case input;
   ContactConstants contact;
   BearingFrequencies frequencies;
-  StaticLoadResult static_load;
+  StaticLoadResult static_load;  ///< under the radial load, as the 2-DOF model sees it
+  /// With an axial load on a kind that carries it: its state under the axial load alone.
+  std::optional<AxialStaticInfo> axial;
+  /// The most loaded ball's load in the kind's static state, radial and axial loads together
+  /// (the model's initial_displacement, without waviness, size errors or defects) [N]; the peak
+  /// pressures are at this load.
+  double peak_load = 0;
   double inner_peak_pressure = 0;  ///< peak Hertz pressure of the most loaded ball, inner race [Pa]
   double outer_peak_pressure = 0;  ///< the same on the outer race [Pa]
   std::vector<DefectInfo> defects;  ///< one per [[defects]] entry
@@ -42,7 +56,8 @@ InfoReport compute_info(const Case& c);
 /// JSON with the keys of DESIGN.md: kinematics.{shaft,ftf,bpfo,bpfi,bsf} [Hz],
 /// contact.{inner,outer}.{sum_rho [1/m], f_rho, ellipticity, delta_star, K [N/m^n], exponent n},
 /// contact.K, contact.exponent, static.{deflection [m, m], ball_loads [N], q_max [N],
-/// peak_pressure.{inner, outer} [Pa], pressure_limit [Pa], elastic (bool)}; plus
+/// peak_load [N], peak_pressure.{inner, outer} [Pa], pressure_limit [Pa], elastic (bool), and
+/// with an axial load axial.{contact_angle [rad], ball_load [N], z [m]}}; plus
 /// contact.method, static.ball_angles [rad] and a `units` object; for a calibrated law
 /// contact.calibration (calibration_json, json_helpers.h); with [[defects]], defects[] with
 /// location, width, depth [m], inner_drop, outer_drop [m], crossing, max_step [s] (null at rest).
