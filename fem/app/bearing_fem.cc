@@ -28,6 +28,7 @@
 #include "app/radiate.h"
 #include "bearing/calibration.h"
 #include "bearing/case_file.h"
+#include "bearing/cli_options.h"
 #include "bearing/constants.h"
 #include "bearing/contact.h"
 #include "bearing/errors.h"
@@ -135,13 +136,8 @@ nlohmann::json setup_raceway(const ContactOptions& o, const bearing::Case& c, be
     throw InputError(std::string(outer ? "--outside-diameter" : "--bore") + " = " +
                      std::to_string(2 * r.back_radius) + " m leaves no ring under the groove " +
                      "(groove-bottom diameter " + std::to_string(2 * r.groove_bottom) + " m)");
-  if (!(o.groove_depth > 0 && o.groove_depth < 0.5))
-    throw InputError("--groove-depth = " + std::to_string(o.groove_depth) +
-                     ": the land depth over D must lie in (0, 0.5)");
+  // --groove-depth and --segment-angle are range-checked on the command line (main).
   const double angle = o.segment_angle > 0 ? o.segment_angle * pi / 180 : pi / b.balls;
-  if (!(angle < pi / 2))
-    throw InputError("--segment-angle = " + std::to_string(o.segment_angle) +
-                     " deg: must lie in (0, 90)");
   r.paraboloid_gap = o.gap == "paraboloid";
   fem::mesh_raceway_segment(r, o.groove_depth * D, angle, (out / "raceway_segment.msh").string(),
                             comm);
@@ -433,36 +429,51 @@ int main(int argc, char** argv) {
                       "hertz (block + paraboloid) | groove (ring segment with its true groove)");
   contact->add_option("--gap", o.gap,
                       "groove: exact (rigid sphere) | paraboloid (Hertz's gap on the real ring)");
-  contact->add_option("--groove-depth", o.groove_depth,
-                      "groove: land depth below the groove edge over D (default 0.2)");
-  contact->add_option("--segment-angle", o.segment_angle,
-                      "groove: segment half-angle [deg] (default 180/Z: half the ball pitch)");
-  contact->add_option("--bore", o.bore, "groove: inner-ring bore d [m] (default: ISO 15)");
-  contact->add_option("--outside-diameter", o.outside,
-                      "groove: outer-ring outside diameter [m] (default: ISO 15)");
-  contact->add_option("--width", o.width, "groove: ring width B [m] (default: ISO 15)");
+  contact
+      ->add_option("--groove-depth", o.groove_depth,
+                   "groove: land depth below the groove edge over D (default 0.2)")
+      ->check(bearing::cli::range(0, 0.49, true));
+  contact
+      ->add_option("--segment-angle", o.segment_angle,
+                   "groove: segment half-angle [deg] (default 180/Z: half the ball pitch)")
+      ->check(bearing::cli::range(0, 89.9));
+  contact->add_option("--bore", o.bore, "groove: inner-ring bore d [m] (default: ISO 15)")
+      ->check(bearing::cli::range(0, 10));
+  contact
+      ->add_option("--outside-diameter", o.outside,
+                   "groove: outer-ring outside diameter [m] (default: ISO 15)")
+      ->check(bearing::cli::range(0, 10));
+  contact->add_option("--width", o.width, "groove: ring width B [m] (default: ISO 15)")
+      ->check(bearing::cli::range(0, 10));
   contact->add_option("--out", o.out_dir, "Output folder (created if missing)")->required();
   contact->add_option("--cells", o.cells, "Finest cells per semi-minor axis b at the largest load")
-      ->check(CLI::PositiveNumber);
+      ->check(bearing::cli::range(1, 64));
   contact
       ->add_option("--stretch", o.stretch,
                    "Cell aspect h_y/h_x >= 1 (stretched along the major axis)")
-      ->check(CLI::Range(1.0, 100.0));
-  contact->add_option("--grading", o.grading,
-                      "Cell size >= distance / grading away from the patch");
-  contact->add_option("--domain", o.domain, "Block size over the major semi-axis a (about)");
-  contact->add_option("--tolerance", o.tolerance, "CG tolerance relative to the right-hand side");
-  contact->add_option("--steps", o.steps, "Approach steps")->check(CLI::Range(2, 100));
-  contact->add_option("--load-min", o.load_min,
-                      "Smallest load [N] (default: load-max x --load-min-fraction)");
+      ->check(bearing::cli::range(1, 100));
+  contact->add_option("--grading", o.grading, "Cell size >= distance / grading away from the patch")
+      ->check(bearing::cli::range(1, 100));
+  contact->add_option("--domain", o.domain, "Block size over the major semi-axis a (about)")
+      ->check(bearing::cli::range(4, 1e4));
+  contact->add_option("--tolerance", o.tolerance, "CG tolerance relative to the right-hand side")
+      ->check(bearing::cli::range(0, 1e-3, true));
+  contact->add_option("--steps", o.steps, "Approach steps")->check(bearing::cli::range(2, 100));
+  contact
+      ->add_option("--load-min", o.load_min,
+                   "Smallest load [N] (default: load-max x --load-min-fraction)")
+      ->check(bearing::cli::range(0, 1e7));
   contact
       ->add_option("--load-min-fraction", o.load_min_fraction,
                    "Smallest load over the largest when --load-min is not given (default 0.1)")
-      ->check(CLI::Range(1e-6, 0.999));
-  contact->add_option("--load-max", o.load_max, "Largest load [N] (default: Q_max of the case)");
-  contact->add_option("--peak-pressure", o.peak_pressure,
-                      "Largest load given as its Hertz peak pressure on this race [Pa], e.g. "
-                      "4.2e9 (ISO 76's static limit)");
+      ->check(bearing::cli::range(1e-6, 0.999));
+  contact->add_option("--load-max", o.load_max, "Largest load [N] (default: Q_max of the case)")
+      ->check(bearing::cli::range(0, 1e7));
+  contact
+      ->add_option("--peak-pressure", o.peak_pressure,
+                   "Largest load given as its Hertz peak pressure on this race [Pa], e.g. "
+                   "4.2e9 (ISO 76's static limit)")
+      ->check(bearing::cli::range(0, 1e11));
   contact->add_flag("!--no-vtu", o.vtu, "Do not write VTU files");
   contact->add_flag("--quiet", o.quiet, "No progress output");
   ContactOptions co;
@@ -480,19 +491,24 @@ int main(int argc, char** argv) {
   calibrate->add_option("--geometry", co.geometry, "hertz (default) | groove");
   calibrate->add_option("--gap", co.gap, "groove: exact | paraboloid");
   calibrate->add_option("--cells", co.cells, "Finest cells per semi-minor axis b at Q_max")
-      ->check(CLI::PositiveNumber);
-  calibrate->add_option("--grading", co.grading, "Cell size >= distance / grading");
+      ->check(bearing::cli::range(1, 64));
+  calibrate->add_option("--grading", co.grading, "Cell size >= distance / grading")
+      ->check(bearing::cli::range(1, 100));
   calibrate->add_option("--steps", co.steps, "Approach steps per race (default 3)")
-      ->check(CLI::Range(2, 100));
-  calibrate->add_option("--load-min", co.load_min, "Smallest load [N] (default: Q_max / 10)");
-  calibrate->add_option("--load-max", co.load_max, "Largest load [N] (default: Q_max of the case)");
+      ->check(bearing::cli::range(2, 100));
+  calibrate->add_option("--load-min", co.load_min, "Smallest load [N] (default: Q_max / 10)")
+      ->check(bearing::cli::range(0, 1e7));
+  calibrate->add_option("--load-max", co.load_max, "Largest load [N] (default: Q_max of the case)")
+      ->check(bearing::cli::range(0, 1e7));
   calibrate->add_flag("--quiet", co.quiet, "No progress output");
   bearing::fem::RadiateOptions ro;
   auto* radiate = bearing::fem::add_radiate_command(app, ro);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
-    return app.exit(e);
+    if (dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) != 0)
+      return e.get_exit_code() == 0 ? 0 : 2;
+    return bearing::cli::parse_error_exit(app, e, "bearing-fem");
   }
   try {
     if (*calibrate) return run_calibrate(co, calibration_file, MPI_COMM_WORLD);

@@ -26,6 +26,7 @@
 
 #include "bearing/acoustics/sources.h"
 #include "bearing/case_file.h"
+#include "bearing/cli_options.h"
 #include "bearing/constants.h"
 #include "bearing/errors.h"
 #include "radiation/helmholtz_radiation.h"
@@ -412,38 +413,52 @@ CLI::App* add_radiate_command(CLI::App& app, RadiateOptions& o) {
   cmd->add_option("--reference", o.reference,
                   "Exact source the FE field is compared with (default: the same source; e.g. "
                   "pulsating-sphere for seed 000's ball model)");
-  cmd->add_option("--radius", o.radius, "Body radius a [m] (single source)");
+  cmd->add_option("--radius", o.radius, "Body radius a [m] (single source)")
+      ->check(bearing::cli::range(0, 100));
   cmd->add_option("--microphone", o.microphones,
                   "r,angle: distance [m] from the centre and angle [deg] from the direction of "
                   "motion (repeatable; default 4a,0; bearing: the case's microphones)");
   cmd->add_option("--frequencies", o.frequencies,
                   "f1,f2,... [Hz] (default: the 24 one-third-octave centres 100 Hz - 20 kHz)")
-      ->delimiter(',');
+      ->delimiter(',')
+      ->check(bearing::cli::range(0, 1e6, true));
   cmd->add_option("--set", o.sets, "Override a case-file value, TABLE.KEY=VALUE (bearing)");
-  cmd->add_option("--density", o.density, "Air density [kg/m^3] (default 1.204, 20 C)");
-  cmd->add_option("--sound-speed", o.sound_speed, "Speed of sound [m/s] (default 343.2, 20 C)");
-  cmd->add_option("--degree", o.degree, "Polynomial degree of the elements (default 4)");
+  cmd->add_option("--density", o.density, "Air density [kg/m^3] (default 1.204, 20 C)")
+      ->check(bearing::cli::range(0, 1e4));
+  cmd->add_option("--sound-speed", o.sound_speed, "Speed of sound [m/s] (default 343.2, 20 C)")
+      ->check(bearing::cli::range(0, 1e5));
+  cmd->add_option("--degree", o.degree, "Polynomial degree of the elements (default 4)")
+      ->check(bearing::cli::range(1, 8));
   cmd->add_option("--cells-per-wavelength", o.cells_per_wavelength,
-                  "Coarse cells per shortest wavelength (default 1.5)");
+                  "Coarse cells per shortest wavelength (default 1.5)")
+      ->check(bearing::cli::range(0, 20, true));
   cmd->add_option("--cells-per-radius", o.cells_per_radius,
-                  "Coarse cells per body radius along its surface (default 4)");
-  cmd->add_option("--refinements", o.refinements, "Global refinements of the coarse mesh");
+                  "Coarse cells per body radius along its surface (default 4)")
+      ->check(bearing::cli::range(4, 64));
+  cmd->add_option("--refinements", o.refinements, "Global refinements of the coarse mesh")
+      ->check(bearing::cli::range(0, 6));
   cmd->add_option("--physical-radius", o.physical_radius,
                   "Radius of the meshed zone R0 [m] (default: 1.25 x the bodies' extent, or 1.1 "
                   "x the farthest microphone within 3 x the extent; farther microphones are "
-                  "reached by outgoing-mode continuation)");
+                  "reached by outgoing-mode continuation)")
+      ->check(bearing::cli::range(0, 100));
   cmd->add_option("--pml-thickness", o.pml_thickness,
-                  "Layer thickness L [m] (default: min(shortest wavelength / 2, R0 / 2))");
+                  "Layer thickness L [m] (default: min(shortest wavelength / 2, R0 / 2))")
+      ->check(bearing::cli::range(0, 100));
   cmd->add_option("--pml-layers", o.pml_layers,
                   "Coarse cells across the layer (default: automatic, at least 4 and about one "
-                  "e-fold of the near field per cell at the lowest frequency)");
+                  "e-fold of the near field per cell at the lowest frequency)")
+      ->check(bearing::cli::range(0, 200));
   cmd->add_option("--pml-attenuation", o.pml_attenuation,
-                  "Decay of an outgoing wave across the layer, e^-s (default s = 12)");
+                  "Decay of an outgoing wave across the layer, e^-s (default s = 12)")
+      ->check(bearing::cli::range(0, 1000, true));
   cmd->add_option("--gap", o.gap,
                   "bearing: clearance between ring and balls in the section [m] (default 5 % of "
-                  "D; the ring's radius is reduced to make it)");
+                  "D; the ring's radius is reduced to make it)")
+      ->check(bearing::cli::range(0, 1));
   cmd->add_option("--ball-angle", o.ball_angle,
-                  "bearing: ball 1's angle from +x [deg] (default -90)");
+                  "bearing: ball 1's angle from +x [deg] (default -90)")
+      ->check(bearing::cli::range(-360, 360));
   cmd->add_option("--ball-motion", o.ball_motion,
                   "bearing: radial (each ball translating along its radius, default) | breathing");
   cmd->add_option("--out", o.out_dir, "Output folder (created if missing)")->required();

@@ -17,6 +17,7 @@
 #include <CLI/CLI.hpp>
 
 #include "bearing/case_file.h"
+#include "bearing/cli_options.h"
 #include "bearing/contact_loop.h"
 #include "bearing/errors.h"
 #include "bearing/info_report.h"
@@ -332,7 +333,7 @@ void add_sweep_options(CLI::App* cmd, SweepOptions& o) {
                   "(units allowed), repeat for more keys; with --samples and --seed")
       ->allow_extra_args(false);
   cmd->add_option("--samples", o.samples, "Number of cases of a random design")
-      ->check(CLI::PositiveNumber);
+      ->check(bearing::cli::range(1, 1e9));
   cmd->add_option("--seed", o.seed,
                   "Seed of a random design (default 1): the same seed gives the same cases")
       ->capture_default_str();
@@ -354,7 +355,7 @@ void add_sweep_options(CLI::App* cmd, SweepOptions& o) {
   cmd->add_option("--jobs", o.jobs,
                   "Parallel cases (default: all cores); under mpirun, per rank (default: the "
                   "cores shared among the machine's ranks)")
-      ->check(CLI::NonNegativeNumber);
+      ->check(bearing::cli::range(0, 4096));
 }
 
 }  // namespace
@@ -436,7 +437,8 @@ int main(int argc, char** argv) {
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
-    return world_rank() == 0 ? app.exit(e) : e.get_exit_code();
+    if (world_rank() != 0) return e.get_exit_code() == 0 ? 0 : 2;
+    return bearing::cli::parse_error_exit(app, e, "bearing-sim");
   }
   const bool tty = isatty(STDERR_FILENO) && !quiet && world_rank() == 0;
   // Under mpirun, every command but sweep runs on rank 0 alone.

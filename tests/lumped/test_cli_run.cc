@@ -399,3 +399,27 @@ TEST(CliRun, AnAxialLoadCountsTowardTheElasticLimit) {
 }
 
 }  // namespace
+
+// A command-line error (an unknown option, an option's value out of its range, a value that is
+// not a number) is bad input like a case file's: exit 2 and one line naming the option; --help
+// and --version still give 0.
+TEST(CliRun, CommandLineErrorsAreInputErrors) {
+  const fs::path dir = fresh_dir("cli_errors");
+  const struct {
+    std::string args, named;
+  } bad[] = {{"sweep --jobs -3 --vary bearing.balls=8:9:2", "--jobs"},
+             {"sweep --jobs nan --vary bearing.balls=8:9:2", "--jobs"},
+             {"sweep --samples 0 --sample 'bearing.balls=uniform(8, 9)'", "--samples"},
+             {"run --no-such-option", "--no-such-option"},
+             {"run --jobs 2", "--jobs"}};
+  for (const auto& b : bad) {
+    std::string out;
+    EXPECT_EQ(sim(b.args + " --out " + dir.string(), &out), 2) << b.args << ": " << out;
+    EXPECT_NE(out.find(b.named), std::string::npos) << b.args << ": " << out;
+    EXPECT_EQ(out.find('\n'), out.size() - 1) << b.args << ": not one line: " << out;
+    EXPECT_TRUE(!fs::exists(dir) || fs::is_empty(dir)) << b.args;
+  }
+  std::string out;
+  EXPECT_EQ(sim("--help", &out), 0);
+  EXPECT_EQ(sim("--version", &out), 0);
+}
