@@ -13,6 +13,7 @@
 #include "bearing/acoustics/pressure.h"
 #include "bearing/case_file.h"
 #include "bearing/contact.h"
+#include "bearing/contact_loop.h"
 #include "bearing/limits.h"
 #include "bearing/local_defect.h"
 #include "bearing/models/model_registry.h"
@@ -125,6 +126,10 @@ const Range kRanges[] = {
     {"material.density", 3000, 8000, false, nullptr},
     {"rotor.mass", 0.1, 5, true, &bearing::limits::rotor_mass},
     {"rotor.damping", 0, 2000, false, &bearing::limits::rotor_damping},
+    {"rotor.axial_mass", 0.1, 5, true, &bearing::limits::rotor_axial_mass},
+    {"rotor.axial_damping", 0, 2000, false, &bearing::limits::rotor_axial_damping},
+    {"ball.damping", 0, 2000, false, &bearing::limits::ball_damping},
+    {"solver.max_displacement", 1e-4, 1e-2, true, &bearing::limits::solver_max_displacement},
     {"operation.speed", 0, 10000 * M_PI / 30, false, &bearing::limits::operation_speed},
     {"operation.unbalance", 0, 20e-6, false, &bearing::limits::operation_unbalance},
     {"cage.slip", 0, 0.05, false, &bearing::limits::cage_slip},
@@ -184,8 +189,17 @@ std::string CaseDraw::next() {
     t << "[material]\nyoung = " << num(draw("material.young"))
       << "\npoisson = " << num(draw("material.poisson"))
       << "\ndensity = " << num(draw("material.density")) << "\n";
+  for (const char* part : {"ball", "rings"})
+    if (coin(0.15))
+      t << "[material." << part << "]\nyoung = " << num(draw("material.young"))
+        << "\npoisson = " << num(draw("material.poisson"))
+        << "\ndensity = " << num(draw("material.density")) << "\n";
   t << "[rotor]\nmass = " << num(draw("rotor.mass")) << "\ndamping = " << num(draw("rotor.damping"))
-    << "\n[operation]\nspeed = \"" << (coin(0.05) ? std::string("0") : num(draw("operation.speed")))
+    << "\n";
+  if (coin(0.3))
+    t << "axial_mass = " << num(draw("rotor.axial_mass"))
+      << "\naxial_damping = " << num(draw("rotor.axial_damping")) << "\n";
+  t << "[operation]\nspeed = \"" << (coin(0.05) ? std::string("0") : num(draw("operation.speed")))
     << " rad/s\"\nload = [" << num(u(-200, 200)) << ", "
     << num(-std::exp(u(std::log(10), std::log(5000)))) << "]\n";
   if (coin(0.3)) t << "axial_load = " << num(u(0, 2000)) << "\n";
@@ -217,12 +231,19 @@ std::string CaseDraw::next() {
     t << "[cage]\nslip = " << num(draw("cage.slip"))
       << "\nfriction = " << num(draw("cage.friction"))
       << "\nslide_speed = " << num(draw("cage.slide_speed")) << "\n";
-  if (kind.owns("ball")) t << "[ball]\ncentrifugal = " << (coin(0.5) ? "true" : "false") << "\n";
+  if (kind.owns("ball")) {
+    t << "[ball]\ncentrifugal = " << (coin(0.5) ? "true" : "false") << "\n";
+    // ball.mass and ball.inertia keep their defaults from the drawn density: a free draw gives
+    // a 6308's ball a 608's inertia, and its spin needs 1e5 steps.
+    if (coin(0.3)) t << "damping = " << num(draw("ball.damping")) << "\n";
+  }
   const double rate = u(10e3, 40e3);
   t << "[solver]\nmethod = \"" << pick(bearing::kIntegratorMethods)
     << "\"\ndt = " << num(draw("solver.dt")) << "\ntolerance = " << num(draw("solver.tolerance"))
     << "\nduration = " << num(u(0.04, 0.08)) << "\ntransient = " << num(u(0.01, 0.02))
-    << "\noutput_rate = " << num(rate) << "\n";
+    << "\noutput_rate = " << num(rate) << "\ncontact_loop = \"" << pick(bearing::kContactLoops)
+    << "\"\n";
+  if (coin(0.2)) t << "max_displacement = " << num(draw("solver.max_displacement")) << "\n";
   if (coin(0.3)) {
     t << "[acoustics]\nmicrophones = [";
     for (int i = integer(1, 3); i > 0; --i)
@@ -246,6 +267,23 @@ std::string CaseDraw::next() {
     t << "envelope_band = [" << num(lo) << ", " << num(u(lo + 1000, rate / 2)) << "]\n";
   }
   return t.str();
+}
+
+// The scan finds what it looks for, in text and in .npy data, and nothing in words like "info".
+TEST(Guarantees, TheNonFiniteScanFindsNanAndInf) {
+  EXPECT_NE(non_finite_in("a.csv", "t,x\n0,1\n1,nan\n"), "");
+  EXPECT_NE(non_finite_in("a.csv", "t,x\n0,-inf\n"), "");
+  EXPECT_NE(non_finite_in("s.json", "{\"rms\": Infinity}"), "");
+  EXPECT_NE(non_finite_in("s.json", "{\"rms\": NaN}"), "");
+  EXPECT_EQ(non_finite_in("s.json", "{\"info\": \"inner\", \"nano\": 1e-9, \"l\": \"BPFI\"}"), "");
+  std::string npy = std::string("\x93NUMPY\x01\x00\x76\x00", 10) +
+                    "{'descr': '<f8', 'fortran_order': False, 'shape': (2, 1), }";
+  npy += std::string(127 - npy.size(), ' ') + "\n";
+  const double values[2] = {1.5, std::nan("")};
+  npy.append(reinterpret_cast<const char*>(values), 16);
+  EXPECT_NE(non_finite_in("r.npy", npy), "");
+  npy.replace(npy.size() - 8, 8, std::string(reinterpret_cast<const char*>(values), 8));
+  EXPECT_EQ(non_finite_in("r.npy", npy), "");
 }
 
 TEST(Guarantees, FuzzRangesLieWithinTheSchemasRanges) {
