@@ -111,6 +111,33 @@ TEST(Guarantees, SigkillNeverLeavesAPartialFile) {
     EXPECT_TRUE(name == ".run.lock" || !hidden(name)) << name << " was left by a killed run";
 }
 
+// The commit (renames, removals) is a few system calls long, so random kills hardly ever land in
+// it; here strace kills the run (SIGKILL, injected on entering the call) at its 1st, 2nd, ...
+// rename or unlink in turn, until a run gets through. After every kill each final name still
+// holds a complete file. (The commit of 2026-11-25 removed the old files before renaming the new
+// ones: a kill at its 2nd unlink left no response.csv.)
+TEST(Guarantees, SigkillAtEachStepOfTheCommit) {
+  if (std::system("strace -qq -o /dev/null true >/dev/null 2>&1") != 0)
+    GTEST_SKIP() << "strace is missing or may not trace here (ptrace refused)";
+  const fs::path ref = fresh_dir("g_step_ref"), dir = fresh_dir("g_step");
+  ASSERT_EQ(sim("run --out " + ref.string() + kCase), 0);
+  ASSERT_EQ(sim("run --out " + dir.string() + kCase), 0);
+  const auto reference = results_of(ref);
+  int kills = 0;
+  for (const std::string call : {"rename", "renameat", "renameat2", "unlink", "unlinkat"})
+    for (int k = 1; k <= 40; ++k) {
+      const std::string cmd = "strace -f -qq -o /dev/null -e trace=" + call + " -e inject=" + call +
+                              ":signal=KILL:when=" + std::to_string(k) + " " + BEARING_SIM +
+                              " run --out " + dir.string() + kCase + " >/dev/null 2>&1";
+      const int status = std::system(cmd.c_str());
+      expect_complete(dir, reference, "killed at " + call + " #" + std::to_string(k));
+      if (WIFEXITED(status) && WEXITSTATUS(status) == 0) break;  // no k-th call: ran through
+      ++kills;
+    }
+  std::cout << "  " << kills << " runs killed at a rename or unlink\n";
+  EXPECT_GE(kills, 8);
+}
+
 // Two runs started at once into one folder end with one complete set: of the same case, the
 // reference's files; of two cases with different sets of files (CSV and NumPy), exactly one
 // case's set, never a mix. Each round starts both within a millisecond, so their writing overlaps.
