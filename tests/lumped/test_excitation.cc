@@ -1,5 +1,7 @@
 // Excitations (excitation.h): waviness profiles, waviness tables, ball-size errors in a band.
 
+#include <unistd.h>
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -61,7 +63,9 @@ TEST(ExcitationWaviness, PhaseShiftsTheProfile) {
 class TempFile {
  public:
   explicit TempFile(const std::string& text, const std::string& name = "waviness.csv") {
-    path_ = ::testing::TempDir() + "excitation_" + std::to_string(counter_++) + "_" + name;
+    // The process id too: ctest -j runs each test in a process of its own, all counting from 0.
+    path_ = ::testing::TempDir() + "excitation_" + std::to_string(getpid()) + "_" +
+            std::to_string(counter_++) + "_" + name;
     std::ofstream(path_) << text;
   }
   ~TempFile() { std::remove(path_.c_str()); }
