@@ -468,6 +468,9 @@ int main(int argc, char** argv) {
   } catch (const bearing::SolverError& e) {
     std::cerr << who() << ": solver error: " << e.what() << "\n";
     return fail(3);
+  } catch (const bearing::OutputError& e) {
+    std::cerr << who() << ": write error: " << e.what() << "\n";
+    return fail(3);
   } catch (const std::exception& e) {
     std::cerr << who() << ": internal error: " << e.what() << "\n";
     return fail(1);

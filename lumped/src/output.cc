@@ -1,5 +1,9 @@
 #include "bearing/output.h"
 
+#include <fcntl.h>
+#include <sys/file.h>
+#include <unistd.h>
+
 #include <algorithm>
 #include <cerrno>
 #include <cmath>
@@ -44,8 +48,7 @@ class BufferedFile {
  public:
   explicit BufferedFile(const fs::path& path)
       : path_(path), file_(std::fopen(path.c_str(), "wb")), buffer_(new char[kCapacity]) {
-    if (!file_)
-      throw InputError("cannot write " + path.string() + " (" + std::strerror(errno) + ")");
+    if (!file_) fail();
   }
   ~BufferedFile() {
     if (file_) std::fclose(file_);
@@ -81,7 +84,7 @@ class BufferedFile {
     flush();
     const bool failed = std::fclose(file_) != 0;
     file_ = nullptr;
-    if (failed) throw InputError("cannot write " + path_.string() + " (disk full?)");
+    if (failed) fail();
   }
 
  private:
@@ -90,14 +93,40 @@ class BufferedFile {
     if (used_ + n > kCapacity) flush();
   }
   void flush() {
-    if (used_ > 0 && std::fwrite(buffer_.get(), 1, used_, file_) != used_)
-      throw InputError("cannot write " + path_.string() + " (disk full?)");
+    if (used_ > 0 && std::fwrite(buffer_.get(), 1, used_, file_) != used_) fail();
     used_ = 0;
+  }
+  // errno says why: "No space left on device", "Permission denied", ...
+  [[noreturn]] void fail() const {
+    throw OutputError("cannot write " + path_.string() + " (" + std::strerror(errno) + ")");
   }
   fs::path path_;
   std::FILE* file_;
   std::unique_ptr<char[]> buffer_;
   std::size_t used_ = 0;
+};
+
+// An exclusive flock(2) on `path` (created if missing, never removed: removing it would let a
+// second run lock a new file while a third still waits on the old one), held while alive.
+class FolderLock {
+ public:
+  explicit FolderLock(const fs::path& path)
+      : fd_(::open(path.c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0644)) {
+    if (fd_ < 0)
+      throw OutputError("cannot create " + path.string() + " (" + std::strerror(errno) + ")");
+    while (::flock(fd_, LOCK_EX) != 0)
+      if (errno != EINTR) {
+        const std::string why = std::strerror(errno);
+        ::close(fd_);
+        throw OutputError("cannot lock " + path.string() + " (" + why + ")");
+      }
+  }
+  ~FolderLock() { ::close(fd_); }  // closing releases the lock
+  FolderLock(const FolderLock&) = delete;
+  FolderLock& operator=(const FolderLock&) = delete;
+
+ private:
+  int fd_;
 };
 
 // `what` builds the message only when it is needed (the check runs for every value written).
@@ -229,6 +258,22 @@ std::string columns_json(const std::vector<std::string>& files,
                              {"columns", tables[i].columns},
                              {"units", tables[i].units}};
   return j.dump(2) + "\n";
+}
+
+// Puts the complete file `from` under the name `to` in one step, so a kill at any moment leaves
+// `to` the old file or the new one, never neither. An existing `to` is swapped with `from`
+// (renameat2 RENAME_EXCHANGE) and the old file, now under `from`, removed: a plain rename onto
+// an existing file makes ext4 write the new file's blocks out at once (auto_da_alloc, ~4 ms for
+// the default run), which the exchange does not. Without the exchange (no `to` yet, a file
+// system or kernel without it) a plain rename.
+void replace_file(const fs::path& from, const fs::path& to) {
+#ifdef RENAME_EXCHANGE
+  if (::renameat2(AT_FDCWD, from.c_str(), AT_FDCWD, to.c_str(), RENAME_EXCHANGE) == 0) {
+    fs::remove(from);
+    return;
+  }
+#endif
+  fs::rename(from, to);
 }
 
 void write_text(const fs::path& path, const std::string& text) {
@@ -488,8 +533,26 @@ void write_run(const std::string& dir, const Case& c, const SimulationResult& r,
   if (s.noise) names.push_back("pressure" + ext);
   if (!s.envelopes.empty()) names.push_back("envelope" + ext);
   if (format == OutputFormat::npy) names.push_back("columns.json");
+  const auto temporary_of = [&](const std::string& name) {
+    return fs::path(dir) / ("." + name + ".partial");
+  };
   std::vector<fs::path> temporary;
-  for (const auto& name : names) temporary.push_back(fs::path(dir) / ("." + name + ".partial"));
+  for (const auto& name : names) temporary.push_back(temporary_of(name));
+  // Runs into one folder write and commit one at a time (two at once would write the same
+  // temporary files); the lock goes with the process, so a killed run holds nothing.
+  const FolderLock lock(fs::path(dir) / ".run.lock");
+  // Every result file a run can write: those not in this set are an earlier run's (another
+  // format, no acoustics or envelope now) and go; so do their temporaries a killed run left.
+  std::vector<std::string> stale;
+  for (const char* stem : {"response", "spectrum", "pressure", "envelope"})
+    for (const char* e : {".csv", ".npy"}) stale.push_back(std::string(stem) + e);
+  for (const char* other : {"summary.json", "case.toml", "columns.json"}) stale.push_back(other);
+  stale.erase(std::remove_if(stale.begin(), stale.end(),
+                             [&](const std::string& n) {
+                               return std::find(names.begin(), names.end(), n) != names.end();
+                             }),
+              stale.end());
+  for (const auto& name : stale) fs::remove(temporary_of(name), ec);
   try {
     std::vector<std::string> table_files;
     std::vector<TableLayout> tables;
@@ -505,19 +568,12 @@ void write_run(const std::string& dir, const Case& c, const SimulationResult& r,
     if (s.noise) table(next, write_pressure(temporary[next], format, *s.noise)), ++next;
     if (!s.envelopes.empty()) table(next, write_envelope(temporary[next], format, s)), ++next;
     if (format == OutputFormat::npy) write_text(temporary[next], columns_json(table_files, tables));
-    // The previous run's files are removed first: renaming onto an existing file makes ext4 write
-    // the new file's blocks out at once (its auto_da_alloc safeguard), ~3 ms here. Files of the
-    // other format, or a pressure or envelope table an earlier run left, would not belong to
-    // this one.
-    for (const char* stem : {"response", "spectrum", "pressure", "envelope"})
-      for (const char* e : {".csv", ".npy"}) fs::remove(fs::path(dir) / (std::string(stem) + e));
-    for (const char* other : {"summary.json", "case.toml", "columns.json"})
-      fs::remove(fs::path(dir) / other);
     for (std::size_t i = 0; i < names.size(); ++i)
-      fs::rename(temporary[i], fs::path(dir) / names[i]);
+      replace_file(temporary[i], fs::path(dir) / names[i]);
+    for (const auto& name : stale) fs::remove(fs::path(dir) / name);
   } catch (const fs::filesystem_error& e) {
     for (const auto& t : temporary) fs::remove(t, ec);
-    throw InputError("--out " + dir + ": " + e.what());
+    throw OutputError("--out " + dir + ": " + e.what());
   } catch (...) {
     for (const auto& t : temporary) fs::remove(t, ec);
     throw;

@@ -3,6 +3,7 @@
 // reading what it wrote: shared by the end-to-end tests of run, sweep and the envelope outputs.
 
 #include <sys/wait.h>
+#include <unistd.h>
 
 #include <cstdlib>
 #include <filesystem>
@@ -27,11 +28,13 @@ inline std::string read(const fs::path& p) {
 /// Runs `bearing-sim ARGS`; its exit status (-1 if it did not exit). With `out`, its stdout and
 /// stderr together.
 inline int sim(const std::string& args, std::string* out = nullptr) {
-  const fs::path o = fs::path(::testing::TempDir()) / "bearing_sim.stdout.txt";
+  // One file per test process (ctest -j runs tests side by side).
+  const fs::path o =
+      fs::path(::testing::TempDir()) / ("bearing_sim.stdout." + std::to_string(getpid()) + ".txt");
   const std::string cmd =
       std::string(BEARING_SIM) + " " + args + " >" + (out ? o.string() : "/dev/null") + " 2>&1";
   const int status = std::system(cmd.c_str());
-  if (out) *out = read(o);
+  if (out) *out = read(o), fs::remove(o);
   return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
 }
 

@@ -63,7 +63,7 @@ TEST(ExcitationWaviness, PhaseShiftsTheProfile) {
 class TempFile {
  public:
   explicit TempFile(const std::string& text, const std::string& name = "waviness.csv") {
-    // The process id too: ctest runs each test in its own process, several at once.
+    // The process id too: ctest -j runs each test in a process of its own, all counting from 0.
     path_ = ::testing::TempDir() + "excitation_" + std::to_string(getpid()) + "_" +
             std::to_string(counter_++) + "_" + name;
     std::ofstream(path_) << text;

@@ -168,8 +168,8 @@ TEST(NpyOutput, UnknownFormatIsAnError) {
 }
 
 // A file that cannot be written (here the last one, columns.json, whose temporary name is taken
-// by a folder) stops an npy run with an error: the earlier run's files stay as they were and no
-// temporary file is left.
+// by a folder) stops an npy run with a write error (exit 3): the earlier run's files stay as they
+// were and no temporary file is left.
 TEST(NpyOutput, AllOrNothing) {
   const fs::path d = fresh_dir("npy_all_or_nothing");
   ASSERT_EQ(sim("run --out " + d.string() + kShort + " --set output.format=npy"), 0);
@@ -179,7 +179,7 @@ TEST(NpyOutput, AllOrNothing) {
   EXPECT_EQ(sim("run --out " + d.string() + kShort +
                     " --set output.format=npy --set operation.speed=\"3000 rpm\"",
                 &out),
-            2);
+            3);
   EXPECT_NE(out.find("cannot write"), std::string::npos) << out;
   EXPECT_EQ(read(d / "response.npy"), before);
   for (const auto& e : fs::directory_iterator(d))

@@ -38,6 +38,11 @@ std::vector<Key> bearing_keys() {
   Key preset = described("bearing.preset", Kind::text, D::dimensionless,
                          "catalogue bearing (608, 6304, 6308, 6205, 209); other keys override it");
   preset.read = read_preset;
+  // Written first, so the keys after it override every value it sets: the run of case.toml is
+  // the same bearing under the same designation (summary.json's case.bearing), not "custom".
+  preset.write = [](std::ostream& o, const Case& c) {
+    if (!c.preset.empty()) o << "preset = " << quoted(c.preset) << "\n";
+  };
   const auto balls = [](auto& c) -> auto& {
     return c.bearing.balls;
   };

@@ -19,4 +19,11 @@ class SolverError : public std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
+/// The result files could not be written (disk full, no permission, an I/O error): the message
+/// names the file and the system's reason. Nothing is left under a final name.
+class OutputError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
 }  // namespace bearing

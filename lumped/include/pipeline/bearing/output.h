@@ -28,7 +28,9 @@ std::string summary_text(const Case& c, const SimulationResult& r, const RunSumm
 /// Writes the four files (five with acoustics: pressure.csv, `t` then p1…pM [Pa] over the
 /// analysis window) into `dir` (created if missing), all or nothing: each is written under a
 /// temporary name and the set is renamed into place only when every file is complete and every
-/// value finite. Throws InputError (cannot write) or SolverError (non-finite value).
+/// value finite; each file then replaces its predecessor by one rename. Runs into one folder commit
+/// one at a time (an flock on `dir`/.run.lock). Throws InputError (the folder cannot be created),
+/// OutputError (a file cannot be written: disk full, ...) or SolverError (non-finite value).
 void write_run(const std::string& dir, const Case& c, const SimulationResult& r,
                const RunSummary& s);
 
