@@ -13,7 +13,12 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include "bearing/analysis.h"
+#include "bearing/case_file.h"
+#include "bearing/errors.h"
 #include "bearing/npy.h"
+#include "bearing/output.h"
+#include "bearing/simulation.h"
 #include "cli_helpers.h"
 
 namespace {
@@ -185,6 +190,34 @@ TEST(NpyOutput, AllOrNothing) {
   for (const auto& e : fs::directory_iterator(d))
     EXPECT_EQ(e.path().filename().string().find(".partial"), std::string::npos)
         << e.path().filename();
+}
+
+// A non-finite value never reaches a result file: the writer refuses the whole set (SolverError,
+// exit 3 in bearing-sim, naming the column) in either format, and an earlier result stays.
+TEST(NpyOutput, ANonFiniteValueWritesNoFile) {
+  for (const char* format : {"csv", "npy"}) {
+    const bearing::Case c =
+        bearing::default_case({bearing::parse_override("solver.duration=0.05"),
+                               bearing::parse_override("solver.transient=0.01"),
+                               bearing::parse_override(std::string("output.format=") + format)});
+    bearing::SimulationResult r = bearing::simulate(c);
+    const bearing::RunSummary s = bearing::summarize(c, r);
+    const fs::path d = fresh_dir(std::string("non_finite_") + format);
+    bearing::write_run(d.string(), c, r, s);
+    const std::string response = std::string("response.") + format;
+    const std::string before = read(d / response);
+    r.response.values[r.response.index("y")][7] = std::nan("");
+    try {
+      bearing::write_run(d.string(), c, r, s);
+      ADD_FAILURE() << format << ": a NaN was written";
+    } catch (const bearing::SolverError& e) {
+      EXPECT_NE(std::string(e.what()).find("not finite"), std::string::npos) << e.what();
+    }
+    EXPECT_EQ(read(d / response), before) << format;
+    for (const auto& e : fs::directory_iterator(d))
+      EXPECT_EQ(e.path().filename().string().find(".partial"), std::string::npos)
+          << e.path().filename();
+  }
 }
 
 }  // namespace
