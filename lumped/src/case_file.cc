@@ -15,6 +15,7 @@
 #include "bearing/errors.h"
 #include "bearing/hertz.h"
 #include "case/case_schema.h"
+#include "case/toml_guard.h"
 
 namespace bearing {
 
@@ -22,13 +23,16 @@ namespace {
 
 // Parses an override value as TOML; anything that is not valid TOML is taken as a string.
 toml::table override_value(const std::string& value) {
-  try {
-    return toml::parse("v = " + value);
-  } catch (const toml::parse_error&) {
-    toml::table t;
-    t.insert("v", value);
-    return t;
+  const std::string text = "v = " + value;
+  if (!case_schema::unsafe_toml_text(text)) {  // else toml++ 3.3.0 would misbehave on it
+    try {
+      return toml::parse(text);
+    } catch (const toml::parse_error&) {
+    }
   }
+  toml::table t;
+  t.insert("v", value);
+  return t;
 }
 
 bool is_index(const std::string& part) {
@@ -97,6 +101,9 @@ Override parse_override(std::string_view text) {
 
 Case parse_case(std::string_view toml_text, const std::string& source,
                 const std::vector<Override>& overrides, const std::string& base_dir) {
+  if (const auto p = case_schema::unsafe_toml_text(toml_text))
+    throw InputError(source + ":" + std::to_string(p->line) + ":" + std::to_string(p->column) +
+                     ": TOML syntax error: " + p->what);
   toml::table doc;
   try {
     doc = toml::parse(toml_text, source);
