@@ -4,6 +4,7 @@
 #include "bearing/case_file.h"
 
 #include <algorithm>
+#include <cctype>
 #include <cerrno>
 #include <cstring>
 #include <filesystem>
@@ -36,7 +37,8 @@ toml::table override_value(const std::string& value) {
 }
 
 bool is_index(const std::string& part) {
-  return !part.empty() && std::all_of(part.begin(), part.end(), ::isdigit);
+  return !part.empty() &&
+         std::all_of(part.begin(), part.end(), [](unsigned char c) { return std::isdigit(c); });
 }
 
 void apply_override(toml::table& doc, const Override& o) {
@@ -47,8 +49,10 @@ void apply_override(toml::table& doc, const Override& o) {
   toml::node* node = &doc;
   for (std::size_t i = 0; i + 1 < parts.size(); ++i) {
     if (toml::array* a = node->as_array(); a && is_index(parts[i])) {
-      const std::size_t index = std::stoul(parts[i]);
-      if (index >= a->size())
+      // At most 18 digits: they fit a std::size_t (std::stoul would throw beyond it).
+      const bool fits = parts[i].size() <= 18;
+      const std::size_t index = fits ? std::stoull(parts[i]) : 0;
+      if (!fits || index >= a->size())
         throw InputError(where + "index " + parts[i] + " is past the " + std::to_string(a->size()) +
                          " entries of " + parts[i - 1]);
       node = a->get(index);

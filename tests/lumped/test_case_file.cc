@@ -448,3 +448,21 @@ TEST(CaseFile, NonAsciiOutsideStringsIsAClearSyntaxError) {
   EXPECT_THROW(default_case({parse_override("operation.speed=2000 \xC2\xB0")}), InputError);
 }
 
+// An array index in a --set key beyond any std::size_t is refused like any index past the end
+// (found by tests/fuzz/: std::stoul's out_of_range escaped).
+TEST(CaseFile, HugeOverrideIndexIsRefusedByName) {
+  const std::string text =
+      "[bearing]\npreset = \"6308\"\n[[waviness.inner]]\norder = 3\namplitude = \"1 um\"\n";
+  for (const char* index : {"1", "99999999999999999999"}) {
+    try {
+      parse_case(text, "t.toml",
+                 {parse_override("waviness.inner." + std::string(index) + ".amplitude=2 um")});
+      FAIL() << index;
+    } catch (const InputError& e) {
+      EXPECT_NE(std::string(e.what()).find(std::string("index ") + index +
+                                           " is past the 1 entries of inner"),
+                std::string::npos)
+          << e.what();
+    }
+  }
+}
