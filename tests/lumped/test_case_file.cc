@@ -400,7 +400,9 @@ TEST(CaseSchema, EveryKeyIsDocumented) {
 // A whole number the int it lands in cannot hold is refused by name, never wrapped around.
 TEST(CaseSchema, HugeIntegersAreRefused) {
   for (const char* set : {"bearing.balls=99999999999", "output.peaks=4294967306",
-                          "waviness.inner=[{order=4294967297, amplitude=\"1 um\"}]"}) {
+                          "waviness.inner=[{order=4294967297, amplitude=\"1 um\"}]",
+                          "bearing.balls=-9223372036854775808",
+                          "waviness.inner=[{order=-9223372036854775808, amplitude=\"1 um\"}]"}) {
     try {
       parse_case("[bearing]\npreset = \"6308\"\n", "t", {parse_override(set)});
       FAIL() << set;
