@@ -468,3 +468,17 @@ TEST(CaseFile, HugeOverrideIndexIsRefusedByName) {
     }
   }
 }
+
+// A message showing an array with a float below 1 (toml++ 3.3.0's array printer casts a negative
+// log10 to size_t, undefined; found by tests/fuzz/) shows it element by element.
+TEST(CaseFile, ArraysInMessagesAreShownElementByElement) {
+  try {
+    parse_case("[bearing]\npreset = \"6308\"\n[operation]\nload = [0.5, 0.25, [], 3]\n", "t.toml");
+    FAIL();
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("operation.load = [ 0.5, 0.25, [], 3 ]: expected two "
+                                         "values"),
+              std::string::npos)
+        << e.what();
+  }
+}
