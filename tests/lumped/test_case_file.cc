@@ -440,6 +440,20 @@ TEST(CaseFile, NonAsciiOutsideStringsIsAClearSyntaxError) {
               std::string::npos)
         << e.what();
   }
+  // Inside a bare value a quote opens no string for toml++: still outside a string.
+  EXPECT_THROW(parse_case(base + "contact_angle = 15x=[[\"\xC2\xB0\"]]\n", "t.toml"), InputError);
+  // Strings where keys and values start, in arrays and inline tables, are read (and then judged
+  // by the schema).
+  for (const char* ok :
+       {"[operation]\nload = [\"1 N\", '2 \xC2\xB5N']\n",
+        "[[waviness.inner]]\norder = 3\namplitude = \"1 \xC2\xB5m\"\n",
+        "x = {a = \"\xC2\xB5\", b = [1, \"\xC2\xB5\"]}\n", "bearing.\"\xC2\xB5\" = 1\n"}) {
+    try {
+      parse_case(base + ok, "t.toml");
+    } catch (const InputError& e) {
+      EXPECT_EQ(std::string(e.what()).find("non-ASCII"), std::string::npos) << e.what();
+    }
+  }
   const Case c =
       parse_case(base + "# 15 \xC2\xB0\ncontact_angle = \"15 \xC2\xB0\"  # \xC2\xB5\n", "t.toml");
   EXPECT_DOUBLE_EQ(c.bearing.contact_angle, 15 * pi / 180);

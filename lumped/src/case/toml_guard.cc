@@ -2,6 +2,8 @@
 
 #include "toml_guard.h"
 
+#include <vector>
+
 namespace bearing::case_schema {
 
 namespace {
@@ -70,42 +72,55 @@ std::optional<TomlTextProblem> basic_string(Cursor& c, bool multi_line) {
 
 std::optional<TomlTextProblem> unsafe_toml_text(std::string_view text) {
   Cursor c{text};
-  // The last character outside strings and comments, blanks aside. A quote opens a string only
-  // where a key or a value starts; elsewhere (`-"µ"`) toml++ reads it as part of a bare value,
-  // testing each character for whitespace, so it is an ordinary character here too.
-  char prev = '\n';
+  // Where a quote opens a string for toml++: at the start of a key or of a value. Inside a bare
+  // value (`300x=[["µ`) toml++ reads on to the next space, ',', ']', '}' or '#', testing each
+  // character for whitespace, so '=', '[', '{' and quotes there are ordinary characters.
+  bool in_key = true;      // reading a key (else a value)
+  bool bare = false;       // inside a bare word: a quote opens no string
+  std::vector<char> open;  // '[' array, '{' inline table, 'h' table header
   while (!c.done()) {
     const char ch = c.at();
-    const bool starts_string =
-        prev == '\n' || prev == '=' || prev == '[' || prev == ',' || prev == '{' || prev == '.';
     if (ch == '#') {
       while (!c.done() && c.at() != '\n') c.next();
-    } else if (starts_string && c.starts("\"\"\"")) {
-      c.skip(3);
-      if (auto p = basic_string(c, true)) return p;
-      prev = '"';
-    } else if (starts_string && ch == '"') {
-      c.next();
-      if (auto p = basic_string(c, false)) return p;
-      prev = '"';
-    } else if (starts_string && c.starts("'''")) {
-      c.skip(3);
-      while (!c.done() && !c.starts("'''")) c.next();
-      c.skip(3);
-      prev = '\'';
-    } else if (starts_string && ch == '\'') {
-      c.next();
-      while (!c.done() && c.at() != '\'' && c.at() != '\n') c.next();
-      if (c.at() == '\'') c.next();
-      prev = '\'';
-    } else if (non_ascii(ch)) {
+      continue;
+    }
+    if (!bare && (ch == '"' || ch == '\'')) {
+      const bool multi_line = c.starts(ch == '"' ? "\"\"\"" : "'''");
+      c.skip(multi_line ? 3 : 1);
+      if (ch == '"') {
+        if (auto p = basic_string(c, multi_line)) return p;
+      } else {
+        while (!c.done() && !c.starts(multi_line ? "'''" : "'") && (multi_line || c.at() != '\n'))
+          c.next();
+        if (!c.done() && c.at() != '\n') c.skip(multi_line ? 3 : 1);
+      }
+      continue;
+    }
+    if (non_ascii(ch))
       return c.problem(
           "a non-ASCII character outside a string or comment (a unit goes inside the quotes "
           "with its number, e.g. \"30 deg\")");
+    if (ch == '\n' || ch == ' ' || ch == '\t' || ch == '\r') {
+      bare = false;
+      if (ch == '\n' && open.empty()) in_key = true;
+    } else if (ch == ',') {
+      bare = false;
+      in_key = !open.empty() && open.back() == '{';
+    } else if (ch == ']' || ch == '}') {
+      if (!open.empty()) open.pop_back();
+      bare = true;                     // a value (or a header) ended: what follows opens no string
+    } else if (ch == '=' && in_key) {  // the key ends, its value starts
+      in_key = false;
+      bare = false;
+    } else if (ch == '.' && in_key) {  // between the parts of a dotted key
+      bare = false;
+    } else if (!bare && (ch == '[' || ch == '{')) {
+      open.push_back(in_key ? 'h' : ch);
+      in_key = in_key || ch == '{';
     } else {
-      if (ch != ' ' && ch != '\t' && ch != '\r') prev = ch;
-      c.next();
+      bare = true;
     }
+    c.next();
   }
   return std::nullopt;
 }
