@@ -246,10 +246,24 @@ ContactCalibration parse_calibration(std::string_view json_text, const std::stri
   // The parser callback tracks the key path, so that a number beyond the range of a double
   // (which the parser rejects itself) can be named.
   std::vector<std::string> where;
-  const json::parser_callback_t track = [&where](int, json::parse_event_t event, json& parsed) {
+  const auto key_path = [&where] {
+    std::string key;
+    for (const auto& w : where)
+      if (!w.empty()) key += (key.empty() ? "" : ".") + w;
+    return key;
+  };
+  // A file is 4 levels deep; deeper nesting is refused while it is read, before a message would
+  // print it (recursively: a few 100 kB of "[[[[" overflowed the stack).
+  constexpr std::size_t kMaxDepth = 64;
+  const json::parser_callback_t track = [&](int depth, json::parse_event_t event, json& parsed) {
     switch (event) {
       case json::parse_event_t::object_start:
       case json::parse_event_t::array_start:
+        if (static_cast<std::size_t>(depth) >= kMaxDepth)
+          throw InputError(shown + ": " +
+                           (key_path().empty() ? std::string("a value") : key_path()) +
+                           " is nested deeper than " + std::to_string(kMaxDepth) +
+                           " levels (a calibration file has 4)");
         where.emplace_back();
         break;
       case json::parse_event_t::object_end:
@@ -276,9 +290,7 @@ ContactCalibration parse_calibration(std::string_view json_text, const std::stri
   try {
     doc = json::parse(json_text.begin(), json_text.end(), track);
   } catch (const json::out_of_range& e) {  // 406: a number overflowing a double
-    std::string key;
-    for (const auto& w : where)
-      if (!w.empty()) key += (key.empty() ? "" : ".") + w;
+    const std::string key = key_path();
     throw InputError(shown + ": " + (key.empty() ? std::string("a number") : key) + ": " +
                      message(e) + "; every number must be finite");
   } catch (const json::exception& e) {

@@ -4,6 +4,7 @@
 #include "bearing/case_file.h"
 
 #include <algorithm>
+#include <cctype>
 #include <cerrno>
 #include <cstring>
 #include <filesystem>
@@ -15,6 +16,7 @@
 #include "bearing/errors.h"
 #include "bearing/hertz.h"
 #include "case/case_schema.h"
+#include "case/toml_guard.h"
 
 namespace bearing {
 
@@ -22,17 +24,21 @@ namespace {
 
 // Parses an override value as TOML; anything that is not valid TOML is taken as a string.
 toml::table override_value(const std::string& value) {
-  try {
-    return toml::parse("v = " + value);
-  } catch (const toml::parse_error&) {
-    toml::table t;
-    t.insert("v", value);
-    return t;
+  const std::string text = "v = " + value;
+  if (!case_schema::unsafe_toml_text(text)) {  // else toml++ 3.3.0 would misbehave on it
+    try {
+      return toml::parse(text);
+    } catch (const toml::parse_error&) {
+    }
   }
+  toml::table t;
+  t.insert("v", value);
+  return t;
 }
 
 bool is_index(const std::string& part) {
-  return !part.empty() && std::all_of(part.begin(), part.end(), ::isdigit);
+  return !part.empty() &&
+         std::all_of(part.begin(), part.end(), [](unsigned char c) { return std::isdigit(c); });
 }
 
 void apply_override(toml::table& doc, const Override& o) {
@@ -43,8 +49,10 @@ void apply_override(toml::table& doc, const Override& o) {
   toml::node* node = &doc;
   for (std::size_t i = 0; i + 1 < parts.size(); ++i) {
     if (toml::array* a = node->as_array(); a && is_index(parts[i])) {
-      const std::size_t index = std::stoul(parts[i]);
-      if (index >= a->size())
+      // At most 18 digits: they fit a std::size_t (std::stoul would throw beyond it).
+      const bool fits = parts[i].size() <= 18;
+      const std::size_t index = fits ? std::stoull(parts[i]) : 0;
+      if (!fits || index >= a->size())
         throw InputError(where + "index " + parts[i] + " is past the " + std::to_string(a->size()) +
                          " entries of " + parts[i - 1]);
       node = a->get(index);
@@ -97,6 +105,9 @@ Override parse_override(std::string_view text) {
 
 Case parse_case(std::string_view toml_text, const std::string& source,
                 const std::vector<Override>& overrides, const std::string& base_dir) {
+  if (const auto p = case_schema::unsafe_toml_text(toml_text))
+    throw InputError(source + ":" + std::to_string(p->line) + ":" + std::to_string(p->column) +
+                     ": TOML syntax error: " + p->what);
   toml::table doc;
   try {
     doc = toml::parse(toml_text, source);

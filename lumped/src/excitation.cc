@@ -167,17 +167,9 @@ Layout parse_header(const std::vector<std::string>& cells, const Where& where) {
 
 }  // namespace
 
-std::vector<WavinessHarmonic> read_waviness_table(const std::string& path, const std::string& key) {
-  std::error_code ec;
-  if (std::filesystem::is_directory(path, ec))
-    throw InputError(key + " = \"" + path + "\": is a directory, not a waviness table file");
-  std::ifstream in(path);
-  if (!in) {
-    const int err = errno;
-    throw InputError(key + " = \"" + path + "\": cannot open the waviness table" +
-                     (err != 0 ? std::string(" (") + std::strerror(err) + ")" : std::string()));
-  }
-
+std::vector<WavinessHarmonic> parse_waviness_table(std::string_view text, const std::string& path,
+                                                   const std::string& key) {
+  std::istringstream in{std::string(text)};
   std::vector<WavinessHarmonic> out;
   std::map<int, int> first_line_of_order;
   bool have_layout = false;
@@ -246,12 +238,26 @@ std::vector<WavinessHarmonic> read_waviness_table(const std::string& path, const
                        "); give each order once");
     out.push_back(h);
   }
-  if (in.bad())
-    throw InputError(key + " = \"" + path + "\": read error after line " + std::to_string(line_no));
   if (out.empty())
     throw InputError(key + " = \"" + path +
                      "\": the waviness table has no rows (expected order,amplitude[,phase])");
   return out;
+}
+
+std::vector<WavinessHarmonic> read_waviness_table(const std::string& path, const std::string& key) {
+  std::error_code ec;
+  if (std::filesystem::is_directory(path, ec))
+    throw InputError(key + " = \"" + path + "\": is a directory, not a waviness table file");
+  std::ifstream in(path, std::ios::binary);
+  if (!in) {
+    const int err = errno;
+    throw InputError(key + " = \"" + path + "\": cannot open the waviness table" +
+                     (err != 0 ? std::string(" (") + std::strerror(err) + ")" : std::string()));
+  }
+  std::ostringstream text;
+  text << in.rdbuf();
+  if (in.bad()) throw InputError(key + " = \"" + path + "\": read error");
+  return parse_waviness_table(text.str(), path, key);
 }
 
 // --- Ball-size errors --------------------------------------------------------------------------

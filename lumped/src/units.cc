@@ -307,16 +307,18 @@ double parse_quantity(std::string_view text, Dimension dim, const std::string& k
   // "15.081 mm" is exactly the double nearest 0.015081.
   const double factor = unit_factor(unit, dim, key + " = " + quoted);
   const int k = static_cast<int>(std::lround(std::log10(factor)));
-  double si;
+  double si = number * factor;
   if (std::fabs(factor / std::pow(10.0, k) - 1.0) < 1e-15) {
     std::string digits(begin, static_cast<const char*>(end));
     const auto e = digits.find_first_of("eE");
     const long exponent =
         e == std::string::npos ? 0 : std::strtol(digits.c_str() + e + 1, nullptr, 10);
     if (e != std::string::npos) digits.resize(e);
-    si = std::strtod((digits + "e" + std::to_string(exponent + k)).c_str(), nullptr);
-  } else {
-    si = number * factor;
+    // A finite number with an exponent this far beyond a double's has a zero mantissa
+    // ("0e99999999999999999999", strtol's LONG_MAX) or as many digits: the product above is
+    // exact or as good, and exponent + k could overflow.
+    if (exponent >= -100000 && exponent <= 100000)
+      si = std::strtod((digits + "e" + std::to_string(exponent + k)).c_str(), nullptr);
   }
   if (!std::isfinite(si))
     throw InputError(key + " = " + quoted + ": the value overflows when converted to SI");

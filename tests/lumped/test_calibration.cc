@@ -258,6 +258,10 @@ std::vector<BadFile> bad_files() {
       {"negative fit residual",
        with([](json& d) { d["inner"]["fit_residual"] = -1.0; }),
        {"inner.fit_residual", "-1", ">= 0"}},
+      // Found by tests/fuzz/: printing this value in the message overflowed the stack.
+      {"nested too deep",
+       "{\"format\": " + std::string(100000, '[') + std::string(100000, ']') + "}",
+       {"format is nested deeper than 64 levels"}},
   };
 }
 

@@ -90,6 +90,23 @@ std::string error_of(const std::string& text) {
   return {};
 }
 
+// The text parser the file reader calls (and tests/fuzz/ fuzzes) reads what the file gives.
+TEST(ExcitationTable, TextParserReadsWhatTheFileReaderReads) {
+  const std::string text = "order,amplitude_nm,phase_rad\n3,12.5,0.25\n7,0,-1\n";
+  const TempFile f(text);
+  const auto from_file = read_waviness_table(f.path(), "k");
+  const auto from_text = parse_waviness_table(text, f.path(), "k");
+  ASSERT_EQ(from_text.size(), 2u);
+  ASSERT_EQ(from_file.size(), 2u);
+  for (std::size_t i = 0; i < 2; ++i) {
+    EXPECT_EQ(from_text[i].order, from_file[i].order);
+    EXPECT_EQ(from_text[i].amplitude, from_file[i].amplitude);
+    EXPECT_EQ(from_text[i].phase, from_file[i].phase);
+  }
+  EXPECT_DOUBLE_EQ(from_text[0].amplitude, 12.5e-9);
+  EXPECT_THROW(parse_waviness_table("", "mem.csv", "k"), InputError);
+}
+
 TEST(ExcitationTable, DefaultUnitsAreMicrometresAndDegrees) {
   const TempFile f("# a comment\n\n4, 0.5, 90\n5,0.25,-180  # trailing comment\n");
   const auto h = read_waviness_table(f.path(), "k");

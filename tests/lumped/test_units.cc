@@ -116,3 +116,12 @@ TEST(Units, DecimalSubMultiplesAreExact) {
   EXPECT_EQ(bearing::to_si(0.3, "um", Dimension::length, "k"), 3e-7);
   EXPECT_EQ(parse_quantity("0.05 kN", Dimension::force, "k"), 50.0);
 }
+
+// An exponent beyond a long on a zero ("0e99999999999999999999 kN") is zero, not a signed
+// overflow in the exponent shift (found by tests/fuzz/ under UBSan).
+TEST(Units, HugeExponentsOfZeroAreZero) {
+  EXPECT_EQ(parse_quantity("0e99999999999999999999 kN", Dimension::force, "k"), 0.0);
+  EXPECT_EQ(parse_quantity("0e-99999999999999999999 mN", Dimension::force, "k"), 0.0);
+  EXPECT_EQ(parse_quantity("0.0e400 um", Dimension::length, "k"), 0.0);
+  EXPECT_EQ(parse_quantity("1.5e2 kN", Dimension::force, "k"), 150e3);
+}

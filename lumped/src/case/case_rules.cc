@@ -42,7 +42,7 @@ void read_waviness_entry(TableReader& r, const std::string& shown, const std::st
     throw InputError(shown +
                      ": each entry needs order and amplitude (phase optional), or "
                      "table = \"file.csv\"");
-  if (std::llabs(*order) > 1000000000LL)  // the range itself is check_waviness's
+  if (*order < -1000000000LL || *order > 1000000000LL)  // the range is check_waviness's
     throw InputError(r.full("order") + " = " + std::to_string(*order) + ": too large");
   WavinessHarmonic h;
   h.order = static_cast<int>(*order);

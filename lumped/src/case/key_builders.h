@@ -135,8 +135,9 @@ Key integer(std::string name, std::string help, At at, Limit limit = unchecked()
   const std::string leaf = leaf_of(k.name);
   k.read = [at, leaf, limit, fallback, key = k.name](TableReader& r, Case& c, const ReadContext&) {
     if (const auto v = r.integer(leaf)) {
-      const bool fits =
-          !checked(limit) ? std::abs(*v) <= 1000000000LL : limit.contains(static_cast<double>(*v));
+      const bool fits = !checked(limit)
+                            ? *v >= -1000000000LL && *v <= 1000000000LL  // no std::abs(LLONG_MIN)
+                            : limit.contains(static_cast<double>(*v));
       if (!fits)
         throw InputError(key + " = " + std::to_string(*v) + ": " +
                          (checked(limit) ? limit.allowed : "too large"));

@@ -5,6 +5,7 @@
 
 #include <cstdint>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "bearing/bearing.h"
@@ -37,6 +38,11 @@ struct Waviness {
 /// `phase_deg`); '#' starts a comment. Throws InputError naming `key`, the file, the line and
 /// the value for anything malformed (order < 1, negative or non-finite amplitude, wrong columns).
 std::vector<WavinessHarmonic> read_waviness_table(const std::string& path, const std::string& key);
+
+/// The table's text parsed as read_waviness_table does; `path` only names it in messages (the
+/// file is read by read_waviness_table, fuzzed and tested without one).
+std::vector<WavinessHarmonic> parse_waviness_table(std::string_view text, const std::string& path,
+                                                   const std::string& key);
 
 /// The rules for waviness harmonics on a race of `bearing` (the case key `key`,
 /// "waviness.inner"): order in [1, 100000], amplitude in [0, D/100) (waviness is a few µm at
