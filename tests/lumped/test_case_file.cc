@@ -440,6 +440,19 @@ TEST(CaseFile, NonAsciiOutsideStringsIsAClearSyntaxError) {
               std::string::npos)
         << e.what();
   }
+  // A control character, anywhere (found by sanitize.fuzz: a NUL after '[' broke toml++'s
+  // assumption about a key's first character).
+  for (const std::string bad : {std::string("[\0bearing]\n", 11), std::string("a = \"\x01\"\n"),
+                                std::string("# \x7F\n"), std::string("a = 1\x0B\n")}) {
+    try {
+      parse_case(bad, "t.toml");
+      FAIL() << "control character accepted";
+    } catch (const InputError& e) {
+      EXPECT_NE(std::string(e.what()).find("t.toml:1:"), std::string::npos) << e.what();
+      EXPECT_NE(std::string(e.what()).find("a control character (U+00"), std::string::npos)
+          << e.what();
+    }
+  }
   // Inside a bare value a quote opens no string for toml++: still outside a string.
   EXPECT_THROW(parse_case(base + "contact_angle = 15x=[[\"\xC2\xB0\"]]\n", "t.toml"), InputError);
   // Strings where keys and values start, in arrays and inline tables, are read (and then judged
