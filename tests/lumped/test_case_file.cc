@@ -453,6 +453,15 @@ TEST(CaseFile, NonAsciiOutsideStringsIsAClearSyntaxError) {
           << e.what();
     }
   }
+  // A table header that does not start with a name (sanitize.fuzz: toml++ assumed it did).
+  for (const char* bad : {"[(bearing]\n", "[[ =x]]\n", "[bearing]\na = 1\n[ .x]\n"}) {
+    try {
+      parse_case(bad, "t.toml");
+      FAIL() << bad;
+    } catch (const InputError& e) {
+      EXPECT_NE(std::string(e.what()).find("TOML syntax error"), std::string::npos) << e.what();
+    }
+  }
   // Inside a bare value a quote opens no string for toml++: still outside a string.
   EXPECT_THROW(parse_case(base + "contact_angle = 15x=[[\"\xC2\xB0\"]]\n", "t.toml"), InputError);
   // Strings where keys and values start, in arrays and inline tables, are read (and then judged

@@ -75,6 +75,22 @@ std::optional<TomlTextProblem> basic_string(Cursor& c, bool multi_line) {
   return std::nullopt;
 }
 
+// At the '[' of a table header: toml++ 3.3.0 assumes (TOML_ASSERT_ASSUME) that the header's first
+// character, after "[" or "[[" and blanks, starts a key (`[(bearing]` is undefined behaviour;
+// found by sanitize.fuzz). A premature ']' it reports itself.
+std::optional<TomlTextProblem> table_header_start(const Cursor& at) {
+  Cursor c = at;
+  c.next();
+  if (c.at() == '[') c.next();
+  while (c.at() == ' ' || c.at() == '\t') c.next();
+  const char k = c.at();
+  const bool key = (k >= 'A' && k <= 'Z') || (k >= 'a' && k <= 'z') || (k >= '0' && k <= '9') ||
+                   k == '_' || k == '-' || k == '"' || k == '\'' || k == ']';
+  if (c.done() || key) return std::nullopt;
+  return c.problem(
+      "a table header starts with its name: letters, digits, '_' and '-', or a quoted name");
+}
+
 }  // namespace
 
 std::optional<TomlTextProblem> unsafe_toml_text(std::string_view text) {
@@ -131,6 +147,8 @@ std::optional<TomlTextProblem> unsafe_toml_text(std::string_view text) {
     } else if (ch == '.' && in_key) {  // between the parts of a dotted key
       bare = false;
     } else if (!bare && (ch == '[' || ch == '{')) {
+      if (ch == '[' && in_key && open.empty())
+        if (auto p = table_header_start(c)) return p;
       open.push_back(in_key ? 'h' : ch);
       in_key = in_key || ch == '{';
     } else {
