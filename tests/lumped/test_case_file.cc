@@ -454,7 +454,9 @@ TEST(CaseFile, NonAsciiOutsideStringsIsAClearSyntaxError) {
     }
   }
   // A table header that does not start with a name (sanitize.fuzz: toml++ assumed it did).
-  for (const char* bad : {"[(bearing]\n", "[[ =x]]\n", "[bearing]\na = 1\n[ .x]\n"}) {
+  // A bracket closing what it did not open ('[[}': toml++ took the '}' for a value).
+  for (const char* bad : {"[(bearing]\n", "[[ =x]]\n", "[bearing]\na = 1\n[ .x]\n",
+                          "[bearing]\npreset = [[[}}1]\n", "a = {b = [1}]\n", "a = {b = 1]\n"}) {
     try {
       parse_case(bad, "t.toml");
       FAIL() << bad;

@@ -139,6 +139,13 @@ std::optional<TomlTextProblem> unsafe_toml_text(std::string_view text) {
       bare = false;
       in_key = !open.empty() && open.back() == '{';
     } else if (ch == ']' || ch == '}') {
+      // toml++ 3.3.0 takes what starts an array element for a value, assuming (TOML_ASSERT_ASSUME)
+      // it is none of a value's terminators: a '}' there (`[[}`) is undefined behaviour (found by
+      // sanitize.fuzz). A bracket that closes what it did not open is refused, both ways.
+      if (!open.empty() && (ch == '}') != (open.back() == '{'))
+        return c.problem(std::string("a '") + ch + "' where " +
+                         (open.back() == '{' ? "an inline table" : "an array or a table header") +
+                         " is open");
       if (!open.empty()) open.pop_back();
       bare = true;                     // a value (or a header) ended: what follows opens no string
     } else if (ch == '=' && in_key) {  // the key ends, its value starts
