@@ -4,7 +4,7 @@
 #include <cmath>
 #include <sstream>
 
-#include "../edit_distance.h"
+#include "../core/edit_distance.h"
 #include "bearing/errors.h"
 #include "case_schema.h"
 

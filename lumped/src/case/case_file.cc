@@ -15,8 +15,8 @@
 
 #include "bearing/errors.h"
 #include "bearing/hertz.h"
-#include "case/case_schema.h"
-#include "case/toml_guard.h"
+#include "case_schema.h"
+#include "toml_guard.h"
 
 namespace bearing {
 
