@@ -29,6 +29,7 @@
 #include "bearing/numerics/roots.h"
 #include "bearing/static_load.h"
 #include "bearing/units.h"
+#include "frame_force.h"
 #include "groove_geometry.h"
 #include "model_input_checks.h"
 
@@ -73,7 +74,7 @@ struct BallContacts {
   double inv_length = 0;    // 1/L_j [1/m] (planar: 0)
 };
 
-class BallDofs final : public BallDofModel {
+class BallDofs final : public detail::FrameForce<BallDofs, detail::RaceFrame, BallDofModel> {
  public:
   explicit BallDofs(const ModelInputs& in)
       : set_(in, checked_cage_speed(in), kinematic_angle(in)),
@@ -136,21 +137,9 @@ class BallDofs final : public BallDofModel {
   }
   bool cyclic(int i) const override { return i >= ring_ + balls_; }
 
-  std::unique_ptr<Workspace> make_workspace() const override {
-    return std::make_unique<detail::FrameWorkspace<detail::RaceFrame>>();
-  }
-
-  void force(double t, const double* q, const double* v, double* f) const override {
-    detail::FrameWorkspace<detail::RaceFrame> fresh;  // on the stack, evaluated at t
-    force_with(&fresh, t, q, v, f);
-  }
-
-  void force_with(Workspace* workspace, double t, const double* q, const double* v,
-                  double* f) const override {
-    if (!workspace) return force(t, q, v, f);
-    // One instantiation per geometry and friction on/off: the hot loop has no per-ball branches
-    // on them. The planar model with both exponents 3/2 (the usual case) runs the SIMD kernel.
-    const detail::RaceFrame& fr = set_.frame<detail::RaceFrame>(t, *workspace);
+  // One instantiation per geometry and friction on/off: the hot loop has no per-ball branches
+  // on them. The planar model with both exponents 3/2 (the usual case) runs the SIMD kernel.
+  void force_in(const detail::RaceFrame& fr, const double* q, const double* v, double* f) const {
     if (axial_)
       friction_ ? force_impl<true, true>(fr, q, v, f) : force_impl<true, false>(fr, q, v, f);
     else if (hertz_)
@@ -476,6 +465,9 @@ class BallDofs final : public BallDofModel {
     const numerics::Bracket b = numerics::bisect(lo, hi, below, o);
     return 0.5 * (b.lo + b.hi);
   }
+
+  friend class detail::FrameForce<BallDofs, detail::RaceFrame, BallDofModel>;
+  const detail::BallSet& ball_set() const { return set_; }
 
   detail::BallSet set_;
   bool axial_;  // an axial load: the ring's z and the contact lines of the 3-DOF model

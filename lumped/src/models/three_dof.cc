@@ -31,6 +31,7 @@
 #include "bearing/numerics/newton.h"
 #include "bearing/numerics/roots.h"
 #include "bearing/static_load.h"
+#include "frame_force.h"
 #include "groove_geometry.h"
 #include "model_input_checks.h"
 
@@ -100,7 +101,8 @@ double preload_cage_speed(const Bearing& b, double inner_speed, double contact_a
   return cage_speed(loaded, inner_speed);
 }
 
-class ThreeDofModel final : public BearingModel {
+class ThreeDofModel final
+    : public detail::FrameForce<ThreeDofModel, detail::BallFrame, BearingModel> {
  public:
   explicit ThreeDofModel(const ModelInputs& in)
       : geometry_(checked_geometry(in)),
@@ -124,19 +126,7 @@ class ThreeDofModel final : public BearingModel {
     m[2] = axial_mass_;
   }
 
-  std::unique_ptr<Workspace> make_workspace() const override {
-    return std::make_unique<detail::FrameWorkspace<detail::BallFrame>>();
-  }
-
-  void force(double t, const double* q, const double* v, double* f) const override {
-    detail::FrameWorkspace<detail::BallFrame> fresh;  // on the stack, evaluated at t
-    force_with(&fresh, t, q, v, f);
-  }
-
-  void force_with(Workspace* workspace, double t, const double* q, const double* v,
-                  double* f) const override {
-    if (!workspace) return force(t, q, v, f);
-    const detail::BallFrame& fr = set_.frame<detail::BallFrame>(t, *workspace);
+  void force_in(const detail::BallFrame& fr, const double* q, const double* v, double* f) const {
     const double x = q[0], y = q[1], z = q[2], n = set_.exponent();
     const double w = geometry_.w0 + z;
     double fx = load_x_ + unbalance_force_ * fr.cos_shaft - damping_ * v[0];
@@ -279,6 +269,9 @@ class ThreeDofModel final : public BearingModel {
 
   GrooveGeometry geometry_;
   AxialPreload preload_;
+  friend class detail::FrameForce<ThreeDofModel, detail::BallFrame, BearingModel>;
+  const detail::BallSet& ball_set() const { return set_; }
+
   detail::BallSet set_;
   double mass_, axial_mass_;
   double damping_, axial_damping_;

@@ -12,6 +12,7 @@
 #include "bearing/constants.h"
 #include "bearing/kinematics.h"
 #include "bearing/static_load.h"
+#include "frame_force.h"
 #include "model_input_checks.h"
 
 namespace bearing {
@@ -24,7 +25,7 @@ double checked_cage_speed(const ModelInputs& in) {
   return cage_speed(in.bearing, in.inner_speed);
 }
 
-class TwoDofModel final : public BearingModel {
+class TwoDofModel final : public detail::FrameForce<TwoDofModel, detail::BallFrame, BearingModel> {
  public:
   explicit TwoDofModel(const ModelInputs& in)
       : set_(in, checked_cage_speed(in), in.bearing.contact_angle),
@@ -39,20 +40,8 @@ class TwoDofModel final : public BearingModel {
   int dofs() const override { return 2; }
   void mass(double* m) const override { m[0] = m[1] = mass_; }
 
-  std::unique_ptr<Workspace> make_workspace() const override {
-    return std::make_unique<detail::FrameWorkspace<detail::BallFrame>>();
-  }
-
-  void force(double t, const double* q, const double* v, double* f) const override {
-    detail::FrameWorkspace<detail::BallFrame> fresh;  // on the stack, evaluated at t
-    force_with(&fresh, t, q, v, f);
-  }
-
   // Contact loop: δ_j from the rotated ball directions, Q_j = K_j δ_j^n, summed on the ring.
-  void force_with(Workspace* workspace, double t, const double* q, const double* v,
-                  double* f) const override {
-    if (!workspace) return force(t, q, v, f);
-    const detail::BallFrame& fr = set_.frame<detail::BallFrame>(t, *workspace);
+  void force_in(const detail::BallFrame& fr, const double* q, const double* v, double* f) const {
     const double x = q[0], y = q[1], n = set_.exponent();
     double fx = load_x_ + unbalance_force_ * fr.cos_shaft - damping_ * v[0];
     double fy = load_y_ + unbalance_force_ * fr.sin_shaft - damping_ * v[1];
@@ -148,6 +137,9 @@ class TwoDofModel final : public BearingModel {
   double approach(const double* q, const detail::BallFrame& fr, int j) const {
     return q[0] * fr.cos_theta[j] + q[1] * fr.sin_theta[j] - gap_ + fr.excitation[j];
   }
+
+  friend class detail::FrameForce<TwoDofModel, detail::BallFrame, BearingModel>;
+  const detail::BallSet& ball_set() const { return set_; }
 
   detail::BallSet set_;
   double mass_;

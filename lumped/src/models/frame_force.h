@@ -1,0 +1,46 @@
+#pragma once
+// Private to the lumped models (not installed): the force-workspace boilerplate the three dynamic
+// models (2-DOF, 3-DOF, ball DOFs) share.
+//
+// Why a CRTP base and not a virtual hook: force_with() is the hot path (one call per force
+// evaluation); calling the model's force_in() statically lets the compiler inline it, so the
+// evaluation costs one virtual call, as when each model spelled these lines out itself.
+
+#include <memory>
+
+#include "ball_set.h"
+#include "bearing/solvers/mechanical_system.h"
+#include "frame_workspace.h"
+
+namespace bearing::detail {
+
+/// The workspace part of a model whose force at t depends on t only through the ball set's frame
+/// (Frame: BallFrame or RaceFrame). Model derives from FrameForce<Model, Frame, Base> (Base:
+/// BearingModel or an interface derived from it) and befriends it; it supplies
+///   const BallSet& ball_set() const;
+///   void force_in(const Frame& frame, const double* q, const double* v, double* f) const;
+/// the generalised force f at the frame's time [N per DOF, SI of each DOF].
+template <class Model, class Frame, class Base>
+class FrameForce : public Base {
+ public:
+  /// A FrameWorkspace<Frame>: the frame at the last t asked for (frame_workspace.h).
+  std::unique_ptr<MechanicalSystem::Workspace> make_workspace() const final {
+    return std::make_unique<FrameWorkspace<Frame>>();
+  }
+
+  /// f at (t, q, v), the frame evaluated afresh at t.
+  void force(double t, const double* q, const double* v, double* f) const final {
+    FrameWorkspace<Frame> fresh;  // on the stack, evaluated at t
+    force_with(&fresh, t, q, v, f);
+  }
+
+  /// f at (t, q, v), the frame kept in `workspace` (null: evaluated afresh).
+  void force_with(MechanicalSystem::Workspace* workspace, double t, const double* q,
+                  const double* v, double* f) const final {
+    if (!workspace) return force(t, q, v, f);
+    const Model& model = static_cast<const Model&>(*this);
+    model.force_in(model.ball_set().template frame<Frame>(t, *workspace), q, v, f);
+  }
+};
+
+}  // namespace bearing::detail
