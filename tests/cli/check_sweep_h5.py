@@ -173,6 +173,14 @@ else:
     check("resume --save: sweep.h5 as uninterrupted",
           same_file(work / "uncut" / "sweep.h5", work / "killed" / "sweep.h5"))
     check("resume --save: no spool left", not (work / "killed" / ".sweep.h5.cases").exists())
+    # Resumed once more, the finished sweep is left as it is, sweep.h5 included.
+    before = {p.name: p.read_bytes() for p in (work / "killed").iterdir()}
+    again = subprocess.run([sim, "sweep", "--resume", str(work / "killed"), "--quiet"],
+                           capture_output=True, text=True)
+    check("resume of a finished --save sweep: exit 0, said complete",
+          again.returncode == 0 and "is complete: 150 cases" in again.stdout)
+    check("resume of a finished --save sweep: sweep.csv and sweep.h5 untouched",
+          {p.name: p.read_bytes() for p in (work / "killed").iterdir()} == before)
 
 print(f"{failures} failed")
 sys.exit(1 if failures else 0)

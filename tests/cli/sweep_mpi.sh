@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # `mpirun -np N bearing-sim sweep` writes the sweep.csv of `bearing-sim sweep --jobs 1`, byte for
 # byte (issue 20): 2 and 3 ranks, 1 and 2 threads per rank, failed cases (negative clearance) and
-# microphone levels in the rows; only rank 0 prints; an input error ends every rank (no hang).
+# microphone levels in the rows; only rank 0 prints; an input error ends every rank (no hang); a
+# killed sweep resumes, and a finished one resumed is left as it is.
 #
 #   tests/cli/sweep_mpi.sh BEARING_SIM WORK_DIR mpi|nompi
 #
@@ -92,6 +93,21 @@ else
   else
     echo "FAILED: killed and resumed under mpirun: sweep.csv differs"
     cat "$work/resume.log"
+    status=1
+  fi
+  # Resumed again when finished (its record gone): every rank stops at once, exit 0, one line.
+  stamp=$(stat -c "%y %s" "$work/killed/sweep.csv")
+  set +e
+  mpi -np 2 "$sim" sweep --resume "$work/killed" --jobs 1 >"$work/again.log" 2>&1
+  rc=$?
+  set -e
+  if [[ $rc -eq 0 && $(grep -c "is complete: 150 cases" "$work/again.log") -eq 1 ]] &&
+     cmp -s "$work/whole/sweep.csv" "$work/killed/sweep.csv" &&
+     [[ $(stat -c "%y %s" "$work/killed/sweep.csv") == "$stamp" ]]; then
+    echo "ok: a finished sweep resumed under mpirun: exit 0, said complete once, left as it was"
+  else
+    echo "FAILED: a finished sweep resumed under mpirun: exit $rc (124: hung)"
+    cat "$work/again.log"
     status=1
   fi
 fi

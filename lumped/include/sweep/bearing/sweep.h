@@ -3,6 +3,7 @@
 
 #include <functional>
 #include <memory>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <utility>
@@ -168,7 +169,8 @@ SweepPlan read_sweep_record(const std::string& dir);
 /// DIR/sweep.design.json, streams the rows to DIR/.sweep.csv.partial (flushed row by row) and
 /// renames it to DIR/sweep.csv when every row is in. A whole sweep then removes the record (only
 /// sweep.csv is left); a part keeps it for `merge`. With `resume`, the complete rows already in
-/// the temporary file are kept (a truncated last line is dropped) and only the others run.
+/// the temporary file are kept (a truncated last line is dropped) and only the others run (all of
+/// them without a temporary file; resume_sweep() first checks whether the sweep has finished).
 /// On an error the temporary file and the record stay, for --resume. `runner` defaults to
 /// run_sweep (an MPI runner with its signature may take its place). Throws InputError.
 /// With `hook.add` (a further output, e.g. `--save`'s sweep.h5) every row also goes to the hook
@@ -178,7 +180,15 @@ SweepCounts write_sweep(const std::string& dir, const SweepPlan& plan, int threa
                         const SweepProgress& progress = {}, const SweepRunner& runner = {},
                         bool resume = false, const SweepRowHook& hook = {});
 
-/// `bearing-sim sweep --resume DIR`: the plan read back from DIR, then write_sweep(resume).
+/// The counts of the sweep in DIR if its sweep.csv is complete: sweep.csv is there, no
+/// `.sweep.csv.partial` (a sweep into DIR that stopped, or is running), and if the design record is
+/// there (a part keeps it; a whole sweep removes it at the end) sweep.csv has as many rows as its
+/// part has cases (otherwise the record is of a sweep killed before its first row). Nullopt if not.
+/// Reads every row (the failed ones are counted). Throws InputError for an unreadable record.
+std::optional<SweepCounts> finished_sweep(const std::string& dir);
+
+/// `bearing-sim sweep --resume DIR`: the plan read back from DIR, then write_sweep(resume). A
+/// finished sweep (finished_sweep()) is left as it is: its counts are returned, nothing runs.
 SweepCounts resume_sweep(const std::string& dir, int threads, const SweepProgress& progress = {},
                          const SweepRunner& runner = {}, const SweepRowHook& hook = {});
 
