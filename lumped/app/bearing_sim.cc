@@ -445,8 +445,10 @@ int main(int argc, char** argv) {
       "sweep",
       "Run a case for every point of a design (--vary grid, --sample random or --cases list), "
       "in parallel, and write DIR/sweep.csv: the design's values (SI), status, error, then each "
-      "ring channel's rms, ptp, kurtosis, crest and largest peak. A failed case is reported in "
-      "its row; the others go on. A killed sweep continues with --resume DIR.");
+      "ring channel's rms, ptp, kurtosis, crest and largest peak (with output.envelope_band also "
+      "each envelope's band, spectral kurtosis and largest line, and the diagnosis). A failed "
+      "case is reported in its row; the others go on. A killed sweep continues with --resume "
+      "DIR.");
   add_case_options(sweep, so.case_path, so.sets);
   add_sweep_options(sweep, so);
   sweep->add_flag("--quiet", quiet, "No progress on stderr");

@@ -11,7 +11,9 @@
 
 #include "bearing/case_file.h"
 #include "bearing/simulation.h"
+#include "bearing/sweep_columns.h"
 #include "bearing/sweep_design.h"
+#include "bearing/sweep_row.h"
 #include "bearing/sweep_tables.h"
 
 namespace bearing {
@@ -30,17 +32,6 @@ SweepPoint sweep_point(const std::vector<SweepAxis>& axes, std::size_t index);
 
 /// Every case of the Cartesian product at once (sweep_point for each index).
 std::vector<SweepPoint> sweep_points(const std::vector<SweepAxis>& axes);
-
-struct SweepRow {
-  std::vector<double> values;  ///< the point's values (SI)
-  bool ok = false;
-  std::string error;                          ///< why the case failed (empty if ok)
-  std::vector<ChannelSummary> channels;       ///< the run's summary (empty if it failed)
-  std::vector<MicrophoneLevels> microphones;  ///< sound levels ([acoustics] only)
-  /// The tables `--save` asked for (sweep_tables.h), built where the case ran; null when nothing
-  /// is saved or the case failed.
-  std::shared_ptr<const SweepCaseTables> tables;
-};
 
 /// Builds the case of a point: the base file + the point's overrides.
 using SweepLoader = std::function<Case(const std::vector<Override>&)>;
@@ -70,10 +61,11 @@ using SweepRunner = std::function<void(const SweepLoader&, std::size_t,
 std::vector<SweepRow> run_sweep(const SweepLoader& load, const std::vector<SweepPoint>& points,
                                 int threads, const SweepProgress& progress = {});
 
-/// sweep.csv: the varied keys (SI), `status` (ok/failed), `error`, then for each ring channel of
-/// the first successful row `<ch>.rms,<ch>.ptp,<ch>.kurtosis,<ch>.crest,<ch>.peak_frequency,
-/// <ch>.peak_label`, and with an [acoustics] table per microphone i = 1… `mic<i>.spl_total,
-/// mic<i>.spl_ring,mic<i>.spl_balls` [dB re 20 µPa]. Failed rows, and levels that do not exist
+/// sweep.csv: the varied keys (SI), `status` (ok/failed), `error`, then the columns of the first
+/// successful row (sweep_columns.h): per ring channel `<ch>.rms,<ch>.ptp,<ch>.kurtosis,<ch>.crest,
+/// <ch>.peak_frequency,<ch>.peak_label`, with an [acoustics] table per microphone i = 1…
+/// `mic<i>.spl_total,mic<i>.spl_ring,mic<i>.spl_balls` [dB re 20 µPa], with output.envelope_band
+/// per ring acceleration `env_<ch>.…` and `diagnosis.…`. Failed rows, and levels that do not exist
 /// (source "none", silence), leave their fields empty.
 std::string sweep_csv(const std::vector<SweepAxis>& axes, const std::vector<SweepRow>& rows);
 
@@ -97,8 +89,7 @@ class SweepCsvWriter {
   std::vector<std::string> keys_;
   std::function<void(std::string_view)> out_;
   bool started_ = false;
-  std::vector<std::string> channels_;  ///< ring channels of the first successful row
-  std::size_t microphones_ = 0;
+  SweepColumns columns_;        ///< those of the first successful row
   std::vector<SweepRow> held_;  ///< failed rows before the first successful one
   std::string line_;
 };
