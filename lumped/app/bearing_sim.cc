@@ -10,6 +10,7 @@
 #include <filesystem>
 #include <iostream>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -210,6 +211,22 @@ std::shared_ptr<const bearing::SweepDesign> design_of(const SweepOptions& o) {
   return bearing::random_design(std::move(samples), o.samples, o.seed);
 }
 
+// `--resume DIR` of a sweep whose sweep.csv is complete (bearing::finished_sweep): its counts, and
+// nothing to run. Rank 0 decides and tells the other ranks, which would otherwise wait for cases
+// (and a whole sweep's record, which they read, is gone once it is complete).
+std::optional<bearing::SweepCounts> already_finished(const std::string& dir) {
+  std::optional<bearing::SweepCounts> done;
+  if (world_rank() == 0) done = bearing::finished_sweep(dir);
+#ifdef BEARING_WITH_MPI
+  if (world_size() > 1) {
+    int finished = done ? 1 : 0;
+    MPI_Bcast(&finished, 1, MPI_INT, 0, MPI_COMM_WORLD);
+    if (finished && !done) done = bearing::SweepCounts{};
+  }
+#endif
+  return done;
+}
+
 // `sweep`: every case of the design (or of its --part), in parallel; sweep.csv streamed to a
 // temporary file and renamed into place only when complete; --resume DIR continues one.
 int sweep_command(const SweepOptions& o, bool tty) {
@@ -220,6 +237,17 @@ int sweep_command(const SweepOptions& o, bool tty) {
                               " takes the design, case and part from its sweep.design.json; give "
                               "only --jobs and --quiet with it");
   if (!resume && o.out_dir.empty()) throw bearing::InputError("sweep: --out DIR is required");
+  if (resume) {
+    if (const auto done = already_finished(o.resume)) {
+      // Nothing is touched: neither sweep.csv nor a sweep.h5 beside it.
+      if (world_rank() == 0)
+        std::cout << "sweep: " << o.resume << " is complete: " << done->cases << " cases, "
+                  << done->failed << " failed in "
+                  << (std::filesystem::path(o.resume) / "sweep.csv").string()
+                  << "; nothing to resume\n";
+      return 0;
+    }
+  }
   const auto progress = [&](std::size_t done, std::size_t total) {
     if (tty) std::fprintf(stderr, "\rsweep %zu/%zu cases", done, total);
     if (tty && done == total) std::fprintf(stderr, "\n");
@@ -345,7 +373,8 @@ void add_sweep_options(CLI::App* cmd, SweepOptions& o) {
                   "are joined by `bearing-sim merge`");
   cmd->add_option("--resume", o.resume,
                   "Continue the sweep killed in DIR: the design is read from "
-                  "DIR/sweep.design.json, finished rows are kept, the rest run");
+                  "DIR/sweep.design.json, finished rows are kept, the rest run (a finished sweep "
+                  "is left as it is, exit 0)");
   cmd->add_option("--out", o.out_dir,
                   "Folder for sweep.csv and, while running (and for a --part), sweep.design.json");
   cmd->add_option("--save", o.save,
@@ -416,8 +445,10 @@ int main(int argc, char** argv) {
       "sweep",
       "Run a case for every point of a design (--vary grid, --sample random or --cases list), "
       "in parallel, and write DIR/sweep.csv: the design's values (SI), status, error, then each "
-      "ring channel's rms, ptp, kurtosis, crest and largest peak. A failed case is reported in "
-      "its row; the others go on. A killed sweep continues with --resume DIR.");
+      "ring channel's rms, ptp, kurtosis, crest and largest peak (with output.envelope_band also "
+      "each envelope's band, spectral kurtosis and largest line, and the diagnosis). A failed "
+      "case is reported in its row; the others go on. A killed sweep continues with --resume "
+      "DIR.");
   add_case_options(sweep, so.case_path, so.sets);
   add_sweep_options(sweep, so);
   sweep->add_flag("--quiet", quiet, "No progress on stderr");

@@ -135,9 +135,16 @@ def sweep(case, vary, jobs=0, as_dataframe=None):
     Returns one row per case in case order, the columns of sweep.csv: the varied values (SI),
     ``status`` ("ok"/"failed"), ``error`` (the message of a failed case), then per ring channel
     ``<ch>.rms``, ``<ch>.ptp`` [channel unit], ``<ch>.kurtosis``, ``<ch>.crest`` [-],
-    ``<ch>.peak_frequency`` [Hz], ``<ch>.peak_label``, and with [acoustics] per microphone
-    ``mic<i>.spl_total``, ``mic<i>.spl_ring``, ``mic<i>.spl_balls`` [dB re 20 uPa]; fields sweep.csv
-    leaves empty are None. A pandas DataFrame if pandas can be imported (``as_dataframe=None``),
+    ``<ch>.peak_frequency`` [Hz], ``<ch>.peak_label``, with [acoustics] per microphone
+    ``mic<i>.spl_total``, ``mic<i>.spl_ring``, ``mic<i>.spl_balls`` [dB re 20 uPa], and with
+    ``output.envelope_band`` per ring acceleration ``env_<ch>.band_low``, ``env_<ch>.band_high``
+    [Hz], ``env_<ch>.spectral_kurtosis``, ``env_<ch>.energy_fraction`` [-],
+    ``env_<ch>.peak_frequency`` [Hz], ``env_<ch>.peak_amplitude`` [m/s^2], ``env_<ch>.peak_label``,
+    then ``diagnosis.family`` ("outer", "inner", "ball", "none"), ``diagnosis.channel``,
+    ``diagnosis.spectral_kurtosis``, ``diagnosis.family_share`` [-],
+    ``diagnosis.evidence_labels``, ``diagnosis.evidence_frequencies``,
+    ``diagnosis.evidence_amplitudes`` (texts: lists joined by ";") and ``diagnosis.reason``
+    (docs/bearing-sim.md, sweep); fields sweep.csv leaves empty are None. A pandas DataFrame if pandas can be imported (``as_dataframe=None``),
     else a list of dicts; ``as_dataframe=False`` always gives the list, ``True`` requires pandas.
     A failed case does not stop the others; a bad key or spec raises InputError.
 

@@ -12,6 +12,7 @@
 #include <memory>
 #include <string>
 #include <utility>
+#include <variant>
 #include <vector>
 
 #include <nlohmann/json.hpp>
@@ -23,6 +24,7 @@
 #include "bearing/presets.h"
 #include "bearing/simulation.h"
 #include "bearing/sweep.h"
+#include "bearing/sweep_columns.h"
 #include "bearing/units.h"
 
 namespace py = pybind11;
@@ -225,23 +227,18 @@ bearing::SweepAxis sweep_axis(const std::string& key, py::handle spec) {
   return axis;
 }
 
-// The rows of sweep.csv as dicts, column for column: the varied keys, status, error, per ring
-// channel of the first successful row its rms, ptp, kurtosis, crest, peak_frequency, peak_label,
-// per microphone mic<i>.spl_{total,ring,balls}. Empty CSV fields are None.
+// The rows of sweep.csv as dicts, column for column: the varied keys, status, error, then the
+// columns of the first successful row (bearing/sweep_columns.h: ring channels, microphones,
+// envelopes, diagnosis), numbers as float, texts as str; empty CSV fields are None.
 py::list sweep_rows(const std::vector<bearing::SweepAxis>& axes,
                     const std::vector<bearing::SweepRow>& rows) {
-  std::vector<std::string> channels;
-  std::size_t microphones = 0;
-  for (const auto& r : rows) {
-    if (!r.ok) continue;
-    for (const auto& ch : r.channels)
-      if (ch.group == bearing::ChannelGroup::ring) channels.push_back(ch.name);
-    microphones = r.microphones.size();
-    break;
-  }
-  const auto number = [](const std::optional<double>& v) -> py::object {
-    return v ? py::object(py::float_(*v)) : py::object(py::none());
-  };
+  bearing::SweepColumns columns;
+  for (const auto& r : rows)
+    if (r.ok) {
+      columns = bearing::sweep_columns(r);
+      break;
+    }
+  const std::vector<std::string> names = bearing::sweep_column_names(columns);
   py::list out;
   for (const auto& r : rows) {
     py::dict d;
@@ -250,27 +247,15 @@ py::list sweep_rows(const std::vector<bearing::SweepAxis>& axes,
                                                 : py::object(py::float_(r.values[a]));
     d["status"] = r.ok ? "ok" : "failed";
     d["error"] = r.error;
-    for (const auto& name : channels) {
-      const bearing::ChannelSummary* ch = nullptr;
-      for (const auto& c : r.channels)
-        if (c.name == name) ch = &c;
-      const auto& st = ch ? ch->statistics : bearing::ChannelStatistics{};
-      const bool peak = ch && !ch->peaks.empty();
-      d[py::str(name + ".rms")] = number(ch ? std::optional(st.rms) : std::nullopt);
-      d[py::str(name + ".ptp")] = number(ch ? std::optional(st.ptp) : std::nullopt);
-      d[py::str(name + ".kurtosis")] = number(ch ? std::optional(st.kurtosis) : std::nullopt);
-      d[py::str(name + ".crest")] = number(ch ? std::optional(st.crest) : std::nullopt);
-      d[py::str(name + ".peak_frequency")] =
-          number(peak ? std::optional(ch->peaks.front().frequency) : std::nullopt);
-      d[py::str(name + ".peak_label")] =
-          ch ? py::object(py::str(peak ? ch->peaks.front().label : "")) : py::object(py::none());
-    }
-    for (std::size_t i = 0; i < microphones; ++i) {
-      const bearing::MicrophoneLevels* m = i < r.microphones.size() ? &r.microphones[i] : nullptr;
-      const std::string mic = "mic" + std::to_string(i + 1) + ".";
-      d[py::str(mic + "spl_total")] = number(m ? m->spl_total : std::nullopt);
-      d[py::str(mic + "spl_ring")] = number(m ? m->spl_ring : std::nullopt);
-      d[py::str(mic + "spl_balls")] = number(m ? m->spl_balls : std::nullopt);
+    const std::vector<bearing::SweepCell> cells = bearing::sweep_cells(columns, r);
+    for (std::size_t i = 0; i < names.size(); ++i) {
+      const bearing::SweepCell& cell = cells[i];
+      if (const double* v = std::get_if<double>(&cell))
+        d[py::str(names[i])] = py::float_(*v);
+      else if (const std::string* text = std::get_if<std::string>(&cell))
+        d[py::str(names[i])] = py::str(*text);
+      else
+        d[py::str(names[i])] = py::none();
     }
     out.append(std::move(d));
   }

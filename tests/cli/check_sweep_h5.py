@@ -5,7 +5,9 @@ index, values and resolved case TOML; `bearing-sim run` of that very TOML with o
 gives files equal to the group's tables bit for bit, with the names and units columns.json lists,
 and the summary's summary_json equals the run's summary.json (but for case.source and
 case.bearing). Datasets are chunked with shuffle + gzip 4. A failed case keeps its group with the
-error; a sweep.h5 that cannot be put in place fails the sweep and leaves no sweep.csv. Skipped
+error; a sweep.h5 that cannot be put in place fails the sweep and leaves no sweep.csv; --save
+leaves sweep.csv (with the envelope columns) as it is without; a finished sweep resumed keeps its
+sweep.h5. Skipped
 (exit 77) when h5py cannot be imported.
 
     check_sweep_h5.py BEARING_SIM WORK_DIR
@@ -91,6 +93,15 @@ with h5py.File(work / "sweep" / "sweep.h5", "r") as f:
         check(f"{name}/summary: rms of ay as summary.json",
               s[rows.index("rms"), cols.index("ay")] == summary["channels"]["ay"]["rms"])
 
+# --save changes nothing in sweep.csv, whose rows carry the envelope figures and the diagnosis.
+subprocess.run([sim, "sweep", "--out", str(work / "nosave"), "--jobs", "2",
+                "--vary", "operation.speed=1000rpm:3000rpm:3", *short],
+               check=True, stdout=subprocess.DEVNULL)
+saved_csv = (work / "sweep" / "sweep.csv").read_bytes()
+check("--save: sweep.csv as without --save", saved_csv == (work / "nosave" / "sweep.csv").read_bytes())
+check("--save: sweep.csv has the envelope and diagnosis columns",
+      b",env_ay.spectral_kurtosis," in saved_csv and b",diagnosis.family," in saved_csv)
+
 # A failed case keeps its group, with the error; the others go on.
 tiny = ["--quiet", "--set", "solver.duration=0.05", "--set", "solver.transient=0.01"]
 subprocess.run([sim, "sweep", "--out", str(work / "failed"), "--save", "summary",
@@ -173,6 +184,14 @@ else:
     check("resume --save: sweep.h5 as uninterrupted",
           same_file(work / "uncut" / "sweep.h5", work / "killed" / "sweep.h5"))
     check("resume --save: no spool left", not (work / "killed" / ".sweep.h5.cases").exists())
+    # Resumed once more, the finished sweep is left as it is, sweep.h5 included.
+    before = {p.name: p.read_bytes() for p in (work / "killed").iterdir()}
+    again = subprocess.run([sim, "sweep", "--resume", str(work / "killed"), "--quiet"],
+                           capture_output=True, text=True)
+    check("resume of a finished --save sweep: exit 0, said complete",
+          again.returncode == 0 and "is complete: 150 cases" in again.stdout)
+    check("resume of a finished --save sweep: sweep.csv and sweep.h5 untouched",
+          {p.name: p.read_bytes() for p in (work / "killed").iterdir()} == before)
 
 print(f"{failures} failed")
 sys.exit(1 if failures else 0)

@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # `mpirun -np N bearing-sim sweep` writes the sweep.csv of `bearing-sim sweep --jobs 1`, byte for
-# byte (issue 20): 2 and 3 ranks, 1 and 2 threads per rank, failed cases (negative clearance) and
-# microphone levels in the rows; only rank 0 prints; an input error ends every rank (no hang).
+# byte (issue 20): 2 and 3 ranks, 1 and 2 threads per rank, failed cases (negative clearance),
+# microphone levels and envelope figures in the rows; only rank 0 prints; an input error ends every
+# rank (no hang); a killed sweep resumes, and a finished one resumed is left as it is.
 #
 #   tests/cli/sweep_mpi.sh BEARING_SIM WORK_DIR mpi|nompi
 #
@@ -94,6 +95,33 @@ else
     cat "$work/resume.log"
     status=1
   fi
+  # Resumed again when finished (its record gone): every rank stops at once, exit 0, one line.
+  stamp=$(stat -c "%y %s" "$work/killed/sweep.csv")
+  set +e
+  mpi -np 2 "$sim" sweep --resume "$work/killed" --jobs 1 >"$work/again.log" 2>&1
+  rc=$?
+  set -e
+  if [[ $rc -eq 0 && $(grep -c "is complete: 150 cases" "$work/again.log") -eq 1 ]] &&
+     cmp -s "$work/whole/sweep.csv" "$work/killed/sweep.csv" &&
+     [[ $(stat -c "%y %s" "$work/killed/sweep.csv") == "$stamp" ]]; then
+    echo "ok: a finished sweep resumed under mpirun: exit 0, said complete once, left as it was"
+  else
+    echo "FAILED: a finished sweep resumed under mpirun: exit $rc (124: hung)"
+    cat "$work/again.log"
+    status=1
+  fi
+fi
+# With the envelope analysis the rows (envelopes and diagnosis) travel to rank 0 whole: the same
+# sweep.csv as --jobs 1.
+envelope=(sweep --vary bearing.clearance=-20um:20um:3 --vary operation.speed=1000rpm:3000rpm:2
+  --set solver.duration=0.05 --set solver.transient=0.01 --set output.envelope_band=auto --quiet)
+"$sim" "${envelope[@]}" --jobs 1 --out "$work/env1" >/dev/null
+mpi -np 2 "$sim" "${envelope[@]}" --jobs 1 --out "$work/env2" >/dev/null
+if cmp "$work/env1/sweep.csv" "$work/env2/sweep.csv" && grep -q diagnosis.family "$work/env1/sweep.csv"; then
+  echo "ok: with the envelope analysis under mpirun: the same sweep.csv as --jobs 1"
+else
+  echo "FAILED: with the envelope analysis under mpirun: sweep.csv differs from --jobs 1"
+  status=1
 fi
 # --save under mpirun: the workers' tables travel to rank 0, and sweep.h5 holds the same groups,
 # datasets and attributes as a --jobs 1 sweep's (compared with h5py where it is installed).

@@ -100,6 +100,73 @@ TEST(Sweep, StreamedCsvIsTheWholeTable) {
   EXPECT_EQ(all_failed, bearing::sweep_csv(axes, none));
 }
 
+// A row of an envelope sweep: ok_row(v) with the envelope of ax and its diagnosis.
+SweepRow envelope_row(double v, bearing::FaultFamily family) {
+  SweepRow r = ok_row(v);
+  bearing::SweepEnvelope e;
+  e.channel = "ax";
+  e.band = {1000, 3000};
+  e.spectral_kurtosis = v;
+  e.peak = bearing::Peak{107.5, 0.25, "BPFO", 0};
+  r.envelopes = {e};
+  bearing::Diagnosis d;
+  d.family = family;
+  d.channel = "ax";
+  d.spectral_kurtosis = v;
+  d.family_share = 0.75;
+  if (family != bearing::FaultFamily::none)
+    d.evidence = {{107.5, 0.25, "BPFO", 0}, {215, 0.125, "2xBPFO", 0}};
+  d.reason = "why, in \"words\"";
+  r.diagnosis = d;
+  return r;
+}
+
+// With envelopes the rows get env_<ch>.… and diagnosis.… after the other columns, the evidence as
+// lists; a failed row leaves them empty; a writer continued after the header (--resume) writes the
+// same lines as the uninterrupted one.
+TEST(Sweep, EnvelopeAndDiagnosisColumns) {
+  SweepAxis mass;
+  mass.key = "rotor.mass";
+  const std::vector<SweepAxis> axes = {mass};
+  const std::vector<SweepRow> rows = {failed_row(1, "bad"),
+                                      envelope_row(2, bearing::FaultFamily::outer),
+                                      envelope_row(3, bearing::FaultFamily::none)};
+  const std::string csv = bearing::sweep_csv(axes, rows);
+  const std::string header = csv.substr(0, csv.find('\n'));
+  EXPECT_EQ(header,
+            "rotor.mass,status,error,x.rms,x.ptp,x.kurtosis,x.crest,x.peak_frequency,"
+            "x.peak_label,env_ax.band_low,env_ax.band_high,env_ax.spectral_kurtosis,"
+            "env_ax.energy_fraction,env_ax.peak_frequency,env_ax.peak_amplitude,"
+            "env_ax.peak_label,diagnosis.family,diagnosis.channel,diagnosis.spectral_kurtosis,"
+            "diagnosis.family_share,diagnosis.evidence_labels,diagnosis.evidence_frequencies,"
+            "diagnosis.evidence_amplitudes,diagnosis.reason");
+  // 6 channel, 7 envelope and 8 diagnosis fields, empty for the failed row.
+  EXPECT_NE(csv.find("\n1,failed,bad" + std::string(21, ',') + "\n"), std::string::npos) << csv;
+  EXPECT_NE(csv.find(",1000,3000,2,,107.5,0.25,BPFO,outer,ax,2,0.75,BPFO;2xBPFO,107.5;215,"
+                     "0.25;0.125,\"why, in \"\"words\"\"\"\n"),
+            std::string::npos)
+      << csv;
+  EXPECT_NE(csv.find(",BPFO,none,ax,3,0.75,,,,\"why"), std::string::npos) << csv;
+
+  const bearing::SweepColumns columns = bearing::sweep_columns(header);
+  EXPECT_EQ(columns.channels, std::vector<std::string>{"x"});
+  EXPECT_EQ(columns.envelopes, std::vector<std::string>{"ax"});
+  EXPECT_TRUE(columns.diagnosis);
+  EXPECT_EQ(columns.microphones, 0u);
+  std::string continued;
+  bearing::SweepCsvWriter writer(axes, [&](std::string_view s) { continued.append(s); });
+  writer.continue_after(header);
+  for (const auto& r : rows) writer.add(r);
+  writer.finish();
+  EXPECT_EQ(header + "\n" + continued, csv);
+
+  // Without envelopes nothing of this: the columns end with the channels'.
+  const std::string plain = bearing::sweep_csv(axes, {ok_row(2)});
+  EXPECT_EQ(plain.substr(0, plain.find('\n')),
+            "rotor.mass,status,error,x.rms,x.ptp,x.kurtosis,x.crest,x.peak_frequency,"
+            "x.peak_label");
+}
+
 // Rows reach the sink in case order; while case 0 runs long, the other workers start at most the
 // reorder window's cases (4 per worker) and then wait: what is held does not grow with the cases.
 TEST(Sweep, RowsInOrderWithABoundedWindow) {

@@ -6,9 +6,12 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <chrono>
+#include <fstream>
 #include <string>
 #include <thread>
+#include <utility>
 #include <vector>
 
 #include <gtest/gtest.h>
@@ -106,7 +109,87 @@ TEST(CliSweepResume, ResumeAfterSigkillGivesTheUninterruptedFile) {
   EXPECT_EQ(read(killed / "sweep.csv"), read(whole / "sweep.csv"));
   EXPECT_FALSE(fs::exists(partial));
   EXPECT_FALSE(fs::exists(killed / "sweep.design.json"));
-  EXPECT_EQ(sim("sweep --resume " + killed.string() + " --quiet"), 2);  // nothing left to do
+  // Nothing left to do: said so, and the file stays as it is.
+  const std::string done = read(killed / "sweep.csv");
+  ASSERT_EQ(sim("sweep --resume " + killed.string() + " --quiet", &out), 0) << out;
+  EXPECT_NE(out.find(killed.string() + " is complete: 300 cases"), std::string::npos) << out;
+  EXPECT_EQ(read(killed / "sweep.csv"), done);
+}
+
+// The folder's files (name and size) and sweep.csv's modification time: what a run into it
+// changes.
+std::string snapshot(const fs::path& dir) {
+  std::vector<std::string> files;
+  for (const auto& e : fs::directory_iterator(dir))
+    files.push_back(e.path().filename().string() + " " +
+                    (e.is_regular_file() ? std::to_string(e.file_size()) : std::string("dir")));
+  std::sort(files.begin(), files.end());
+  std::string out;
+  for (const auto& f : files) out += f + "\n";
+  return out + std::to_string(fs::last_write_time(dir / "sweep.csv").time_since_epoch().count());
+}
+
+// --resume of a sweep that has finished: exit 0, the folder and its number of cases named, and
+// nothing written — a whole sweep (whose record is removed at its end), a part (which keeps it), a
+// merged folder (which never had one). A part resumed so is still merged.
+TEST(CliSweepResume, AFinishedSweepIsLeftAsItIs) {
+  const std::string grid =
+      "sweep --vary bearing.balls=7:8:2 --vary operation.speed=1000rpm:3000rpm:3" + kQuick +
+      " --out ";
+  const fs::path whole = fresh_dir("done_whole"), p1 = fresh_dir("done_p1"),
+                 p2 = fresh_dir("done_p2"), merged = fresh_dir("done_merged");
+  ASSERT_EQ(sim(grid + whole.string()), 0);
+  ASSERT_EQ(sim(grid + p1.string() + " --part 1/2"), 0);
+  ASSERT_EQ(sim(grid + p2.string() + " --part 2/2"), 0);
+  ASSERT_EQ(sim("merge " + merged.string() + " " + p1.string() + " " + p2.string()), 0);
+  const std::vector<std::pair<fs::path, int>> finished = {{whole, 6}, {p2, 3}, {merged, 6}};
+  for (const auto& [dir, cases] : finished) {
+    const std::string bytes = read(dir / "sweep.csv"), files = snapshot(dir);
+    std::string out;
+    EXPECT_EQ(sim("sweep --resume " + dir.string() + " --jobs 2", &out), 0) << out;
+    EXPECT_NE(
+        out.find(dir.string() + " is complete: " + std::to_string(cases) + " cases, 0 failed"),
+        std::string::npos)
+        << out;
+    EXPECT_EQ(read(dir / "sweep.csv"), bytes) << dir;
+    EXPECT_EQ(snapshot(dir), files) << dir;
+  }
+  EXPECT_FALSE(fs::exists(whole / "sweep.design.json"));
+  EXPECT_TRUE(fs::exists(p2 / "sweep.design.json"));
+  const fs::path again = fresh_dir("done_again");
+  ASSERT_EQ(sim("merge " + again.string() + " " + p1.string() + " " + p2.string()), 0);
+  EXPECT_EQ(read(again / "sweep.csv"), read(whole / "sweep.csv"));
+}
+
+// A sweep.csv beside a record whose part has another number of cases is not that sweep's: a new
+// sweep into the folder was killed before its first row. --resume runs that sweep; merge refuses a
+// part with a stopped run in it; a folder without any sweep is an input error.
+TEST(CliSweepResume, ARecordWithoutItsRowsIsRun) {
+  const std::string grid =
+      "sweep --vary bearing.balls=7:8:2 --vary operation.speed=1000rpm:3000rpm:3" + kQuick +
+      " --out ";
+  const fs::path whole = fresh_dir("norows_whole"), p1 = fresh_dir("norows_p1"),
+                 p2 = fresh_dir("norows_p2"), out_dir = fresh_dir("norows_merged");
+  ASSERT_EQ(sim(grid + whole.string()), 0);
+  ASSERT_EQ(sim(grid + p1.string() + " --part 1/2"), 0);
+  ASSERT_EQ(sim(grid + p2.string() + " --part 2/2"), 0);
+  const std::string part2 = read(p2 / "sweep.csv");
+  fs::copy_file(whole / "sweep.csv", p2 / "sweep.csv", fs::copy_options::overwrite_existing);
+  std::string out;
+  ASSERT_EQ(sim("sweep --resume " + p2.string() + " --quiet", &out), 0) << out;
+  EXPECT_EQ(out.find("is complete"), std::string::npos) << out;
+  EXPECT_NE(out.find("3 cases"), std::string::npos) << out;
+  EXPECT_EQ(read(p2 / "sweep.csv"), part2);
+
+  std::ofstream(p1 / ".sweep.csv.partial") << "";
+  EXPECT_EQ(sim("merge " + out_dir.string() + " " + p1.string() + " " + p2.string(), &out), 2);
+  EXPECT_NE(out.find("part 1/2 is not complete"), std::string::npos) << out;
+  EXPECT_NE(out.find("--resume " + p1.string()), std::string::npos) << out;
+
+  const fs::path empty = fresh_dir("norows_empty");
+  fs::create_directories(empty);
+  EXPECT_EQ(sim("sweep --resume " + empty.string(), &out), 2);
+  EXPECT_NE(out.find("design record"), std::string::npos) << out;
 }
 
 // Two parts merged are one run of the whole design; parts of another design are refused.

@@ -12,6 +12,7 @@
 
 #include <gtest/gtest.h>
 
+#include "bearing/diagnosis.h"
 #include "bearing/sweep.h"
 #include "bearing/sweep_row_codec.h"
 
@@ -62,7 +63,37 @@ SweepRow full_row() {
   m.spl_ring = 30.25;
   m.nearest_ball_surface = 0.4;
   row.microphones = {m, bearing::MicrophoneLevels{}};
+  bearing::SweepEnvelope e;
+  e.channel = "ay";
+  e.band = {1666.6666666666667, 2500.25};
+  e.spectral_kurtosis = 9.375;
+  e.energy_fraction = 1.0 / 7.0;
+  e.peak = bearing::Peak{107.25, 3e-3, "BPFO", 0.125};
+  bearing::SweepEnvelope given = e;
+  given.channel = "ax";
+  given.energy_fraction.reset();
+  given.peak.reset();
+  row.envelopes = {e, given};
+  bearing::Diagnosis d;
+  d.family = bearing::FaultFamily::inner;
+  d.channel = "ay";
+  d.unit = "m/s^2";
+  d.band = e.band;
+  d.source = bearing::EnvelopeBandSource::automatic;
+  d.spectral_kurtosis = 27.5;
+  d.family_share = 2.0 / 3.0;
+  d.evidence = {{162.5, 2e-3, "BPFI", -0.5}, {132.5, 1e-3, "BPFI-fr", 0.25}};
+  d.reason = "ay, 1.67–2.5 kHz (kurtogram): spectral kurtosis 27.5 ≥ 5, …";
+  d.thresholds = {4.5, 0.625};
+  row.diagnosis = d;
   return row;
+}
+
+void expect_same(const bearing::Peak& a, const bearing::Peak& b) {
+  expect_same(a.frequency, b.frequency);
+  expect_same(a.amplitude, b.amplitude);
+  EXPECT_EQ(a.label, b.label);
+  expect_same(a.label_error, b.label_error);
 }
 
 TEST(SweepRowCodec, EveryFieldRoundTripsBitForBit) {
@@ -112,6 +143,33 @@ TEST(SweepRowCodec, EveryFieldRoundTripsBitForBit) {
     expect_same(a.spl_balls, b.spl_balls);
     expect_same(a.nearest_ball_surface, b.nearest_ball_surface);
   }
+  ASSERT_EQ(back.envelopes.size(), 2u);
+  for (std::size_t i = 0; i < 2; ++i) {
+    const auto& a = back.envelopes[i];
+    const auto& b = row.envelopes[i];
+    EXPECT_EQ(a.channel, b.channel);
+    expect_same(a.band.low, b.band.low);
+    expect_same(a.band.high, b.band.high);
+    expect_same(a.spectral_kurtosis, b.spectral_kurtosis);
+    expect_same(a.energy_fraction, b.energy_fraction);
+    ASSERT_EQ(a.peak.has_value(), b.peak.has_value());
+    if (a.peak) expect_same(*a.peak, *b.peak);
+  }
+  ASSERT_TRUE(back.diagnosis);
+  const bearing::Diagnosis &a = *back.diagnosis, &b = *row.diagnosis;
+  EXPECT_EQ(a.family, b.family);
+  EXPECT_EQ(a.channel, b.channel);
+  EXPECT_EQ(a.unit, b.unit);
+  expect_same(a.band.low, b.band.low);
+  expect_same(a.band.high, b.band.high);
+  EXPECT_EQ(a.source, b.source);
+  expect_same(a.spectral_kurtosis, b.spectral_kurtosis);
+  expect_same(a.family_share, b.family_share);
+  ASSERT_EQ(a.evidence.size(), b.evidence.size());
+  for (std::size_t p = 0; p < a.evidence.size(); ++p) expect_same(a.evidence[p], b.evidence[p]);
+  EXPECT_EQ(a.reason, b.reason);
+  expect_same(a.thresholds.min_spectral_kurtosis, b.thresholds.min_spectral_kurtosis);
+  expect_same(a.thresholds.min_family_share, b.thresholds.min_family_share);
 }
 
 TEST(SweepRowCodec, AFailedRowRoundTrips) {
@@ -127,9 +185,12 @@ TEST(SweepRowCodec, AFailedRowRoundTrips) {
   EXPECT_EQ(back.error, row.error);
   EXPECT_TRUE(back.channels.empty());
   EXPECT_TRUE(back.microphones.empty());
+  EXPECT_TRUE(back.envelopes.empty());
+  EXPECT_FALSE(back.diagnosis);
 }
 
-// A real sweep's rows (with acoustics) give the same sweep.csv after the round trip.
+// A real sweep's rows (with acoustics and the envelope analysis) give the same sweep.csv after the
+// round trip.
 TEST(SweepRowCodec, RealRowsGiveTheSameCsv) {
   const std::vector<bearing::SweepAxis> axes = {
       bearing::parse_vary("operation.speed=1000rpm:3000rpm:2")};
@@ -137,6 +198,7 @@ TEST(SweepRowCodec, RealRowsGiveTheSameCsv) {
     std::vector<bearing::Override> all = {
         bearing::parse_override("solver.duration=0.05"),
         bearing::parse_override("solver.transient=0.01"),
+        bearing::parse_override("output.envelope_band=auto"),
         bearing::parse_override(R"(acoustics.microphones=[[0.5, "0 deg"], [1.0, "90 deg"]])")};
     all.insert(all.end(), point.begin(), point.end());
     return bearing::default_case(all);
@@ -152,6 +214,9 @@ TEST(SweepRowCodec, RealRowsGiveTheSameCsv) {
   }
   ASSERT_TRUE(rows.front().ok) << rows.front().error;
   EXPECT_FALSE(rows.front().microphones.empty());
+  EXPECT_EQ(rows.front().envelopes.size(), 2u);  // ax, ay
+  ASSERT_TRUE(rows.front().diagnosis);
+  EXPECT_FALSE(rows.front().diagnosis->reason.empty());
   EXPECT_EQ(bearing::sweep_csv(axes, back), bearing::sweep_csv(axes, rows));
 }
 

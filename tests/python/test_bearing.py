@@ -211,9 +211,15 @@ class Errors(unittest.TestCase):
             bearing.sweep(bearing.Case.default(), vary={"operation.speed": "1000rpm:3000rpm"})
 
 
+# sweep.csv's columns that hold text (the others numbers): a Python row gives them as str.
+TEXT_COLUMNS = ("status", "error", "diagnosis.family", "diagnosis.channel",
+                "diagnosis.evidence_labels", "diagnosis.evidence_frequencies",
+                "diagnosis.evidence_amplitudes", "diagnosis.reason")
+
+
 class Sweep(unittest.TestCase):
-    def test_rows_equal_sweep_csv(self):
-        sets = [("solver.duration", "0.25 s"), ("solver.transient", "0.05 s")]
+    def rows_and_csv(self, sets):
+        """bearing.sweep's rows and sweep.csv's (csv.DictReader) of the same sweep."""
         vary = {"waviness.inner.0.amplitude": "0um:1um:3", "solver.dt": "5us:405us:2"}
         with tempfile.TemporaryDirectory() as tmp:
             cli("sweep", WAVINESS, "--quiet", "--jobs", "2", "--out", tmp, *set_args(sets),
@@ -228,12 +234,25 @@ class Sweep(unittest.TestCase):
             self.assertEqual(list(row), list(want))
             for key, text in want.items():
                 value = row[key]
-                if key in ("status", "error") or key.endswith("peak_label"):
+                if key in TEXT_COLUMNS or key.endswith(".peak_label"):
                     self.assertEqual(value if value is not None else "", text, key)
                 elif text == "":
                     self.assertIsNone(value, key)
                 else:
                     self.assertEqual(value, float(text), key)
+        return rows
+
+    def test_rows_equal_sweep_csv(self):
+        rows = self.rows_and_csv([("solver.duration", "0.25 s"), ("solver.transient", "0.05 s")])
+        self.assertFalse([k for k in rows[0] if k.startswith(("env_", "diagnosis."))])
+
+    def test_envelope_rows_equal_sweep_csv(self):
+        rows = self.rows_and_csv([("solver.duration", "0.25 s"), ("solver.transient", "0.05 s"),
+                                  ("output.envelope_band", "auto")])
+        for row in rows:
+            ok = row["status"] == "ok"
+            self.assertEqual(row["diagnosis.family"] in ("outer", "inner", "ball", "none"), ok)
+            self.assertEqual(isinstance(row["env_ay.spectral_kurtosis"], float), ok)
 
     def test_value_lists_equal_ranges(self):
         case = bearing.Case.default().set("solver.duration", "0.25 s").set(

@@ -18,6 +18,13 @@ std::string band_text(const FrequencyBand& band) {
   return buf;
 }
 
+std::optional<double> band_energy_fraction(const EnvelopeSummary& e) {
+  std::optional<double> fraction;
+  for (const KurtogramBand& b : e.kurtogram)
+    if (b.band.low == e.band.low && b.band.high == e.band.high) fraction = b.energy_fraction;
+  return fraction;
+}
+
 double envelope_min_bandwidth(const BearingFrequencies& f) {
   return 3 * std::max({f.bpfo, f.bpfi, 2 * f.bsf});
 }

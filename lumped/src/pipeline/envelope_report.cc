@@ -61,10 +61,9 @@ nlohmann::json envelope_json(const std::vector<EnvelopeSummary>& envelopes) {
                        {"band", band_json(b.band)},
                        {"spectral_kurtosis", b.spectral_kurtosis},
                        {"energy_fraction", b.energy_fraction}});
-        if (b.band.low == e.band.low && b.band.high == e.band.high)
-          j["energy_fraction"] = b.energy_fraction;
       }
       j["kurtogram"] = map;
+      if (const auto fraction = band_energy_fraction(e)) j["energy_fraction"] = *fraction;
     }
     out[e.channel] = j;
   }

@@ -13,6 +13,7 @@
 #include <map>
 #include <mutex>
 #include <thread>
+#include <variant>
 
 #include "bearing/errors.h"
 
@@ -39,12 +40,6 @@ std::string csv_field(const std::string& s) {
   std::string out = "\"";
   for (char ch : s) out += ch == '"' ? std::string("\"\"") : std::string(1, ch == '\n' ? ' ' : ch);
   return out + "\"";
-}
-
-void append(std::string& line, double v) {
-  char buf[32];
-  const auto res = std::to_chars(buf, buf + sizeof buf, v);
-  line.append(buf, res.ptr);
 }
 
 }  // namespace
@@ -138,6 +133,12 @@ std::vector<SweepPoint> sweep_points(const std::vector<SweepAxis>& axes) {
 
 namespace {
 
+SweepEnvelope sweep_envelope(const EnvelopeSummary& e) {
+  SweepEnvelope out{e.channel, e.band, e.spectral_kurtosis, band_energy_fraction(e), std::nullopt};
+  if (!e.peaks.empty()) out.peak = e.peaks.front();
+  return out;
+}
+
 SweepRow run_point(const SweepLoader& load, const SweepPoint& point,
                    const std::vector<SweepSave>& save) {
   SweepRow row;
@@ -150,6 +151,8 @@ SweepRow run_point(const SweepLoader& load, const SweepPoint& point,
       row.tables = std::make_shared<const SweepCaseTables>(sweep_case_tables(c, r, summary, save));
     row.channels = std::move(summary.channels);
     if (summary.noise) row.microphones = std::move(summary.noise->microphones);
+    for (const EnvelopeSummary& e : summary.envelopes) row.envelopes.push_back(sweep_envelope(e));
+    row.diagnosis = std::move(summary.diagnosis);
     row.ok = true;
   } catch (const std::exception& e) {
     row.ok = false;
@@ -229,21 +232,10 @@ SweepCsvWriter::SweepCsvWriter(std::vector<std::string> keys,
                                std::function<void(std::string_view)> out)
     : keys_(std::move(keys)), out_(std::move(out)) {}
 
-// The header is: keys, status, error, six fields per ring channel (the first `<ch>.rms`), three
-// per microphone (`mic<i>.spl_total` …).
+// The header is: keys, status, error, then the columns (sweep_columns.h).
 void SweepCsvWriter::continue_after(std::string_view header) {
   started_ = true;
-  std::size_t start = 0;
-  for (;;) {
-    const auto comma = header.find(',', start);
-    const std::string_view field = header.substr(start, comma - start);
-    constexpr std::string_view rms = ".rms", spl = ".spl_total";
-    if (field.size() > rms.size() && field.substr(field.size() - rms.size()) == rms)
-      channels_.emplace_back(field.substr(0, field.size() - rms.size()));
-    if (field.size() > spl.size() && field.substr(field.size() - spl.size()) == spl) ++microphones_;
-    if (comma == std::string_view::npos) break;
-    start = comma + 1;
-  }
+  columns_ = sweep_columns(header);
 }
 
 void SweepCsvWriter::add(const SweepRow& row) {
@@ -265,20 +257,11 @@ void SweepCsvWriter::finish() {
 // The header (its columns from `first_ok`, none without it), then the rows held so far.
 void SweepCsvWriter::start(const SweepRow* first_ok) {
   started_ = true;
-  if (first_ok) {
-    for (const auto& ch : first_ok->channels)
-      if (ch.group == ChannelGroup::ring) channels_.push_back(ch.name);
-    microphones_ = first_ok->microphones.size();
-  }
+  if (first_ok) columns_ = sweep_columns(*first_ok);
   line_.clear();
   for (const auto& k : keys_) line_ += k + ",";
   line_ += "status,error";
-  for (const auto& ch : channels_)
-    for (const char* f : {"rms", "ptp", "kurtosis", "crest", "peak_frequency", "peak_label"})
-      line_ += "," + ch + "." + f;
-  for (std::size_t i = 1; i <= microphones_; ++i)
-    for (const char* f : {"spl_total", "spl_ring", "spl_balls"})
-      line_ += ",mic" + std::to_string(i) + "." + f;
+  for (const auto& name : sweep_column_names(columns_)) line_ += "," + name;
   line_ += "\n";
   out_(line_);
   for (const auto& r : held_) write_row(r);
@@ -289,32 +272,14 @@ void SweepCsvWriter::start(const SweepRow* first_ok) {
 void SweepCsvWriter::write_row(const SweepRow& r) {
   std::string& out = line_;
   out.clear();
-  for (double v : r.values) append(out, v), out += ",";
+  for (double v : r.values) append_number(out, v), out += ",";
   out += r.ok ? std::string("ok,") : "failed," + csv_field(r.error);
-  for (const auto& name : channels_) {
-    const ChannelSummary* ch = nullptr;
-    for (const auto& c : r.channels)
-      if (c.name == name) ch = &c;
-    if (!ch) {
-      out += ",,,,,,";
-      continue;
-    }
-    for (double v :
-         {ch->statistics.rms, ch->statistics.ptp, ch->statistics.kurtosis, ch->statistics.crest}) {
-      out += ",";
-      append(out, v);
-    }
+  for (const SweepCell& cell : sweep_cells(columns_, r)) {
     out += ",";
-    if (!ch->peaks.empty()) append(out, ch->peaks.front().frequency);
-    out += "," + csv_field(ch->peaks.empty() ? "" : ch->peaks.front().label);
-  }
-  for (std::size_t i = 0; i < microphones_; ++i) {
-    const MicrophoneLevels* m = i < r.microphones.size() ? &r.microphones[i] : nullptr;
-    for (const std::optional<double>* v :
-         {m ? &m->spl_total : nullptr, m ? &m->spl_ring : nullptr, m ? &m->spl_balls : nullptr}) {
-      out += ",";
-      if (v && *v) append(out, **v);
-    }
+    if (const double* v = std::get_if<double>(&cell))
+      append_number(out, *v);
+    else if (const std::string* text = std::get_if<std::string>(&cell))
+      out += csv_field(*text);
   }
   out += "\n";
   out_(out);

@@ -194,8 +194,6 @@ SweepCounts write_sweep(const std::string& dir, const SweepPlan& plan, int threa
   CsvContent kept;
   const auto cannot_write = [&] { return InputError("--out " + dir + ": cannot write sweep.csv"); };
   try {
-    if (resume && !fs::exists(tmp) && fs::exists(file))
-      throw InputError("--resume " + dir + ": sweep.csv is complete, nothing to resume");
     if (resume) {
       kept = read_complete_lines(tmp, design.keys().size());
       if (kept.header.empty()) kept.bytes = 0;
@@ -241,10 +239,31 @@ SweepCounts write_sweep(const std::string& dir, const SweepPlan& plan, int threa
   return counts;
 }
 
+std::optional<SweepCounts> finished_sweep(const std::string& dir) {
+  const fs::path file = fs::path(dir) / "sweep.csv";
+  if (!fs::exists(file) || fs::exists(fs::path(dir) / kPartial)) return std::nullopt;
+  std::ifstream in(file, std::ios::binary);
+  std::string header;
+  std::getline(in, header);
+  std::size_t keys = 0;  // the fields before `status`
+  for (std::size_t start = 0;; ++keys) {
+    const auto comma = header.find(',', start);
+    if (header.compare(start, comma - start, "status") == 0) break;
+    if (comma == std::string::npos) return std::nullopt;  // no status column: not a sweep.csv
+    start = comma + 1;
+  }
+  const CsvContent c = read_complete_lines(file, keys);
+  if (fs::exists(fs::path(dir) / kRecord)) {
+    const json part = read_record_json(dir).at("part");
+    if (c.rows != part.at("end").get<std::size_t>() - part.at("first").get<std::size_t>())
+      return std::nullopt;
+  }
+  return SweepCounts{c.rows, c.failed};
+}
+
 SweepCounts resume_sweep(const std::string& dir, int threads, const SweepProgress& progress,
                          const SweepRunner& runner, const SweepRowHook& hook) {
-  if (!fs::exists(fs::path(dir) / kRecord) && fs::exists(fs::path(dir) / "sweep.csv"))
-    throw InputError("--resume " + dir + ": sweep.csv is complete, nothing to resume");
+  if (const auto done = finished_sweep(dir)) return *done;
   return write_sweep(dir, read_sweep_record(dir), threads, progress, runner, true, hook);
 }
 
@@ -275,10 +294,13 @@ std::vector<MergePart> check_parts(const std::vector<std::string>& dirs) {
     if (p.count != ref.count)
       throw InputError("merge: " + d + " is a part of " + std::to_string(p.count) + ", " + ref.dir +
                        " of " + std::to_string(ref.count));
-    if (!fs::exists(fs::path(d) / "sweep.csv"))
+    const bool stopped = fs::exists(fs::path(d) / kPartial);
+    if (stopped || !fs::exists(fs::path(d) / "sweep.csv"))
       throw InputError("merge: " + d + ": part " + std::to_string(p.index) + "/" +
-                       std::to_string(p.count) +
-                       " is not complete (no sweep.csv); finish it with --resume " + d);
+                       std::to_string(p.count) + " is not complete (" +
+                       (stopped ? "a run into it stopped before its end: " + std::string(kPartial)
+                                : std::string("no sweep.csv")) +
+                       "); finish it with --resume " + d);
     parts.push_back(std::move(p));
   }
   std::sort(parts.begin(), parts.end(),

@@ -77,19 +77,40 @@ class Reader {
   std::size_t at_ = 0;
 };
 
+void encode_peak(Writer& w, const Peak& p) {
+  w.raw(p.frequency);
+  w.raw(p.amplitude);
+  w.text(p.label);
+  w.raw(p.label_error);
+}
+
+Peak decode_peak(Reader& r) {
+  Peak p;
+  p.frequency = r.raw<double>();
+  p.amplitude = r.raw<double>();
+  p.label = r.text();
+  p.label_error = r.raw<double>();
+  return p;
+}
+
+void encode_peaks(Writer& w, const std::vector<Peak>& peaks) {
+  w.size(peaks.size());
+  for (const Peak& p : peaks) encode_peak(w, p);
+}
+
+std::vector<Peak> decode_peaks(Reader& r) {
+  std::vector<Peak> peaks(r.size());
+  for (Peak& p : peaks) p = decode_peak(r);
+  return peaks;
+}
+
 void encode_channel(Writer& w, const ChannelSummary& c) {
   w.text(c.name);
   w.text(c.unit);
   w.raw(static_cast<std::int32_t>(c.group));
   const ChannelStatistics& s = c.statistics;
   for (double v : {s.mean, s.rms, s.ptp, s.kurtosis, s.crest}) w.raw(v);
-  w.size(c.peaks.size());
-  for (const Peak& p : c.peaks) {
-    w.raw(p.frequency);
-    w.raw(p.amplitude);
-    w.text(p.label);
-    w.raw(p.label_error);
-  }
+  encode_peaks(w, c.peaks);
 }
 
 ChannelSummary decode_channel(Reader& r) {
@@ -99,14 +120,54 @@ ChannelSummary decode_channel(Reader& r) {
   c.group = static_cast<ChannelGroup>(r.raw<std::int32_t>());
   ChannelStatistics& s = c.statistics;
   for (double* v : {&s.mean, &s.rms, &s.ptp, &s.kurtosis, &s.crest}) *v = r.raw<double>();
-  c.peaks.resize(r.size());
-  for (Peak& p : c.peaks) {
-    p.frequency = r.raw<double>();
-    p.amplitude = r.raw<double>();
-    p.label = r.text();
-    p.label_error = r.raw<double>();
-  }
+  c.peaks = decode_peaks(r);
   return c;
+}
+
+void encode_envelope(Writer& w, const SweepEnvelope& e) {
+  w.text(e.channel);
+  for (double v : {e.band.low, e.band.high, e.spectral_kurtosis}) w.raw(v);
+  w.maybe(e.energy_fraction);
+  w.raw(static_cast<std::uint8_t>(e.peak.has_value()));
+  if (e.peak) encode_peak(w, *e.peak);
+}
+
+SweepEnvelope decode_envelope(Reader& r) {
+  SweepEnvelope e;
+  e.channel = r.text();
+  for (double* v : {&e.band.low, &e.band.high, &e.spectral_kurtosis}) *v = r.raw<double>();
+  e.energy_fraction = r.maybe();
+  if (r.raw<std::uint8_t>() != 0) e.peak = decode_peak(r);
+  return e;
+}
+
+void encode_diagnosis(Writer& w, const std::optional<Diagnosis>& d) {
+  w.raw(static_cast<std::uint8_t>(d.has_value()));
+  if (!d) return;
+  w.raw(static_cast<std::int32_t>(d->family));
+  w.text(d->channel);
+  w.text(d->unit);
+  w.raw(static_cast<std::int32_t>(d->source));
+  for (double v : {d->band.low, d->band.high, d->spectral_kurtosis, d->family_share,
+                   d->thresholds.min_spectral_kurtosis, d->thresholds.min_family_share})
+    w.raw(v);
+  encode_peaks(w, d->evidence);
+  w.text(d->reason);
+}
+
+std::optional<Diagnosis> decode_diagnosis(Reader& r) {
+  if (r.raw<std::uint8_t>() == 0) return std::nullopt;
+  Diagnosis d;
+  d.family = static_cast<FaultFamily>(r.raw<std::int32_t>());
+  d.channel = r.text();
+  d.unit = r.text();
+  d.source = static_cast<EnvelopeBandSource>(r.raw<std::int32_t>());
+  for (double* v : {&d.band.low, &d.band.high, &d.spectral_kurtosis, &d.family_share,
+                    &d.thresholds.min_spectral_kurtosis, &d.thresholds.min_family_share})
+    *v = r.raw<double>();
+  d.evidence = decode_peaks(r);
+  d.reason = r.text();
+  return d;
 }
 
 void encode_microphone(Writer& w, const MicrophoneLevels& m) {
@@ -186,6 +247,9 @@ void encode_sweep_row(std::size_t index, const SweepRow& row, std::string& out) 
   for (const auto& c : row.channels) encode_channel(w, c);
   w.size(row.microphones.size());
   for (const auto& m : row.microphones) encode_microphone(w, m);
+  w.size(row.envelopes.size());
+  for (const auto& e : row.envelopes) encode_envelope(w, e);
+  encode_diagnosis(w, row.diagnosis);
   encode_tables(w, row.tables.get());
 }
 
@@ -201,6 +265,9 @@ SweepRow decode_sweep_row(std::string_view bytes, std::size_t& index) {
   for (std::size_t i = 0; i < channels; ++i) row.channels.push_back(decode_channel(r));
   const std::size_t microphones = r.size();
   for (std::size_t i = 0; i < microphones; ++i) row.microphones.push_back(decode_microphone(r));
+  const std::size_t envelopes = r.size();
+  for (std::size_t i = 0; i < envelopes; ++i) row.envelopes.push_back(decode_envelope(r));
+  row.diagnosis = decode_diagnosis(r);
   row.tables = decode_tables(r);
   r.finish();
   return row;

@@ -3,6 +3,7 @@
 // (given, or the fast kurtogram's), the spectral kurtosis there, the envelope spectrum and its
 // peaks named after the bearing's fault frequencies.
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -27,6 +28,10 @@ struct EnvelopeSummary {
   Spectrum spectrum;        ///< amplitude spectrum of the envelope [unit]
   std::vector<Peak> peaks;  ///< its largest peaks, largest first, fault_frequency_names_up_to()
 };
+
+/// The share of the record's energy in the envelope's band, from its kurtogram (a band the
+/// kurtogram chose; none for a given band) [-]: summary.json `envelope.<ch>.energy_fraction`.
+std::optional<double> band_energy_fraction(const EnvelopeSummary& envelope);
 
 /// "1.67–2.5 kHz" (≥ 1 kHz at the top) or "625–833 Hz": a band for the readable summary.
 std::string band_text(const FrequencyBand& band);

@@ -3,6 +3,7 @@
 
 #include <functional>
 #include <memory>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <utility>
@@ -10,7 +11,9 @@
 
 #include "bearing/case_file.h"
 #include "bearing/simulation.h"
+#include "bearing/sweep_columns.h"
 #include "bearing/sweep_design.h"
+#include "bearing/sweep_row.h"
 #include "bearing/sweep_tables.h"
 
 namespace bearing {
@@ -29,17 +32,6 @@ SweepPoint sweep_point(const std::vector<SweepAxis>& axes, std::size_t index);
 
 /// Every case of the Cartesian product at once (sweep_point for each index).
 std::vector<SweepPoint> sweep_points(const std::vector<SweepAxis>& axes);
-
-struct SweepRow {
-  std::vector<double> values;  ///< the point's values (SI)
-  bool ok = false;
-  std::string error;                          ///< why the case failed (empty if ok)
-  std::vector<ChannelSummary> channels;       ///< the run's summary (empty if it failed)
-  std::vector<MicrophoneLevels> microphones;  ///< sound levels ([acoustics] only)
-  /// The tables `--save` asked for (sweep_tables.h), built where the case ran; null when nothing
-  /// is saved or the case failed.
-  std::shared_ptr<const SweepCaseTables> tables;
-};
 
 /// Builds the case of a point: the base file + the point's overrides.
 using SweepLoader = std::function<Case(const std::vector<Override>&)>;
@@ -69,10 +61,11 @@ using SweepRunner = std::function<void(const SweepLoader&, std::size_t,
 std::vector<SweepRow> run_sweep(const SweepLoader& load, const std::vector<SweepPoint>& points,
                                 int threads, const SweepProgress& progress = {});
 
-/// sweep.csv: the varied keys (SI), `status` (ok/failed), `error`, then for each ring channel of
-/// the first successful row `<ch>.rms,<ch>.ptp,<ch>.kurtosis,<ch>.crest,<ch>.peak_frequency,
-/// <ch>.peak_label`, and with an [acoustics] table per microphone i = 1… `mic<i>.spl_total,
-/// mic<i>.spl_ring,mic<i>.spl_balls` [dB re 20 µPa]. Failed rows, and levels that do not exist
+/// sweep.csv: the varied keys (SI), `status` (ok/failed), `error`, then the columns of the first
+/// successful row (sweep_columns.h): per ring channel `<ch>.rms,<ch>.ptp,<ch>.kurtosis,<ch>.crest,
+/// <ch>.peak_frequency,<ch>.peak_label`, with an [acoustics] table per microphone i = 1…
+/// `mic<i>.spl_total,mic<i>.spl_ring,mic<i>.spl_balls` [dB re 20 µPa], with output.envelope_band
+/// per ring acceleration `env_<ch>.…` and `diagnosis.…`. Failed rows, and levels that do not exist
 /// (source "none", silence), leave their fields empty.
 std::string sweep_csv(const std::vector<SweepAxis>& axes, const std::vector<SweepRow>& rows);
 
@@ -96,8 +89,7 @@ class SweepCsvWriter {
   std::vector<std::string> keys_;
   std::function<void(std::string_view)> out_;
   bool started_ = false;
-  std::vector<std::string> channels_;  ///< ring channels of the first successful row
-  std::size_t microphones_ = 0;
+  SweepColumns columns_;        ///< those of the first successful row
   std::vector<SweepRow> held_;  ///< failed rows before the first successful one
   std::string line_;
 };
@@ -168,7 +160,8 @@ SweepPlan read_sweep_record(const std::string& dir);
 /// DIR/sweep.design.json, streams the rows to DIR/.sweep.csv.partial (flushed row by row) and
 /// renames it to DIR/sweep.csv when every row is in. A whole sweep then removes the record (only
 /// sweep.csv is left); a part keeps it for `merge`. With `resume`, the complete rows already in
-/// the temporary file are kept (a truncated last line is dropped) and only the others run.
+/// the temporary file are kept (a truncated last line is dropped) and only the others run (all of
+/// them without a temporary file; resume_sweep() first checks whether the sweep has finished).
 /// On an error the temporary file and the record stay, for --resume. `runner` defaults to
 /// run_sweep (an MPI runner with its signature may take its place). Throws InputError.
 /// With `hook.add` (a further output, e.g. `--save`'s sweep.h5) every row also goes to the hook
@@ -178,7 +171,15 @@ SweepCounts write_sweep(const std::string& dir, const SweepPlan& plan, int threa
                         const SweepProgress& progress = {}, const SweepRunner& runner = {},
                         bool resume = false, const SweepRowHook& hook = {});
 
-/// `bearing-sim sweep --resume DIR`: the plan read back from DIR, then write_sweep(resume).
+/// The counts of the sweep in DIR if its sweep.csv is complete: sweep.csv is there, no
+/// `.sweep.csv.partial` (a sweep into DIR that stopped, or is running), and if the design record is
+/// there (a part keeps it; a whole sweep removes it at the end) sweep.csv has as many rows as its
+/// part has cases (otherwise the record is of a sweep killed before its first row). Nullopt if not.
+/// Reads every row (the failed ones are counted). Throws InputError for an unreadable record.
+std::optional<SweepCounts> finished_sweep(const std::string& dir);
+
+/// `bearing-sim sweep --resume DIR`: the plan read back from DIR, then write_sweep(resume). A
+/// finished sweep (finished_sweep()) is left as it is: its counts are returned, nothing runs.
 SweepCounts resume_sweep(const std::string& dir, int threads, const SweepProgress& progress = {},
                          const SweepRunner& runner = {}, const SweepRowHook& hook = {});
 

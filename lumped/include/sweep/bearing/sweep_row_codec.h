@@ -10,8 +10,8 @@
 namespace bearing {
 
 /// Case `index` and its row as bytes: every field of the row (values, ok, error, each channel's
-/// name, unit, group, statistics and peaks, each microphone's levels, and `--save`'s tables when
-/// the row carries them), doubles as their raw 8
+/// name, unit, group, statistics and peaks, each microphone's levels, each envelope's figures, the
+/// diagnosis, and `--save`'s tables when the row carries them), doubles as their raw 8
 /// bytes, so the row decodes bit for bit on a machine of the same byte order and double format
 /// (a homogeneous cluster). Appends to `out`.
 void encode_sweep_row(std::size_t index, const SweepRow& row, std::string& out);
