@@ -7,7 +7,7 @@
 #include <cmath>
 #include <string>
 
-#include "../edit_distance.h"
+#include "../core/edit_distance.h"
 #include "bearing/constants.h"
 #include "bearing/errors.h"
 #include "bearing/units.h"
