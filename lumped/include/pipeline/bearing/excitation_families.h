@@ -22,7 +22,7 @@ namespace bearing {
 ///  - BPFO harmonics always (the ball set turns); its subharmonics (k/m)·BPFO with a dynamic kind
 ///    (a quasi-static equilibrium follows the ball set's angle, so it repeats every ball pass);
 ///  - FTF with ball-size errors (one not zero), a ball defect, or a kind with ball DOFs;
-///  - BPFI and its ±f_r sidebands with inner-race waviness (an amplitude above zero) or an
+///  - BPFI and its ±f_r, ±2f_r sidebands with inner-race waviness (an amplitude not zero) or an
 ///    inner-race defect;
 ///  - f_r (and k·BPFO ± f_r) with unbalance (m_u e ≠ 0) or those inner-race features;
 ///  - BSF with a ball defect.
