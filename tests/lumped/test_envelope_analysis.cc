@@ -85,6 +85,10 @@ TEST(FaultFamily, FromLabels) {
   for (const char* l : {"", "fr", "2xfr", "FTF", "12xFTF", "BPFO+fr", "BPFI+FTF", "BSF-fr", "xBPFO",
                         "3BPFO", "BPFI+", "BPFIX"})
     EXPECT_EQ(fault_family(l), FaultFamily::none) << l;
+  // A subharmonic of the ball pass (a period-2 or period-3 response of a bearing with clearance)
+  // is no outer-race fault line: a spall strikes at whole multiples of BPFO.
+  for (const char* l : {"1/2xBPFO", "5/2xBPFO", "4/3xBPFO", "7/4xBPFO"})
+    EXPECT_EQ(fault_family(l), FaultFamily::none) << l;
 }
 
 TEST(Diagnosis, ImpactsAtBpfoAreAnOuterRaceFault) {

@@ -503,17 +503,22 @@ TEST(SignalPeaks, NearestNameWinsAndTiesGoToTheLowerHarmonicThenTheEarlierName) 
 }
 
 TEST(SignalPeaks, NamesUpToTheBandCoverEveryHarmonicBelowIt) {
-  const auto names = bearing_frequency_names_up_to(1000, 50, 0, 153.6, 0, 0);
-  int fr = 0, bpfo = 0;
-  for (const auto& n : names) {
-    EXPECT_LE(n.frequency, 1000.0) << n.label;
-    (n.label.find("fr") != std::string::npos ? fr : bpfo)++;
-  }
-  EXPECT_EQ(fr, 20);   // 50 … 1000 Hz
-  EXPECT_EQ(bpfo, 6);  // 153.6 … 921.6 Hz
-  EXPECT_EQ(names.back().label, "6xBPFO");
-  EXPECT_EQ(names.back().harmonic, 6);
-  EXPECT_THROW(bearing_frequency_names_up_to(0, 50, 0, 153.6, 0, 0), InputError);
+  // One family at a time (together, shaft and outer add the sidebands k·BPFO ± f_r).
+  const auto up_to_1000 = [](bool LineFamilies::*family) {
+    LineFamilies one;
+    one.*family = true;
+    return bearing_frequency_names_up_to(1000, 50, 0, 153.6, 0, 0, one);
+  };
+  const auto fr = up_to_1000(&LineFamilies::shaft), bpfo = up_to_1000(&LineFamilies::outer);
+  for (const auto& list : {fr, bpfo})
+    for (const auto& n : list) EXPECT_LE(n.frequency, 1000.0) << n.label;
+  EXPECT_EQ(fr.size(), 20u);   // 50 … 1000 Hz
+  EXPECT_EQ(bpfo.size(), 6u);  // 153.6 … 921.6 Hz
+  EXPECT_EQ(fr.back().label, "20xfr");
+  EXPECT_EQ(bpfo.back().label, "6xBPFO");
+  EXPECT_EQ(bpfo.back().harmonic, 6);
+  EXPECT_THROW(bearing_frequency_names_up_to(0, 50, 0, 153.6, 0, 0, LineFamilies::all()),
+               InputError);
 }
 
 TEST(SignalPeaks, OrdersBySizeBreaksTiesByFrequencyAndThresholds) {

@@ -7,15 +7,17 @@ namespace bearing {
 RunSummary analyse(const Response& resp, const BearingFrequencies& f,
                    const AnalysisSettings& settings) {
   RunSummary s;
-  // Every harmonic up to the band (Nyquist), so 8×BPFO is not left to 5×BPFI nearby. The raw
-  // spectra keep the plain families; only the envelope spectra get a fault's sidebands
-  // (fault_frequency_names_up_to): they describe a modulation, which the envelope demodulates,
-  // while in a raw spectrum a high-order line takes the nearest of many names, and with the
-  // sidebands 291 labels of tests/outputs/run_matrix.sh's healthy runs would change, mostly from
-  // a plain harmonic or none to a sideband that merely lies nearer (28xfr → 14xBSF-2FTF, 16xBSF →
-  // 7xBPFI-2fr; 5xBPFO → 8xBSF-2FTF on 10 Hz bins): fault names on bearings without a fault.
-  const auto names =
-      bearing_frequency_names_up_to(0.5 * resp.rate, f.shaft, f.ftf, f.bpfo, f.bpfi, f.bsf);
+  // Every harmonic up to the band (Nyquist), so 8×BPFO is not left to 5×BPFI nearby, of the
+  // families the signal's excitations make (settings.lines): a name from a family the case lacks
+  // (12xFTF on identical balls) would send an analyst after a source that is not there. A fault's
+  // other sidebands (the ball's 2k·BSF ± m·FTF) stay in the envelope spectra, which demodulate
+  // them: in a raw spectrum a high-order line takes the nearest of many names, and with them 291
+  // labels of tests/outputs/run_matrix.sh's healthy runs changed, mostly from a plain harmonic or
+  // none to a sideband that merely lay nearer (28xfr → 14xBSF-2FTF, 5xBPFO → 8xBSF-2FTF on 10 Hz
+  // bins): fault names on bearings without a fault.
+  const auto names = bearing_frequency_names_up_to(0.5 * resp.rate, f.shaft, f.ftf, f.bpfo, f.bpfi,
+                                                   f.bsf, settings.lines);
+  s.peak_families = settings.lines;
   std::unique_ptr<SpectrumPlan> plan;  // one window and FFT table for all channels
   for (const Channel& channel : resp.channels) {
     ChannelSummary ch;

@@ -368,6 +368,9 @@ nlohmann::json summary_json(const Case& c, const SimulationResult& r, const RunS
                        {"label_error", p.label_error}});
     j["peaks"][ch.name] = peaks;
   }
+  // The families the peaks were named after (those the case's excitations make): a peak no
+  // family explains stays unnamed.
+  j["peak_families"] = line_family_names(s.peak_families);
   if (r.quasi_static) {
     // No integrator ran: solver.method, dt and tolerance did not matter.
     const QuasiStaticStats& q = *r.quasi_static;
@@ -473,6 +476,10 @@ std::string summary_text(const Case& c, const SimulationResult& r, const RunSumm
     }
     o << "\n";
   }
+  std::string families;
+  for (const std::string& name : line_family_names(s.peak_families))
+    families += (families.empty() ? "" : ", ") + name;
+  o << "  (peaks named after the case's line families: " << families << ")\n";
   o << envelope_text(s);
   if (r.quasi_static)
     std::snprintf(buf, sizeof buf,

@@ -3,6 +3,7 @@
 #include "bearing/simulation.h"
 
 #include "bearing/errors.h"
+#include "bearing/excitation_families.h"
 #include "bearing/models/three_dof.h"
 
 namespace bearing {
@@ -50,6 +51,7 @@ RunSettings run_settings(const Case& c) {
   s.analysis.window = c.output.window;
   s.analysis.peaks = c.output.peaks;
   s.analysis.envelope = c.output.envelope_band;
+  s.analysis.lines = excitation_families(s.kind, s.model);
   s.acoustics = c.acoustics;
   return s;
 }

@@ -16,72 +16,6 @@ namespace bearing {
 
 namespace {
 
-void check_frequency(const char* label, double f) {
-  if (!(std::isfinite(f) && f >= 0))
-    throw InputError(std::string("bearing frequency ") + label + " = " + format_number(f) +
-                     " Hz: must be finite and not negative");
-}
-
-std::string harmonic_name(int h, const char* label) {
-  return (h == 1 ? std::string() : std::to_string(h) + "x") + label;
-}
-
-// How many harmonics of f a family gets: max_harmonic, or those up to max_frequency.
-struct HarmonicRange {
-  int max_harmonic = 0;      ///< > 0: this many
-  double max_frequency = 0;  ///< else: every k·f ≤ max_frequency, at most kMaxPerFamily
-  int count(double f) const {
-    constexpr double kMaxPerFamily = 4096;
-    if (max_harmonic > 0) return max_harmonic;
-    return static_cast<int>(std::min(std::floor(max_frequency / f), kMaxPerFamily));
-  }
-};
-
-void add_harmonics(std::vector<NamedFrequency>& names, const char* label, double f,
-                   HarmonicRange range) {
-  check_frequency(label, f);
-  if (f == 0) return;  // e.g. a shaft at rest: no line to name
-  for (int h = 1; h <= range.count(f); ++h) names.push_back({harmonic_name(h, label), h * f, h});
-}
-
-// The sidebands k·f_c ± m·f_m, m = first … last, of the harmonics k = step, 2·step, … of f_c in
-// `range`: "2xBPFI-fr", "BPFI+2fr", "4xBSF-FTF", …; a lower sideband only where it is above 0.
-// Listed by m, then k (the first sidebands before the second); `harmonic` is the carrier's k.
-void add_sidebands(std::vector<NamedFrequency>& names, const char* carrier, double fc,
-                   const char* modulation, double fm, int first, int last, HarmonicRange range,
-                   int step = 1) {
-  if (!(fc > 0 && fm > 0)) return;
-  for (int m = first; m <= last; ++m) {
-    const std::string offset = (m == 1 ? std::string() : std::to_string(m)) + modulation;
-    for (int k = step; k <= range.count(fc); k += step) {
-      const std::string base = harmonic_name(k, carrier);
-      if (k * fc - m * fm > 0) names.push_back({base + "-" + offset, k * fc - m * fm, k});
-      names.push_back({base + "+" + offset, k * fc + m * fm, k});
-    }
-  }
-}
-
-std::vector<NamedFrequency> names_of(double shaft, double ftf, double bpfo, double bpfi, double bsf,
-                                     HarmonicRange range, bool faults = false) {
-  std::vector<NamedFrequency> names;
-  add_harmonics(names, "fr", shaft, range);
-  add_harmonics(names, "FTF", ftf, range);
-  add_harmonics(names, "BPFO", bpfo, range);
-  add_harmonics(names, "BPFI", bpfi, range);
-  add_harmonics(names, "BSF", bsf, range);
-  // The inner race turns with the shaft, so its lines come with shaft-rate sidebands
-  // k·BPFI ± f_r (e.g. inner-race waviness under a fixed load zone). Listed after the plain
-  // harmonics: a tie goes to the simpler name.
-  add_sidebands(names, "BPFI", bpfi, "fr", shaft, 1, 1, range);
-  if (!faults) return names;
-  // A local fault's lines (the envelope's): an inner-race defect turns through the load zone once
-  // per shaft turn, k·BPFI ± 2f_r too; a ball defect strikes both races, twice per spin (2k·BSF),
-  // and is carried through the load zone by the cage (± m·FTF).
-  add_sidebands(names, "BPFI", bpfi, "fr", shaft, 2, 2, range);
-  add_sidebands(names, "BSF", bsf, "FTF", ftf, 1, 2, range, 2);
-  return names;
-}
-
 // Offset δ ∈ [−½, ½] of the vertex of the parabola through (−1, a), (0, b), (1, c), for b a local
 // maximum (b > a, b ≥ c). Fitted to log amplitudes when all three are positive: a windowed tone's
 // main lobe is closer to a Gaussian than to a parabola, which cuts the worst bias for the Hann
@@ -94,7 +28,7 @@ double parabola_vertex(double a, double b, double c) {
 }
 
 // The named frequency nearest to f within `tolerance` [Hz], else nullptr. Distances equal to
-// `tie` [Hz] go to the lower harmonic number, then keep the earlier name.
+// `tie` [Hz] go to the lower order k/m, then keep the earlier name.
 const NamedFrequency* nearest_name(double f, double tolerance, double tie,
                                    const std::vector<NamedFrequency>& names) {
   const NamedFrequency* best = nullptr;
@@ -103,39 +37,15 @@ const NamedFrequency* nearest_name(double f, double tolerance, double tie,
     const double d = std::abs(name.frequency - f);
     if (d > tolerance) continue;
     const bool tied = std::abs(d - best_distance) <= tie;
-    if ((!tied && d < best_distance) || (tied && best && name.harmonic < best->harmonic))
-      best = &name, best_distance = d;
+    const bool lower_order =  // k/m < k'/m', in integers
+        best && static_cast<long long>(name.harmonic) * best->subharmonic <
+                    static_cast<long long>(best->harmonic) * name.subharmonic;
+    if ((!tied && d < best_distance) || (tied && lower_order)) best = &name, best_distance = d;
   }
   return best;
 }
 
 }  // namespace
-
-std::vector<NamedFrequency> bearing_frequency_names(double shaft, double ftf, double bpfo,
-                                                    double bpfi, double bsf, int max_harmonic) {
-  if (max_harmonic < 1)
-    throw InputError("bearing frequency names: max_harmonic = " + std::to_string(max_harmonic) +
-                     ": must be at least 1");
-  return names_of(shaft, ftf, bpfo, bpfi, bsf, HarmonicRange{max_harmonic, 0});
-}
-
-std::vector<NamedFrequency> bearing_frequency_names_up_to(double max_frequency, double shaft,
-                                                          double ftf, double bpfo, double bpfi,
-                                                          double bsf) {
-  if (!(std::isfinite(max_frequency) && max_frequency > 0))
-    throw InputError("bearing frequency names: band up to " + format_number(max_frequency) +
-                     " Hz: must be positive and finite");
-  return names_of(shaft, ftf, bpfo, bpfi, bsf, HarmonicRange{0, max_frequency});
-}
-
-std::vector<NamedFrequency> fault_frequency_names_up_to(double max_frequency, double shaft,
-                                                        double ftf, double bpfo, double bpfi,
-                                                        double bsf) {
-  if (!(std::isfinite(max_frequency) && max_frequency > 0))
-    throw InputError("fault frequency names: band up to " + format_number(max_frequency) +
-                     " Hz: must be positive and finite");
-  return names_of(shaft, ftf, bpfo, bpfi, bsf, HarmonicRange{0, max_frequency}, true);
-}
 
 std::vector<Peak> find_peaks(const Spectrum& spectrum, const std::vector<NamedFrequency>& names,
                              int max_peaks, double relative_threshold, double tolerance_bins) {

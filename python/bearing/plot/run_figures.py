@@ -94,8 +94,10 @@ def spectrum_figure(run):
             spectrum_axes(ax, f, amplitude, peaks, label="amplitude of " + label,
                           fmax=_frequency_limit(f, amplitude, peaks), gid="spectrum:%s" % name,
                           color="C0" if ring_channel(name)[1] == 0 else "C1")
-            ax.set_title("%s: %d largest peaks (▼), named by bearing frequency"
-                         % (name, len(peaks)))
+            families = run.summary.get("peak_families")
+            ax.set_title("%s: %d largest peaks (▼), named by %s"
+                         % (name, len(peaks), ", ".join(families) if families is not None
+                            else "bearing frequency"))
         for ax in axes[len(channels):]:
             ax.set_visible(False)
         fig.suptitle(run.title("amplitude spectra (window %s, from t = %.3g s)"

@@ -39,7 +39,7 @@ const char* fault_family_text(FaultFamily family);
 
 /// The family a peak label of fault_frequency_names_up_to() belongs to: "BPFO", "3xBPFO" outer;
 /// "BPFI", "2xBPFI-fr", "BPFI+2fr" inner; "BSF", "2xBSF", "4xBSF-FTF" ball; anything else
-/// ("fr", "12xFTF", "", unknown spellings) none.
+/// ("fr", "12xFTF", the raw spectra's subharmonics "5/2xBPFO", "", unknown spellings) none.
 FaultFamily fault_family(const std::string& label);
 
 /// The thresholds of diagnose().

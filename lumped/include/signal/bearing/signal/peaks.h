@@ -1,52 +1,14 @@
 #pragma once
 // Spectral peaks and the bearing frequency each one is nearest to (MODEL.md §7), so a spectrum
-// reads "BPFO 0.31 um, 2xBPFO 0.12 um, …".
+// reads "BPFO 0.31 um, 2xBPFO 0.12 um, …". The names: line_names.h.
 
 #include <string>
 #include <vector>
 
+#include "bearing/signal/line_names.h"
 #include "bearing/signal/spectrum.h"
 
 namespace bearing {
-
-/// A frequency with a label such as "BPFO" or "2xBPFI" [Hz].
-struct NamedFrequency {
-  std::string label;
-  double frequency = 0;  ///< [Hz]
-  int harmonic = 1;      ///< k of k·f (sidebands: of their carrier): a tie goes to the lower k
-};
-
-/// The bearing frequencies and their harmonics 1 … max_harmonic, in this order: "fr", "2xfr", …,
-/// "FTF", "2xFTF", …, "BPFO", …, "BPFI", …, "BSF", … (the fundamental has no "1x" prefix), then
-/// the inner race's shaft-rate sidebands "BPFI-fr", "BPFI+fr", "2xBPFI-fr", … (k·BPFI ± f_r).
-/// Arguments are the plain numbers (shaft rotation, cage, outer- and inner-race ball-pass and
-/// ball-spin frequencies [Hz], e.g. from bearing_frequencies()), so this layer does not depend on
-/// kinematics. A zero frequency (e.g. a stationary shaft) contributes no names.
-/// Throws InputError for a negative or non-finite frequency or max_harmonic < 1.
-std::vector<NamedFrequency> bearing_frequency_names(double shaft, double ftf, double bpfo,
-                                                    double bpfi, double bsf, int max_harmonic = 5);
-
-/// The same families with every harmonic up to `max_frequency` [Hz] (the analysis band, e.g. the
-/// spectrum's Nyquist frequency), at most 4096 per family, so that a line like 8×BPFO is named
-/// as such instead of being left to a lower-order name nearby. Throws as above, and for a
-/// max_frequency that is not positive and finite.
-std::vector<NamedFrequency> bearing_frequency_names_up_to(double max_frequency, double shaft,
-                                                          double ftf, double bpfo, double bpfi,
-                                                          double bsf);
-
-/// bearing_frequency_names_up_to()'s names, then the other lines of local faults, for labelling
-/// envelope spectra: the inner race's second shaft sidebands "BPFI-2fr", "BPFI+2fr",
-/// "2xBPFI-2fr", … (k·BPFI ± 2f_r: a defect on the turning race passes through the load zone once
-/// a shaft turn), then the ball's cage sidebands "2xBSF-FTF", "2xBSF+FTF", "4xBSF-FTF", …,
-/// "2xBSF-2FTF", … (2k·BSF ± m·FTF, m = 1, 2: a ball defect strikes both races once a spin each and
-/// is carried through the load zone by the cage). Same order rule (the simpler names first: a tie
-/// goes to them) and harmonic numbers (a sideband has its carrier's k); k·BSF itself is among the
-/// plain harmonics. Harmonics k·f ≤ max_frequency [Hz], at most 4096 per family; the frequencies
-/// are those of bearing_frequency_names (cage slip included if they include it). Throws as
-/// bearing_frequency_names_up_to().
-std::vector<NamedFrequency> fault_frequency_names_up_to(double max_frequency, double shaft,
-                                                        double ftf, double bpfo, double bpfi,
-                                                        double bsf);
 
 /// A spectral peak and the named frequency it was matched to.
 struct Peak {
@@ -72,9 +34,10 @@ struct Peak {
 /// tolerance_bins × resolution [Hz] (inclusive; default one bin: the refined frequency of a line
 /// is within 0.2 bin of it for every window, so a line's own name is always nearer than that),
 /// else none — a peak near no name stays unlabelled rather than taking a distant one. Names at
-/// the same distance (to 1e-9 bin: 8×FTF and BPFO of the same bearing) go to the lower harmonic
-/// number, then to the earlier one in `names` (for bearing_frequency_names: fr before FTF,
-/// BPFO, BPFI, BSF). label_error = f − the name's frequency.
+/// the same distance (to 1e-9 bin: 8×FTF and BPFO of the same bearing) go to the lower order
+/// harmonic/subharmonic (BPFO before 8xFTF, 1/2xBPFO before 4xFTF), then to the earlier one in
+/// `names` (for bearing_frequency_names: fr before FTF, BPFO, BPFI, BSF). label_error = f − the
+/// name's frequency.
 /// Throws InputError if the spectrum's frequency and amplitude differ in length or its resolution
 /// is not positive, max_peaks < 0, relative_threshold is outside [0, 1] or tolerance_bins < 0.
 /// O(M log M + P·N) for M bins, P peaks and N names.
