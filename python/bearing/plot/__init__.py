@@ -14,10 +14,10 @@ FOLDER is recognised by its files:
   az) with summary.json's labelled peaks; ``envelope`` (with ``output.envelope_band``): the
   envelope spectra (env_ax, env_ay, env_az), peaks, band, spectral kurtosis and diagnosis;
   ``ball_loads`` (with ``output.ball_loads``): Q_j against the ball's angle around the bearing
-  (polar) and in time; ``ball_channels`` (with ``output.ball_approach``, ``ball_motion`` or, for
-  ``balls``, ``ball_dynamics``): each per-ball channel d_j, r_j, vr_j, wb_j, Qo_j, Fi_j, Fo_j of
-  every ball in time; ``spl`` (with ``[acoustics]``): the SPL per microphone (total, ring, balls)
-  and p(t);
+  (polar) and in time; ``ball_channels`` (with ``output.ball_approach``, ``output.ball_motion``
+  or an ``[acoustics]`` ball source, and for ``balls`` ``output.ball_dynamics``): each per-ball
+  channel d_j, r_j, vr_j, wb_j, Qo_j, Fi_j, Fo_j of every ball in time; ``spl`` (with
+  ``[acoustics]``): the SPL per microphone (total, ring, balls) and p(t);
 - a sweep (``bearing-sim sweep --out FOLDER``: ``sweep.csv``) gives ``sweep_<statistic>`` (rms,
   ptp, kurtosis, crest, peak_frequency; one panel per ring channel) and ``sweep_spl``: against the
   varied key as lines (one key), as heat maps (two keys), as points against each key (three and
