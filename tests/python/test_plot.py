@@ -8,10 +8,15 @@ the files exist, are images of the expected size, and the plotted data are the f
                  [--source SOURCE_DIR]
 
 CASE: run (default case: time, orbit, spectrum), run_outputs (envelope, ball loads, acoustics,
-output.format = "npy"), sweep2 (2 x 2: heat maps), sweep1 (one key with acoustics: lines),
-contact_example (examples/seed003_6308_calibration_inner, a committed bearing-fem output),
-contact_fem (a fresh bearing-fem contact run; needs --fem), cli (formats, default --out, errors,
-import without the compiled extension).
+output.format = "npy"), run_3dof (the 3-DOF model with an axial load: z, az in time,
+spectrum and envelope), run_balls (seed 004's ball-DOF model with an axial load and every
+per-ball output: z, az and the ball_channels figure), sweep2 (2 x 2: heat maps), sweep1 (one key
+with acoustics: lines), contact_example (examples/seed003_6308_calibration_inner, a committed
+bearing-fem output), contact_fem (a fresh bearing-fem contact run; needs --fem),
+calibration_example (examples/seed003_6308_calibration.json and its race folders),
+calibration_fem (a fresh bearing-fem calibrate; needs --fem), report (the bearing-verify report's
+figures: verification/plot_figures.py on a figures.json with every panel kind), cli (formats,
+default --out, errors, import without the compiled extension).
 """
 import argparse
 import csv
@@ -76,8 +81,9 @@ def same(a, b):
     return a.shape == b.shape and np.array_equal(a, b)
 
 
-def check_files(plot, out, names, fmt="png"):
-    """Every expected figure file, non-empty, of its size in pixels; nothing else of ours."""
+def check_files(plot, out, names, fmt="png", sizes=None):
+    """Every expected figure file, non-empty, of its size in pixels (SIZES of its name, or
+    `sizes` {name: inches}); nothing else of ours."""
     for name in names:
         path = os.path.join(out, "%s.%s" % (name, fmt))
         exists = os.path.isfile(path) and os.path.getsize(path) > 0
@@ -85,7 +91,8 @@ def check_files(plot, out, names, fmt="png"):
         if not exists:
             continue
         kind = "sweep" if name.startswith("sweep_") else name
-        want = tuple(int(round(v * plot.DPI)) for v in plot.SIZES[kind])
+        inches = (sizes or {}).get(name) or plot.SIZES[kind]
+        want = tuple(int(round(v * plot.DPI)) for v in inches)
         if fmt == "png":
             check(png_size(path) == want, "%s is %s px (want %s)" % (path, png_size(path), want))
         elif fmt == "svg":
@@ -112,7 +119,10 @@ def plot_cli(args, folder, *extra):
 
 # --- runs -------------------------------------------------------------------------------------
 
-def check_run_data(plot, folder, figures, csv_format=True):
+def check_run_data(plot, folder, figures, csv_format=True,
+                   channels=("x", "y", "ax", "ay")):
+    """The time and spectrum figures draw exactly `channels` (the ring channels the model
+    writes: x, y, ax, ay; 3-DOF also z, az), each equal to its file's column."""
     summary = json.load(open(os.path.join(folder, "summary.json")))
     if csv_format:
         response = csv_columns(os.path.join(folder, "response.csv"))
@@ -123,10 +133,13 @@ def check_run_data(plot, folder, figures, csv_format=True):
                                       np.load(os.path.join(folder, stem + ".npy")).T))
         response, spectrum = table("response"), table("spectrum")
     t = response["t"]
-    factor = {c: plot.DISPLAY[summary["channels"][c]["unit"]][1] for c in ("x", "y", "ax", "ay")}
+    factor = {c: plot.DISPLAY[summary["channels"][c]["unit"]][1] for c in channels}
 
     fig = figures["time"]
-    for c in ("x", "y", "ax", "ay"):
+    drawn = sorted(a.get_gid()[5:] for a in fig.findobj(
+        lambda a: (a.get_gid() or "").startswith("time:")))
+    check(drawn == sorted(channels), "time: draws %s (draws %s)" % (sorted(channels), drawn))
+    for c in channels:
         line = artist(fig, "time:" + c)
         check(same(line.get_xydata(), np.column_stack([t, response[c] * factor[c]])),
               "time: %s over the whole record equals the response file" % c)
@@ -151,7 +164,11 @@ def check_run_data(plot, folder, figures, csv_format=True):
           "orbit: the clearance circle's radius is P_d/2 = %.4g µm" % (clearance / 2 * um))
 
     fig = figures["spectrum"]
-    for c in ("x", "y", "ax", "ay"):
+    drawn = sorted(a.get_gid()[9:] for a in fig.findobj(
+        lambda a: (a.get_gid() or "").startswith("spectrum:")
+        and not a.get_gid().endswith(":peaks")))
+    check(drawn == sorted(channels), "spectrum: draws %s (draws %s)" % (sorted(channels), drawn))
+    for c in channels:
         line = artist(fig, "spectrum:" + c)
         check(same(line.get_xydata(), np.column_stack([spectrum["frequency"],
                                                        spectrum[c] * factor[c]])),
@@ -190,9 +207,21 @@ def case_run_outputs(args, plot):
     out = os.path.join(args.work, "run_outputs_plots")
     result = plot_cli(args, folder, "--out", out)
     check(result.returncode == 0, "bearing-plot exits 0 (%s)" % result.stderr.strip())
-    check_files(plot, out, ["time", "orbit", "spectrum", "envelope", "ball_loads", "spl"])
+    # The acoustics' ball source makes run write the ball motion r_j, vr_j: ball_channels.
+    check_files(plot, out, ["time", "orbit", "spectrum", "envelope", "ball_loads", "ball_channels",
+                            "spl"], sizes={"ball_channels": plot.ball_channels_size(1)})
     figures = plot.run_figures(plot.load_run(folder))
     summary, response = check_run_data(plot, folder, figures)
+    for name, factor in [("r%d" % j, 1e6) for j in range(1, 9)] + [("vr%d" % j, 1e3)
+                                                                   for j in range(1, 9)]:
+        line = artist(figures["ball_channels"], "ball_channels:" + name).get_xydata()
+        n = len(line)
+        check(n > 10 and same(line, np.column_stack([response["t"][-n:],
+                                                     response[name][-n:] * factor])),
+              "ball_channels: %s is the end of response.csv's column x %g" % (name, factor))
+    drawn = figures["ball_channels"].findobj(lambda a: (a.get_gid() or "").startswith("ball_"))
+    check(len(drawn) == 16, "ball_channels: r1..r8 and vr1..vr8 and nothing else (%d lines)"
+          % len(drawn))
 
     envelope = csv_columns(os.path.join(folder, "envelope.csv"))
     for c in ("ax", "ay"):
@@ -231,6 +260,93 @@ def case_run_outputs(args, plot):
     run_sim(args, "run", "--out", folder, *SHORT)
     result = plot_cli(args, folder, "--out", out)
     check_files(plot, out, ["time", "orbit", "spectrum"])
+
+
+def check_axial(plot, folder, figures, envelope=False):
+    """z and az: their panels name the axial DOF and its unit; the envelope of az equals
+    envelope.csv."""
+    summary = json.load(open(os.path.join(folder, "summary.json")))
+    for c, unit in (("z", "µm"), ("az", "m/s²")):
+        trace = artist(figures["time"], "time:" + c).axes
+        check(trace.get_ylabel().endswith("$%s$ [%s]" % ("a_z" if c == "az" else "z", unit)),
+              "time: the %s panel's label names it and its unit (%r)" % (c, trace.get_ylabel()))
+        spectrum = artist(figures["spectrum"], "spectrum:" + c).axes
+        check(spectrum.get_title().startswith(c + ":") and unit in spectrum.get_ylabel(),
+              "spectrum: the %s panel is titled %r, label %r"
+              % (c, spectrum.get_title(), spectrum.get_ylabel()))
+    check("axial z" in figures["time"]._suptitle.get_text(), "time: the title names the axial z")
+    check("axial %.4g N" % summary["case"]["axial_load"] in figures["time"]._suptitle.get_text(),
+          "time: the title gives the axial load")
+    if envelope:
+        data = csv_columns(os.path.join(folder, "envelope.csv"))
+        check(same(artist(figures["envelope"], "envelope:az").get_xydata(),
+                   np.column_stack([data["frequency"], data["env_az"]])),
+              "envelope: env_az equals envelope.csv")
+
+
+def case_run_3dof(args, plot):
+    folder = os.path.join(args.work, "run_3dof")
+    # The default 6308 under 20 N radial and 10 N axial (seed 001's 3-DOF case under its 10 N
+    # preload hardly moves in 0.15 s: its y spectrum has no peak to check).
+    run_sim(args, "run", "--out", folder, *SHORT, "--set", "model.kind=3dof",
+            "--set", "operation.axial_load=10N", "--set", "output.envelope_band=auto")
+    result = plot_cli(args, folder)
+    check(result.returncode == 0, "bearing-plot 3-DOF RUN_DIR exits 0 (%s)"
+          % result.stderr.strip())
+    out = os.path.join(folder, "plots")
+    check_files(plot, out, ["time", "orbit", "spectrum", "envelope"],
+                sizes={"time": plot.SIZES["time_axial"],
+                       "spectrum": plot.SIZES["spectrum_axial"]})
+    figures = plot.run_figures(plot.load_run(folder))
+    check_run_data(plot, folder, figures, channels=("x", "y", "z", "ax", "ay", "az"))
+    check_axial(plot, folder, figures, envelope=True)
+
+
+def case_run_balls(args, plot):
+    folder = os.path.join(args.work, "run_balls")
+    run_sim(args, "run", os.path.join(args.source, "examples", "seed004_6304.toml"),
+            "--out", folder, *SHORT, "--set", "operation.axial_load=200N",
+            "--set", "output.ball_loads=true", "--set", "output.ball_approach=true",
+            "--set", "output.ball_motion=true", "--set", "output.ball_dynamics=true")
+    result = plot_cli(args, folder)
+    check(result.returncode == 0, "bearing-plot balls RUN_DIR exits 0 (%s)"
+          % result.stderr.strip())
+    response = csv_columns(os.path.join(folder, "response.csv"))
+    summary = json.load(open(os.path.join(folder, "summary.json")))
+    z = 7  # the 6304
+    families = ["d", "r", "vr", "wb", "Qo", "Fi", "Fo"]
+    check(all("%s%d" % (p, j) in response for p in families + ["Q"] for j in range(1, z + 1)),
+          "the balls run wrote Q, %s for its %d balls" % (", ".join(families), z))
+    out = os.path.join(folder, "plots")
+    check_files(plot, out, ["time", "orbit", "spectrum", "ball_loads", "ball_channels"],
+                sizes={"time": plot.SIZES["time_axial"],
+                       "spectrum": plot.SIZES["spectrum_axial"],
+                       "ball_channels": plot.ball_channels_size(4)})  # 7 panels, 2 a row
+    figures = plot.run_figures(plot.load_run(folder))
+    check_run_data(plot, folder, figures, channels=("x", "y", "z", "ax", "ay", "az"))
+    check_axial(plot, folder, figures)
+    fig = figures["ball_channels"]
+    t = response["t"]
+    # independent of bearing.plot: the SI unit of each family, shown as DISPLAY says
+    units = {"d": "m", "r": "m", "vr": "m/s", "wb": "rad/s", "Qo": "N", "Fi": "N", "Fo": "N"}
+    for p in families:
+        unit = summary["channels"].get(p + "1", {}).get("unit", units[p])
+        check(unit == units[p], "summary.json's unit of %s1 is %s" % (p, units[p]))
+        shown, factor = plot.DISPLAY[unit]
+        for j in range(1, z + 1):
+            line = artist(fig, "ball_channels:%s%d" % (p, j)).get_xydata()
+            n = len(line)
+            check(n > 10 and same(line, np.column_stack([t[-n:], response["%s%d" % (p, j)][-n:]
+                                                         * factor])),
+                  "ball_channels: %s%d is the end of response.csv's column x %g" % (p, j, factor))
+        ax = artist(fig, "ball_channels:%s1" % p).axes
+        check(ax.get_ylabel().endswith("[%s]" % shown) and ax.get_title(),
+              "ball_channels: the %s panel has a title and the unit %s (%r)"
+              % (p, shown, ax.get_ylabel()))
+    span = line[-1, 0] - line[0, 0]
+    want = 2 * plot.BALL_PASSES_ZOOMED / summary["frequencies"]["bpfo"]
+    check(abs(span - want) < 2 / 20000.0, "ball_channels: spans %d ball passes (%.4g s)"
+          % (2 * plot.BALL_PASSES_ZOOMED, span))
 
 
 # --- sweeps -----------------------------------------------------------------------------------
@@ -328,6 +444,217 @@ def case_contact_fem(args, plot):
                     "--cells", "4", "--grading", "3", "--quiet"], check=True,
                    stdout=subprocess.DEVNULL)
     check_contact(args, plot, folder, os.path.join(folder, "plots"))
+
+
+# --- calibration ------------------------------------------------------------------------------
+
+def check_calibration(args, plot, path, out=None, races_present=("inner", "outer")):
+    """bearing-plot on a calibration (its JSON file, or a folder holding it): the figure's data
+    are the JSON's laws and the race folders' force_approach.csv, read here independently."""
+    result = plot_cli(args, path, *(["--out", out] if out else []))
+    check(result.returncode == 0, "bearing-plot %s exits 0 (%s)" % (path, result.stderr.strip()))
+    out = out or (os.path.splitext(path)[0] + "_plots" if os.path.isfile(path)
+                  else os.path.join(path, "plots"))
+    check_files(plot, out, ["calibration"])
+    file = path if os.path.isfile(path) else os.path.join(
+        path, next(f for f in os.listdir(path) if f.endswith(".json")))
+    cal = json.load(open(file))
+    fig = plot.calibration_figure(plot.load_calibration(path))
+    lo, hi = cal["load_range"]
+    for race in ("inner", "outer"):
+        K, n, KH = cal[race]["K"], cal[race]["exponent"], cal[race]["hertz_K"]
+        fit = artist(fig, "calibration:%s:fit" % race)
+        x = fit.get_xdata() / 1e6
+        check(np.allclose(fit.get_ydata(), K * x ** n, rtol=1e-12, atol=0),
+              "calibration %s: the dashed law is the JSON's Q = %.5g delta^%.5g" % (race, K, n))
+        hertz = artist(fig, "calibration:%s:hertz" % race)
+        check(np.allclose(hertz.get_ydata(), KH * (hertz.get_xdata() / 1e6) ** 1.5, rtol=1e-12,
+                          atol=0), "calibration %s: the solid law is Hertz's K_H delta^1.5" % race)
+        ax = fit.axes
+        check(ax.get_xscale() == "log" and ax.get_yscale() == "log"
+              and "[µm]" in ax.get_xlabel() and "[N]" in ax.get_ylabel(),
+              "calibration %s: log axes, approach in µm, force in N" % race)
+        check(ax.get_title().startswith(race + " race: K = %.5g" % K),
+              "calibration %s: the title gives K (%r)" % (race, ax.get_title()))
+        law = artist(fig, "calibration:departure:%s:fit" % race).get_xydata()
+        delta = (law[:, 0] / K) ** (1 / n)
+        check(math.isclose(law[0, 0], lo) and math.isclose(law[-1, 0], hi)
+              and np.allclose(law[:, 1], 100 * (law[:, 0] / (KH * delta ** 1.5) - 1),
+                              rtol=1e-9, atol=1e-12),
+              "calibration %s: the departure of the law from Hertz over %.4g-%.4g N" % (race, lo,
+                                                                                       hi))
+        found = fig.findobj(lambda a: a.get_gid() == "calibration:%s:fe" % race)
+        if race not in races_present:
+            check(not found and "not found" in ax.get_title(),
+                  "calibration %s: no FE points, and the title says the folder is missing" % race)
+            continue
+        curve = csv_columns(os.path.join(os.path.dirname(file), cal[race]["details"],
+                                         "force_approach.csv"))
+        check(len(found) == 1 and same(found[0].get_xydata(), np.column_stack(
+            [curve["approach"] * 1e6, curve["force"]])),
+              "calibration %s: the FE points equal %s/force_approach.csv" % (race,
+                                                                            cal[race]["details"]))
+        points = artist(fig, "calibration:departure:%s:fe" % race).get_xydata()
+        check(same(points[:, 0], curve["force"]) and np.allclose(
+            points[:, 1], 100 * (curve["force"] / (KH * curve["approach"] ** 1.5) - 1),
+            rtol=1e-12, atol=1e-12), "calibration %s: the FE points' departure from Hertz" % race)
+    return fig
+
+
+def copy_calibration(source_json, folder, stem):
+    """The calibration file and its race folders copied into `folder` as STEM.json, STEM_inner,
+    STEM_outer (the details names rewritten): a calibrate output in a scratch place."""
+    os.makedirs(folder, exist_ok=True)
+    cal = json.load(open(source_json))
+    for race in ("inner", "outer"):
+        shutil.copytree(os.path.join(os.path.dirname(source_json), cal[race]["details"]),
+                        os.path.join(folder, "%s_%s" % (stem, race)))
+        cal[race]["details"] = "%s_%s" % (stem, race)
+    path = os.path.join(folder, stem + ".json")
+    json.dump(cal, open(path, "w"), indent=1)
+    return path
+
+
+def case_calibration_example(args, plot):
+    example = os.path.join(args.source, "examples", "seed003_6308_calibration.json")
+    check_calibration(args, plot, example, os.path.join(args.work, "example_plots"))
+    # The default --out of a file DIR/STEM.json is DIR/STEM_plots, beside DIR/STEM_inner, _outer.
+    copy = copy_calibration(example, os.path.join(args.work, "copy"), "cal")
+    check_calibration(args, plot, copy)
+    # A folder holding one calibration (as bearing-verify calibrate writes) is one too.
+    check_calibration(args, plot, os.path.join(args.work, "copy"))
+    # Without a race's folder: the laws alone, and the title says which folder is missing.
+    shutil.rmtree(os.path.join(args.work, "copy", "cal_outer"))
+    check_calibration(args, plot, copy, os.path.join(args.work, "no_outer"),
+                      races_present=("inner",))
+    # A JSON that is not a calibration, and a calibration with a bad K: exit 2, the file named.
+    other = os.path.join(args.source, "examples", "seed003_6308_calibration_inner", "contact.json")
+    result = plot_cli(args, other, "--out", os.path.join(args.work, "bad"))
+    check(result.returncode == 2 and other in result.stderr and "calibration" in result.stderr,
+          "bearing-plot contact.json (not a calibration): exit 2 (%s)" % result.stderr.strip())
+    cal = json.load(open(copy))
+    cal["outer"]["K"] = -1.0
+    json.dump(cal, open(copy, "w"))
+    result = plot_cli(args, copy, "--out", os.path.join(args.work, "bad"))
+    check(result.returncode == 2 and "outer.K" in result.stderr and "-1" in result.stderr,
+          "a calibration with outer.K = -1: exit 2 naming the field (%s)" % result.stderr.strip())
+
+
+def case_calibration_fem(args, plot):
+    if not args.fem:
+        print("SKIP: bearing-fem is not built (BEARING_WITH_FEM=OFF)")
+        sys.exit(77)
+    path = os.path.join(args.work, "cal", "6308.json")
+    subprocess.run([args.fem, "calibrate", os.path.join(args.source, "examples",
+                                                        "seed003_6308.toml"),
+                    "--out", path, "--cells", "4", "--grading", "3", "--quiet"], check=True,
+                   stdout=subprocess.DEVNULL)
+    check_calibration(args, plot, path)
+
+
+# --- the bearing-verify report ----------------------------------------------------------------
+
+REPORT_FIGURES = [  # one per panel kind, in SI as bearing-verify writes them
+    {"name": "series-log", "title": "Energy drift of an undamped run (RK4) against the step",
+     "x_label": "dt [s]", "y_label": "max|E - E0| / max kinetic energy [-]", "log_x": True,
+     "log_y": True, "panel": "series", "laws": [],
+     "series": [{"label": "measured drift", "x": [2e-5, 1e-5, 5e-6], "y": [1e-6, 6e-8, 4e-9],
+                 "style": "line+marker"},
+                {"label": "RK4 bound", "x": [2e-5, 1e-5, 5e-6], "y": [2e-6, 1.2e-7, 8e-9],
+                 "style": "line"},
+                {"label": "", "x": [1e-5], "y": [3e-7], "style": "marker"}],
+     "markers": [{"x": 1e-5, "label": "dt = 10 us"}]},
+    {"name": "spectrum", "title": "y spectrum: largest line against the reference and the paper",
+     "x_label": "frequency [Hz]", "y_label": "y amplitude [m]", "log_x": False, "log_y": True,
+     "panel": "spectrum", "laws": [],
+     "series": [{"label": "y amplitude", "x": list(range(1, 41)),
+                 "y": [1e-9 if k in (10, 30) else 1e-12 for k in range(1, 41)],
+                 "style": "line"}],
+     "markers": [{"x": 10.0, "label": "reference"}, {"x": 10.4, "label": "paper"}]},
+    {"name": "trace", "title": "Free decay of the 6308 at rest, 300 N, 1 nm release",
+     "x_label": "t [s]", "y_label": "y - y_eq [m]", "log_x": False, "log_y": False,
+     "panel": "trace", "laws": [], "markers": [],
+     "series": [{"label": "closed form", "x": [0.0, 1e-4, 2e-4, 3e-4],
+                 "y": [1e-9, -6e-10, 3e-10, -1e-10], "style": "line"},
+                {"label": "model", "x": [0.0, 1e-4, 2e-4, 3e-4],
+                 "y": [1e-9, -5.9e-10, 3e-10, -1.1e-10], "style": "line"}]},
+    {"name": "force-approach", "title": "6308 inner race: FE block against the lumped law",
+     "x_label": "approach delta [m]", "y_label": "force F [N]", "log_x": True, "log_y": True,
+     "panel": "force_approach", "markers": [],
+     "series": [{"label": "FE Hertz-reduced block", "x": [1.5e-7, 3.7e-7, 6.9e-7],
+                 "y": [2.0, 8.0, 20.1], "style": "marker"}],
+     "laws": [{"label": "lumped exact Hertz", "K": 3.5e10, "exponent": 1.5},
+              {"label": "a second law", "K": 3.6e10, "exponent": 1.502}]},
+]
+
+
+def case_report(args, plot):
+    figures_json = os.path.join(args.work, "figures.json")
+    json.dump(REPORT_FIGURES, open(figures_json, "w"))
+    script = os.path.join(args.source, "verification", "plot_figures.py")
+    # As bearing-verify runs it: Debian's python, no PYTHONPATH (it finds python/ itself).
+    env = {k: v for k, v in os.environ.items() if k != "PYTHONPATH"}
+    result = subprocess.run(["/usr/bin/python3", script, figures_json, args.work], env=env,
+                            capture_output=True, text=True)
+    check(result.returncode == 0, "plot_figures.py exits 0 (%s)" % result.stderr.strip()[-400:])
+    want = tuple(int(round(v * plot.DPI)) for v in plot.SIZES["report"])
+    for spec in REPORT_FIGURES:
+        path = os.path.join(args.work, spec["name"] + ".png")
+        check(png_size(path) == want, "%s is bearing.plot's report size %s px (is %s)"
+              % (path, want, png_size(path)))
+    for spec in REPORT_FIGURES:
+        fig = plot.report_figure(spec)
+        ax = fig.axes[0]
+        name, panel = spec["name"], spec["panel"]
+        check(ax.get_title() == spec["title"], "%s: titled %r" % (name, spec["title"]))
+        if panel == "force_approach":
+            law = spec["laws"]
+            points = artist(fig, "report:fe").get_xydata()
+            check(same(points, np.column_stack([np.array(spec["series"][0]["x"]) * 1e6,
+                                                spec["series"][0]["y"]])),
+                  "%s: the points are the series (approach in µm)" % name)
+            for gid, (K, n) in (("report:hertz", (law[0]["K"], law[0]["exponent"])),
+                                ("report:fit", (law[1]["K"], law[1]["exponent"]))):
+                line = artist(fig, gid)
+                check(np.allclose(line.get_ydata(), K * (line.get_xdata() / 1e6) ** n,
+                                  rtol=1e-12, atol=0), "%s: %s is Q = %g delta^%g" % (name, gid,
+                                                                                     K, n))
+            legend = [t.get_text() for t in ax.get_legend().get_texts()]
+            check(legend[0] == "FE Hertz-reduced block" and legend[1].startswith(
+                "lumped exact Hertz") and legend[2].startswith("a second law"),
+                  "%s: the legend names the points and the laws (%s)" % (name, legend))
+            check("[µm]" in ax.get_xlabel() and "[N]" in ax.get_ylabel(),
+                  "%s: approach in µm, force in N" % name)
+            continue
+        # series, spectrum, trace: every series' data (y in display units for the vibration
+        # panels: m -> µm), in order
+        factor = 1e6 if panel in ("spectrum", "trace") else 1.0
+        for i, s in enumerate(spec["series"]):
+            check(same(artist(fig, "report:%d" % i).get_xydata(),
+                       np.column_stack([s["x"], np.array(s["y"]) * factor])),
+                  "%s: series %d (%s) is the spec's x, y x %g" % (name, i, s["label"], factor))
+        check(ax.get_xlabel() == spec["x_label"], "%s: x label %r" % (name, spec["x_label"]))
+        ylabel = spec["y_label"].replace("[m]", "[µm]")
+        check(ax.get_ylabel() == ylabel, "%s: y label %r (is %r)" % (name, ylabel,
+                                                                    ax.get_ylabel()))
+        check(ax.get_xscale() == ("log" if spec["log_x"] else "linear")
+              and ax.get_yscale() == ("log" if spec["log_y"] else "linear"),
+              "%s: the axes' scales are the spec's" % name)
+        for m in spec["markers"]:
+            line = artist(fig, "report:line:" + m["label"])
+            check(same(line.get_xdata(), [m["x"], m["x"]])
+                  and m["label"] in [t.get_text() for t in ax.texts],
+                  "%s: a vertical line at %g named %r" % (name, m["x"], m["label"]))
+        labelled = [s["label"] for s in spec["series"] if s["label"]]
+        if panel == "spectrum" and len(spec["series"]) == 1:
+            labelled = []  # one spectrum: its y label names it
+        legend = [t.get_text() for t in ax.get_legend().get_texts()] if ax.get_legend() else []
+        check(legend == labelled, "%s: the legend is %s (is %s)" % (name, labelled, legend))
+    try:
+        plot.report_figure(dict(REPORT_FIGURES[0], panel="pie"))
+        check(False, "an unknown panel is refused")
+    except plot.FolderError as e:
+        check("pie" in str(e) and "series" in str(e), "an unknown panel is refused: %s" % e)
 
 
 # --- command line -----------------------------------------------------------------------------

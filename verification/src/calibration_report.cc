@@ -104,7 +104,8 @@ Figure spectrum_figure(const CalibrationStudy& s) {
            false,
            true,
            {},
-           {}};
+           {},
+           Panel::spectrum};
   for (const auto& r : s.responses) {
     for (std::size_t k = 0; k < r.summary.spectrum_channels.size(); ++k) {
       if (r.summary.spectrum_channels[k] != "y") continue;

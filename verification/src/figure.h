@@ -1,6 +1,7 @@
 #pragma once
 // A figure a check hands to the report: data only. The report writes every figure's data to
-// figures/figures.json and plot_figures.py draws them with Debian's matplotlib.
+// figures/figures.json and plot_figures.py draws them with bearing.plot's panels (the functions
+// bearing-plot draws with; python/bearing/plot/report_figures.py) and Debian's matplotlib.
 
 #include <string>
 #include <vector>
@@ -20,6 +21,20 @@ struct Marker {
   std::string label;
 };
 
+/// A power law Q = K δ^n drawn as a line by the force_approach panel.
+struct PowerLaw {
+  std::string label;
+  double K = 0.0;         ///< [N/m^n]
+  double exponent = 1.5;  ///< n [-]
+};
+
+/// The bearing.plot panel that draws a figure (report_figures.py): series (lines and points, the
+/// markers as labelled vertical lines); spectrum (amplitude spectra, spectrum_axes: x frequency
+/// [Hz], the markers the expected lines); trace (time traces, trace_axes: x time [s]);
+/// force_approach (force_approach_axes: series[0] the points, approach [m] and force [N];
+/// laws[0] drawn solid, laws[1] dashed).
+enum class Panel { series, spectrum, trace, force_approach };
+
 struct Figure {
   std::string name;  ///< file stem, unique in a report: letters, digits, '-', '_'
   std::string title;
@@ -29,6 +44,8 @@ struct Figure {
   bool log_y = false;
   std::vector<Series> series;
   std::vector<Marker> markers;
+  Panel panel = Panel::series;
+  std::vector<PowerLaw> laws;  ///< force_approach only
 };
 
 }  // namespace bearing::verify

@@ -10,14 +10,33 @@ namespace fs = std::filesystem;
 
 namespace {
 
+const char* panel_name(Panel p) {
+  switch (p) {
+    case Panel::spectrum:
+      return "spectrum";
+    case Panel::trace:
+      return "trace";
+    case Panel::force_approach:
+      return "force_approach";
+    case Panel::series:
+      break;
+  }
+  return "series";
+}
+
 nlohmann::json figure_json(const Figure& f) {
   nlohmann::json series = nlohmann::json::array();
   for (const auto& s : f.series)
     series.push_back({{"label", s.label}, {"x", s.x}, {"y", s.y}, {"style", s.style}});
   nlohmann::json markers = nlohmann::json::array();
   for (const auto& m : f.markers) markers.push_back({{"x", m.x}, {"label", m.label}});
-  return {{"name", f.name},   {"title", f.title}, {"x_label", f.x_label}, {"y_label", f.y_label},
-          {"log_x", f.log_x}, {"log_y", f.log_y}, {"series", series},     {"markers", markers}};
+  nlohmann::json laws = nlohmann::json::array();
+  for (const auto& l : f.laws)
+    laws.push_back({{"label", l.label}, {"K", l.K}, {"exponent", l.exponent}});
+  return {{"name", f.name},       {"title", f.title},   {"x_label", f.x_label},
+          {"y_label", f.y_label}, {"log_x", f.log_x},   {"log_y", f.log_y},
+          {"series", series},     {"markers", markers}, {"panel", panel_name(f.panel)},
+          {"laws", laws}};
 }
 
 }  // namespace

@@ -1,37 +1,52 @@
-"""Figures of bearing-sim runs and sweeps and of bearing-fem contact outputs.
+"""Figures of bearing-sim runs and sweeps, of bearing-fem contact and calibrate outputs, and of
+the bearing-verify report.
 
-    bearing-plot FOLDER [--out DIR] [--format png|svg|pdf]
+    bearing-plot FOLDER|CALIBRATION.json [--out DIR] [--format png|svg|pdf]
     /usr/bin/python3 -m bearing.plot FOLDER [...]        (with PYTHONPATH=build/python)
 
 FOLDER is recognised by its files:
 
 - a run (``bearing-sim run --out FOLDER``: ``summary.json`` and ``response.csv`` or
-  ``response.npy``) gives ``time``: x, y, ax, ay over the whole record (transient shaded) and over
-  the last four ball passes (dotted: a ball on the load line); ``orbit``: the inner-ring centre in
-  the x-y plane with the clearance circle (radius P_d/2); ``spectrum``: the amplitude spectra of
-  x, y, ax, ay with summary.json's labelled peaks; ``envelope`` (with ``output.envelope_band``):
-  the envelope spectra, peaks, band, spectral kurtosis and diagnosis; ``ball_loads`` (with
-  ``output.ball_loads``): Q_j against the ball's angle around the bearing (polar) and in time;
-  ``spl`` (with ``[acoustics]``): the SPL per microphone (total, ring, balls) and p(t);
+  ``response.npy``) gives ``time``: x, y, ax, ay (3-DOF, and balls with an axial load: also the
+  axial z, az) over the whole record (transient shaded) and over the last four ball passes
+  (dotted: a ball on the load line); ``orbit``: the inner-ring centre in the x-y plane with the
+  clearance circle (radius P_d/2); ``spectrum``: the amplitude spectra of x, y, ax, ay (and z,
+  az) with summary.json's labelled peaks; ``envelope`` (with ``output.envelope_band``): the
+  envelope spectra (env_ax, env_ay, env_az), peaks, band, spectral kurtosis and diagnosis;
+  ``ball_loads`` (with ``output.ball_loads``): Q_j against the ball's angle around the bearing
+  (polar) and in time; ``ball_channels`` (with ``output.ball_approach``, ``output.ball_motion``
+  or an ``[acoustics]`` ball source, and for ``balls`` ``output.ball_dynamics``): each per-ball
+  channel d_j, r_j, vr_j, wb_j, Qo_j, Fi_j, Fo_j of every ball in time; ``spl`` (with
+  ``[acoustics]``): the SPL per microphone (total, ring, balls) and p(t);
 - a sweep (``bearing-sim sweep --out FOLDER``: ``sweep.csv``) gives ``sweep_<statistic>`` (rms,
   ptp, kurtosis, crest, peak_frequency; one panel per ring channel) and ``sweep_spl``: against the
   varied key as lines (one key), as heat maps (two keys), as points against each key (three and
   more);
 - a contact output (``bearing-fem contact --out FOLDER``: ``force_approach.csv`` and
   ``contact.json``) gives ``force_approach``: the FE force against the approach on log axes with
-  the Hertz law, and the FE/Hertz deviation of force, semi-axes and peak pressure per step.
+  the Hertz law, and the FE/Hertz deviation of force, semi-axes and peak pressure per step;
+- a calibration (``bearing-fem calibrate CASE --out DIR/STEM.json``: the JSON file, or a folder
+  holding one, e.g. ``bearing-verify calibrate``'s) gives ``calibration``: per race the FE force
+  against approach (from the race folder DIR/STEM_inner, _outer when it is there) with the
+  calibrated Q = K delta^n and Hertz's law, and below both laws' and the FE points' departure
+  from Hertz against the load.
 
-The figures go to ``FOLDER/plots/`` unless ``--out`` says otherwise; a figure of the same name and
-format an earlier call left there and this folder no longer gives (e.g. ``spl`` after a rerun
-without acoustics) is removed. Exit status: 0 written, 2 the folder is none of the above.
+The figures go to ``FOLDER/plots/`` (for ``DIR/STEM.json``: ``DIR/STEM_plots/``) unless
+``--out`` says otherwise; a figure of the same name and format an earlier call left there and
+this folder no longer gives (e.g. ``spl`` after a rerun without acoustics) is removed. Exit
+status: 0 written, 2 the folder (or file) is none of the above.
 
-Library use (the verification report draws with the same functions): ``load_run(folder)``,
-``run_figures(run)`` (name -> matplotlib Figure), ``sweep_figures(load_sweep(folder))``,
-``contact_figure(load_contact(folder))``, ``plot_folder(folder, out, fmt)``; and the panel
+Library use: ``load_run(folder)``, ``run_figures(run)`` (name -> matplotlib Figure),
+``sweep_figures(load_sweep(folder))``, ``contact_figure(load_contact(folder))``,
+``calibration_figure(load_calibration(path))``, ``plot_folder(folder, out, fmt)``; and the panel
 functions ``trace_axes``, ``orbit_axes``, ``spectrum_axes``, ``ball_load_axes``, ``spl_axes``,
-``force_approach_axes``, ``sweep_line_axes``, ``sweep_heatmap_axes`` that draw plain NumPy arrays
-on a given Axes. Only NumPy and matplotlib are used (no compiled extension). Every data artist
-carries a gid (``"spectrum:ay"``, ``"orbit"``, ...) so a test can read the plotted values back.
+``force_approach_axes``, ``series_axes``, ``mark_lines``, ``sweep_line_axes``,
+``sweep_heatmap_axes`` that draw plain NumPy arrays on a given Axes. The bearing-verify report
+draws its figures with these panels too: ``report_figure(spec)`` for one entry of its
+figures.json, ``draw_report_figures(figures_json, out_dir)`` (called by
+verification/plot_figures.py). Only NumPy and matplotlib are used (no compiled extension).
+Every data artist carries a gid (``"spectrum:ay"``, ``"orbit"``, ...) so a test can read the
+plotted values back.
 
 Units: the data are the files' SI values times the display factor of ``DISPLAY`` (m -> um,
 m/s -> mm/s, rad/s -> rpm, ...), written on every axis.
@@ -47,18 +62,22 @@ except ImportError as _error:  # pragma: no cover - depends on the machine
 
 from .common import (  # noqa: F401
     BALL_PASSES_ZOOMED, DISPLAY, DPI, FORMATS, FolderError, QUANTITY, RING_UNITS, SIZES,
-    STATISTICS, STATISTIC_NAMES, STYLE, channel_label, channel_unit, load_line_passes,
-    ring_channel)
+    STATISTICS, STATISTIC_NAMES, STYLE, ball_channels_size, channel_label, channel_unit,
+    load_line_passes, ring_channel)
 from .folders import (  # noqa: F401
-    Contact, Run, Sweep, Table, case_name, case_parameters, detect, load_contact, load_run,
-    load_sweep, read_table)
+    CALIBRATION_FORMAT, Calibration, Contact, Run, Sweep, Table, calibration_file, case_name,
+    case_parameters, detect, load_calibration, load_contact, load_run, load_sweep, read_table)
 from .panels import (  # noqa: F401
-    ball_load_axes, force_approach_axes, label_peaks, orbit_axes, plain_log_ticks,
-    spectrum_axes, spl_axes, sweep_heatmap_axes, sweep_line_axes, trace_axes)
+    ball_load_axes, force_approach_axes, label_peaks, mark_lines, orbit_axes, plain_log_ticks,
+    series_axes, spectrum_axes, spl_axes, sweep_heatmap_axes, sweep_line_axes, trace_axes)
 from .run_figures import (  # noqa: F401
-    ball_angles, ball_load_figure, envelope_figure, orbit_figure, run_figures, spectrum_figure,
-    spl_figure, time_figure)
+    BALL_CHANNELS, RING_DRAWN, ball_angles, ball_channel_families, ball_channel_figure,
+    ball_load_figure, envelope_figure, orbit_figure, run_figures, spectrum_figure, spl_figure,
+    time_figure)
 from .sweep_figures import (  # noqa: F401
     STATISTIC_SHORT, channel_title, key_display, statistic_display, sweep_figures)
 from .contact_figure import contact_figure  # noqa: F401
-from .cli import KNOWN_NAMES, figures_of, main, plot_folder, save  # noqa: F401
+from .calibration_figure import calibration_figure  # noqa: F401
+from .cli import KNOWN_NAMES, default_out, figures_of, main, plot_folder, save  # noqa: F401
+from .report_figures import (  # noqa: F401
+    PANELS, display_label, draw_report_figures, report_figure)

@@ -7,26 +7,39 @@ import sys
 from matplotlib.figure import Figure
 
 from .common import DPI, FORMATS, FolderError, STATISTICS
-from .folders import detect, load_contact, load_run, load_sweep
+from .folders import detect, load_calibration, load_contact, load_run, load_sweep
 from .run_figures import run_figures
 from .sweep_figures import sweep_figures
 from .contact_figure import contact_figure
+from .calibration_figure import calibration_figure
 
 
 # --- folders and the command line ------------------------------------------------------------
 
-KNOWN_NAMES = ("time", "orbit", "spectrum", "envelope", "ball_loads", "spl", "force_approach",
-               "sweep_spl") + tuple("sweep_" + s for s in STATISTICS)
+KNOWN_NAMES = ("time", "orbit", "spectrum", "envelope", "ball_loads", "ball_channels", "spl",
+               "force_approach", "calibration", "sweep_spl") + tuple("sweep_" + s
+                                                                    for s in STATISTICS)
 
 
 def figures_of(folder):
-    """(kind, name -> Figure) of a run, sweep or contact folder."""
+    """(kind, name -> Figure) of a run, sweep or contact folder or a calibration (file or
+    folder)."""
     kind = detect(folder)
     if kind == "run":
         return kind, run_figures(load_run(folder))
     if kind == "sweep":
         return kind, sweep_figures(load_sweep(folder))
+    if kind == "calibration":
+        return kind, {"calibration": calibration_figure(load_calibration(folder))}
     return kind, {"force_approach": contact_figure(load_contact(folder))}
+
+
+def default_out(folder):
+    """FOLDER/plots; for a calibration named by its file DIR/STEM.json, DIR/STEM_plots (beside
+    the race folders DIR/STEM_inner, DIR/STEM_outer bearing-fem writes)."""
+    if os.path.isfile(folder):
+        return os.path.splitext(folder)[0] + "_plots"
+    return os.path.join(folder, "plots")
 
 
 def save(fig, path):
@@ -35,11 +48,11 @@ def save(fig, path):
 
 
 def plot_folder(folder, out=None, fmt="png"):
-    """Writes the folder's figures to `out` (default FOLDER/plots); returns the paths written."""
+    """Writes the folder's figures to `out` (default: default_out); returns the paths written."""
     if fmt not in FORMATS:
         raise FolderError("format %r: expected one of %s" % (fmt, ", ".join(FORMATS)))
     kind, figures = figures_of(folder)
-    out = out or os.path.join(folder, "plots")
+    out = out or default_out(folder)
     os.makedirs(out, exist_ok=True)
     written = []
     for name, fig in figures.items():
@@ -59,12 +72,15 @@ def plot_folder(folder, out=None, fmt="png"):
 def main(argv=None):
     parser = argparse.ArgumentParser(
         prog="bearing-plot",
-        description="Figures (PNG, SVG or PDF) of a bearing-sim run or sweep folder or of a "
-                    "bearing-fem contact output; the kind is recognised from the files.",
-        epilog="Run: time, orbit, spectrum, and with their outputs envelope, ball_loads, spl. "
-               "Sweep: sweep_<statistic>, sweep_spl. Contact: force_approach.")
-    parser.add_argument("folder", metavar="RUN_DIR|SWEEP_DIR|CONTACT_DIR")
-    parser.add_argument("--out", metavar="DIR", help="where the figures go (default FOLDER/plots)")
+        description="Figures (PNG, SVG or PDF) of a bearing-sim run or sweep folder, of a "
+                    "bearing-fem contact output or of a bearing-fem calibration; the kind is "
+                    "recognised from the files.",
+        epilog="Run: time, orbit, spectrum, and with their outputs envelope, ball_loads, "
+               "ball_channels, spl (a 3-DOF run adds z and az to time and spectrum). Sweep: "
+               "sweep_<statistic>, sweep_spl. Contact: force_approach. Calibration: calibration.")
+    parser.add_argument("folder", metavar="RUN_DIR|SWEEP_DIR|CONTACT_DIR|CALIBRATION.json")
+    parser.add_argument("--out", metavar="DIR", help="where the figures go (default FOLDER/plots; "
+                        "for DIR/STEM.json, DIR/STEM_plots)")
     parser.add_argument("--format", choices=FORMATS, default="png", help="file format (png)")
     parser.add_argument("--quiet", action="store_true", help="print nothing on success")
     args = parser.parse_args(argv)

@@ -11,13 +11,17 @@ DPI = 100
 # Figure sizes in inches; the files are these times DPI pixels.
 SIZES = {
     "time": (13.0, 9.0),
+    "time_axial": (13.0, 12.5),  # 3-DOF (and balls with an axial load): z and az added
     "orbit": (13.0, 6.6),
     "spectrum": (13.0, 8.5),
+    "spectrum_axial": (15.0, 8.5),
     "envelope": (13.0, 7.0),
     "ball_loads": (13.0, 6.2),
     "spl": (13.0, 5.6),
     "sweep": (13.0, 8.5),
     "force_approach": (13.0, 5.8),
+    "calibration": (13.0, 10.0),
+    "report": (7.0, 4.4),  # one panel of the verification report (bearing-verify)
 }
 FORMATS = ("png", "svg", "pdf")
 STYLE = {
@@ -83,7 +87,9 @@ def channel_unit(name, summary=None):
     ring = ring_channel(name)
     if ring:
         return RING_UNITS[ring[1]]
-    return {"Q": "N", "d": "m", "r": "m"}.get(name[:1], "1")
+    prefix = name.rstrip("0123456789")
+    return {"Q": "N", "Qo": "N", "Fi": "N", "Fo": "N", "d": "m", "r": "m", "vr": "m/s",
+            "wb": "rad/s"}.get(prefix, "1")
 
 
 def channel_label(name, summary=None):
@@ -138,6 +144,22 @@ def load_line_passes(summary, t0, t1):
     m1 = math.ceil(max(sign * t0, sign * t1) * ftf * balls - phase * balls) + 1
     times = sign * (phase + np.arange(m0, m1 + 1) / balls) / ftf
     return np.sort(times[(times >= t0) & (times <= t1)])
+
+
+def ball_channels_size(rows):
+    """The ball_channels figure's size in inches: its rows of panels (two per row)."""
+    return (13.0, 1.6 + 2.7 * rows)
+
+
+def _wrap(text, width):
+    words, lines, line = text.split(), [], ""
+    for w in words:
+        if line and len(line) + 1 + len(w) > width:
+            lines.append(line)
+            line = w
+        else:
+            line = (line + " " + w).strip()
+    return "\n".join(lines + [line])
 
 
 def _new_figure(kind):

@@ -251,8 +251,83 @@ class Contact:
         return "%s (%s)" % (stem, base) if stem and stem != base else base
 
 
+CALIBRATION_FORMAT = "bearing-fem calibration 1"
+
+
+class Calibration:
+    """A `bearing-fem calibrate CASE --out FILE.json` output: the file (both races' fitted
+    Q = K delta^n) and, when present beside it, each race's contact folder (FILE's `details`:
+    <stem>_inner/, <stem>_outer/ with force_approach.csv and contact.json)."""
+
+    RACES = ("inner", "outer")
+
+    def __init__(self, path):
+        self.path = path
+        self.json = _read_json(path)
+        if self.json.get("format") != CALIBRATION_FORMAT:
+            raise FolderError("%s: not a bearing-fem calibration (format %r, expected %r)"
+                              % (path, self.json.get("format"), CALIBRATION_FORMAT))
+        for race in self.RACES:
+            law = self.json.get(race, {})
+            for key in ("K", "exponent", "hertz_K"):
+                if not isinstance(law.get(key), (int, float)) or not law[key] > 0:
+                    raise FolderError("%s: %s.%s is %r, expected a positive number"
+                                      % (path, race, key, law.get(key)))
+        self.contacts = {}  # race -> Contact, for the races whose folder is there
+        self.missing = {}  # race -> the folder looked for
+        here = os.path.dirname(os.path.abspath(path))
+        for race in self.RACES:
+            details = self.json[race].get("details", "")
+            folder = os.path.join(here, details) if details else ""
+            if folder and os.path.isfile(os.path.join(folder, "force_approach.csv")):
+                self.contacts[race] = Contact(folder)
+            else:
+                self.missing[race] = folder or "(no details folder named)"
+
+    def law(self, race):
+        """(K [N/m^n], n) of the race's calibrated law."""
+        return self.json[race]["K"], self.json[race]["exponent"]
+
+    @property
+    def load_range(self):
+        """[lowest, highest] ball load [N] the laws were fitted over."""
+        return [float(v) for v in self.json.get("load_range", [])]
+
+    @property
+    def name(self):
+        return os.path.splitext(os.path.basename(self.path))[0]
+
+
+def calibration_file(path):
+    """The calibration JSON a path names: the file itself, or the one such file in a folder
+    (bearing-verify calibrate's DIR/calibration.json); None if there is none."""
+    if os.path.isfile(path):
+        return path if path.endswith(".json") and _is_calibration(path) else None
+    found = [os.path.join(path, f) for f in sorted(os.listdir(path))
+             if f.endswith(".json") and _is_calibration(os.path.join(path, f))]
+    if len(found) > 1:
+        raise FolderError("%s holds %d bearing-fem calibrations (%s): plot one of the files"
+                          % (path, len(found), ", ".join(os.path.basename(f) for f in found)))
+    return found[0] if found else None
+
+
+def _is_calibration(path):
+    try:
+        with open(path) as f:
+            return json.load(f).get("format") == CALIBRATION_FORMAT
+    except (OSError, ValueError, AttributeError):
+        return False
+
+
 def detect(folder):
-    """'run', 'sweep' or 'contact'; FolderError naming the folder and what was expected."""
+    """'run', 'sweep', 'contact' or 'calibration'; FolderError naming the folder and what was
+    expected. A calibration may be named by its JSON file."""
+    if os.path.isfile(folder):
+        if calibration_file(folder):
+            return "calibration"
+        raise FolderError("%s is a file, and not a bearing-fem calibration (a JSON file with "
+                          "\"format\": \"%s\"); the other outputs are plotted by their folder"
+                          % (folder, CALIBRATION_FORMAT))
     if not os.path.isdir(folder):
         raise FolderError("%s: no such folder" % folder)
     has = lambda name: os.path.isfile(os.path.join(folder, name))  # noqa: E731
@@ -262,6 +337,8 @@ def detect(folder):
         return "sweep"
     if has("force_approach.csv") and has("contact.json"):
         return "contact"
+    if calibration_file(folder):
+        return "calibration"
     inside = []
     for sub in sorted(os.listdir(folder)):
         path = os.path.join(folder, sub)
@@ -270,8 +347,9 @@ def detect(folder):
             inside.append(sub)
     raise FolderError(
         "%s is not a folder bearing-plot knows: expected a bearing-sim run (summary.json with "
-        "response.csv or response.npy), a bearing-sim sweep (sweep.csv) or a bearing-fem contact "
-        "output (force_approach.csv with contact.json)%s" % (
+        "response.csv or response.npy), a bearing-sim sweep (sweep.csv), a bearing-fem contact "
+        "output (force_approach.csv with contact.json) or a bearing-fem calibration (its JSON "
+        "file)%s" % (
             folder, "; its subfolders %s are: plot each of them" % ", ".join(inside[:6])
             + (", ..." if len(inside) > 6 else "") if inside else ""))
 
@@ -286,3 +364,11 @@ def load_sweep(folder):
 
 def load_contact(folder):
     return Contact(folder)
+
+
+def load_calibration(path):
+    """A Calibration from its JSON file, or from a folder holding exactly one."""
+    found = calibration_file(path) if os.path.exists(path) else None
+    if not found:
+        raise FolderError("%s: no bearing-fem calibration JSON there" % path)
+    return Calibration(found)

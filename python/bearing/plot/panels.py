@@ -9,6 +9,19 @@ from matplotlib.patches import Circle
 
 # --- panels (plain arrays on a given Axes; reused by the verification report) ----------------
 
+def _spread(want, spacing, right=0.99):
+    """Positions (axes fractions, ascending) at least `spacing` apart, each as near its wanted
+    place as that allows: pushed right, then back left from the right edge."""
+    xs = list(want)
+    for i in range(1, len(xs)):
+        xs[i] = max(xs[i], xs[i - 1] + spacing)
+    if xs:
+        xs[-1] = min(xs[-1], right)
+    for i in range(len(xs) - 2, -1, -1):
+        xs[i] = min(xs[i], xs[i + 1] - spacing)
+    return xs
+
+
 def label_peaks(ax, peaks, fmax, spacing=0.028, y=0.985):
     """Names the peaks (dicts with frequency, amplitude, label) in a row of vertical labels along
     the top of the axes, spread to at least `spacing` (axes fraction) apart, each joined to its
@@ -16,20 +29,36 @@ def label_peaks(ax, peaks, fmax, spacing=0.028, y=0.985):
     peaks = sorted(peaks, key=lambda p: p["frequency"])
     if not peaks:
         return
-    want = [min(max(p["frequency"] / fmax, 0.0), 1.0) for p in peaks]
     spacing = min(spacing, 0.96 / len(peaks))
-    xs = list(want)
-    for i in range(1, len(xs)):  # push right
-        xs[i] = max(xs[i], xs[i - 1] + spacing)
-    xs[-1] = min(xs[-1], 0.99)
-    for i in range(len(xs) - 2, -1, -1):  # and back left from the right edge
-        xs[i] = min(xs[i], xs[i + 1] - spacing)
+    xs = _spread([min(max(p["frequency"] / fmax, 0.0), 1.0) for p in peaks], spacing)
     for i, p in enumerate(peaks):
         ax.annotate(p["label"], xy=(p["frequency"], p["amplitude"]), xycoords="data",
                     xytext=(xs[i], y), textcoords="axes fraction", rotation=90, ha="center",
                     va="top", fontsize=8.5, color="C3",
                     arrowprops=dict(arrowstyle="-", color="C3", lw=0.5, alpha=0.6,
                                     shrinkA=1, shrinkB=4))
+
+
+def mark_lines(ax, lines, spacing=0.03, gid=None):
+    """Labelled vertical lines at given x (dicts with x and label: an expected spectral line, a
+    limit): dashed grey, each label written upwards along the top of the axes just right of its
+    line, spread apart as label_peaks does. Call after the axes' x limits are set."""
+    lines = sorted(lines, key=lambda m: m["x"])
+    if not lines:
+        return
+    for m in lines:
+        drawn = ax.axvline(m["x"], color="0.35", lw=0.9, ls="--", zorder=1)
+        if gid:
+            drawn.set_gid("%s:%s" % (gid, m["label"]))
+    lo, hi = ax.get_xlim()
+    to_axes = (lambda v: (math.log10(v) - math.log10(lo)) / (math.log10(hi) - math.log10(lo))) \
+        if ax.get_xscale() == "log" else (lambda v: (v - lo) / (hi - lo))
+    spacing = min(spacing, 0.96 / len(lines))
+    xs = _spread([min(max(to_axes(m["x"]) + 0.012, 0.0), 1.0) for m in lines], spacing)
+    for x, m in zip(xs, lines):
+        ax.text(x, 0.985, m["label"], transform=ax.transAxes, rotation=90, ha="center",
+                va="top", fontsize=8.5, color="0.2",
+                bbox=dict(boxstyle="round,pad=0.15", fc="white", ec="none", alpha=0.8))
 
 
 def plain_log_ticks(axis):
@@ -83,15 +112,16 @@ def orbit_axes(ax, x, y, clearance=None, *, steady=None, unit="µm", gid="orbit"
 
 
 def spectrum_axes(ax, f, amplitude, peaks=(), *, label, fmax=None, gid=None, log=True,
-                  decades=5.0, color="C0"):
+                  decades=5.0, color="C0", top=None):
     """An amplitude spectrum (already in display units) with its listed peaks (dicts with
-    frequency, amplitude in display units, label) marked and named."""
+    frequency, amplitude in display units, label) marked and named; the y range from `top` (the
+    largest amplitude of overlaid spectra) or from this one's."""
     line, = ax.plot(f, amplitude, color=color, lw=0.8)
     if gid:
         line.set_gid(gid)
     fmax = fmax or f[-1]
     inside = [p for p in peaks if p["frequency"] <= fmax]
-    top = max([np.max(amplitude[(f <= fmax)])] + [p["amplitude"] for p in inside])
+    top = top or max([np.max(amplitude[(f <= fmax)])] + [p["amplitude"] for p in inside])
     if log:
         ax.set_yscale("log")
         ax.set_ylim(top * 10 ** -decades, top * 10 ** (decades * 0.42))
@@ -162,27 +192,60 @@ def spl_axes(ax, microphones):
 
 
 def force_approach_axes(ax, approach, force, *, hertz_K, hertz_n=1.5, fit=None, unit="µm",
-                        factor=1e6):
-    """FE force [N] against approach [m] (plotted in `unit`, x factor) on log axes, with the Hertz
-    law Q = K delta^n and an optional FE fit (K, n)."""
-    points, = ax.loglog(approach * factor, force, "o", color="C0", ms=6, label="FE (bearing-fem)")
-    points.set_gid("contact:fe")
-    lo, hi = approach.min() / 1.3, approach.max() * 1.3
+                        factor=1e6, span=None, points_label="FE (bearing-fem)", law_label="Hertz",
+                        fit_label="FE fit", gid="contact"):
+    """Force [N] against approach [m] (plotted in `unit`, x factor) on log axes: the points, the
+    law Q = K delta^n (hertz_K, hertz_n; named law_label) as a solid line and an optional second
+    law `fit` = (K, n) dashed, both over `span` = (lowest, highest) approach [m] (default: the
+    points' range widened by 1.3 each way). Gids: GID:fe, GID:hertz, GID:fit."""
+    approach, force = np.asarray(approach, dtype=float), np.asarray(force, dtype=float)
+    if approach.size:
+        points, = ax.loglog(approach * factor, force, "o", color="C0", ms=6, label=points_label)
+        points.set_gid(gid + ":fe")
+    lo, hi = span if span else (approach.min() / 1.3, approach.max() * 1.3)
     d = np.geomspace(lo, hi, 100)
     law, = ax.loglog(d * factor, hertz_K * d ** hertz_n, "-", color="C3", lw=1.3,
-                     label="Hertz: Q = K δ$^{%.4g}$, K = %.5g N/m$^{%.4g}$"
-                     % (hertz_n, hertz_K, hertz_n))
-    law.set_gid("contact:hertz")
+                     label="%s: Q = K δ$^{%.4g}$, K = %.5g N/m$^{%.4g}$"
+                     % (law_label, hertz_n, hertz_K, hertz_n))
+    law.set_gid(gid + ":hertz")
     if fit:
         K, n = fit
-        ax.loglog(d * factor, K * d ** n, "--", color="0.3", lw=1.0,
-                  label="FE fit: K = %.5g N/m$^{%.5g}$, n = %.5g" % (K, n, n))
+        fitted, = ax.loglog(d * factor, K * d ** n, "--", color="0.3", lw=1.0,
+                            label="%s: K = %.5g N/m$^{%.5g}$, n = %.5g" % (fit_label, K, n, n))
+        fitted.set_gid(gid + ":fit")
     ax.set_xlabel("approach δ [%s]" % unit)
     ax.set_ylabel("contact force Q [N]")
     plain_log_ticks(ax.xaxis)
     plain_log_ticks(ax.yaxis)
     ax.grid(True, which="both")
     ax.legend(loc="upper left", framealpha=0.9)
+
+
+def series_axes(ax, series, *, xlabel, ylabel, log_x=False, log_y=False, lines=(), gid=None):
+    """Named x-y series (dicts with label, x, y and style "line", "marker" or "line+marker"), each
+    in its own colour, on linear or log axes, with labelled vertical `lines` (mark_lines). The
+    series' gids are GID:0, GID:1, ... in the order given."""
+    drawn = []
+    for i, s in enumerate(series):
+        style = s.get("style", "line")
+        fmt, extra = {"marker": ("o", dict(ms=4.5)), "line+marker": ("-o", dict(ms=4, lw=1.2))
+                      }.get(style, ("-", dict(lw=1.2)))
+        line, = ax.plot(np.asarray(s["x"], dtype=float), np.asarray(s["y"], dtype=float), fmt,
+                        color="C%d" % (i % 10), label=s.get("label") or None, **extra)
+        if gid:
+            line.set_gid("%s:%d" % (gid, i))
+        drawn.append(line)
+    if log_x:
+        ax.set_xscale("log")
+    if log_y:
+        ax.set_yscale("log")
+    ax.grid(True, which="both")
+    ax.set_xlabel(xlabel)
+    ax.set_ylabel(ylabel)
+    mark_lines(ax, lines, gid=gid and gid + ":line")
+    if any(s.get("label") for s in series):
+        ax.legend(loc="best", framealpha=0.9)
+    return drawn
 
 
 def sweep_line_axes(ax, x, y, *, xlabel, ylabel, labels=None, gid=None):

@@ -1,15 +1,19 @@
-"""The figures of a bearing-sim run: time, orbit, spectrum, envelope, ball loads, SPL."""
+"""The figures of a bearing-sim run: time, orbit, spectrum, envelope, ball loads, the other
+per-ball channels, SPL."""
 
-import json
 import math
 
 import numpy as np
 from matplotlib.figure import Figure
 
 from .common import (
-    BALL_PASSES_ZOOMED, DISPLAY, _frequency_limit, _new_figure, _nice_ceiling, _style,
-    channel_label, load_line_passes, ring_channel)
+    BALL_PASSES_ZOOMED, DISPLAY, DPI, _frequency_limit, _new_figure, _nice_ceiling, _style,
+    _wrap, ball_channels_size, channel_label, channel_unit, load_line_passes, ring_channel)
 from .panels import ball_load_axes, orbit_axes, spectrum_axes, spl_axes, trace_axes
+
+# The ring channels the time and spectrum figures draw, in this order (z, az: 3-DOF, or balls with
+# an axial load); the velocities are in the files and summary.json, not drawn.
+RING_DRAWN = ("x", "y", "z", "ax", "ay", "az")
 
 
 # --- run figures ------------------------------------------------------------------------------
@@ -22,9 +26,9 @@ def time_figure(run):
     span = BALL_PASSES_ZOOMED / bpfo if bpfo > 0 else 0.1 * (t[-1] - t[0])
     zoom = t >= t[-1] - span
     marks = load_line_passes(run.summary, t[zoom][0], t[-1])
-    channels = [c for c in ("x", "y", "ax", "ay") if c in r]
+    channels = [c for c in RING_DRAWN if c in r]
     with _style():
-        fig = _new_figure("time")
+        fig = _new_figure("time_axial" if "z" in r else "time")
         axes = fig.subplots(len(channels), 2, sharex="col", squeeze=False,
                             gridspec_kw={"width_ratios": [1.35, 1]})
         for row, name in enumerate(channels):
@@ -41,7 +45,8 @@ def time_figure(run):
             else "10 % of the record", "; dotted: a ball on the load line" if marks.size else ""))
         axes[-1][0].set_xlabel("time t [s]")
         axes[-1][1].set_xlabel("time t [s]")
-        fig.suptitle(run.title("ring displacement and acceleration"))
+        fig.suptitle(run.title("ring displacement and acceleration"
+                               + (" (radial x, y; axial z)" if "z" in r else "")))
         fig.align_ylabels(axes[:, 0])
         fig.tight_layout()
     return fig
@@ -82,12 +87,19 @@ def spectrum_figure(run):
     """Amplitude spectra of x, y, ax, ay with the labelled peaks of summary.json."""
     s = run.spectrum
     f = s["frequency"]
-    channels = [c for c in ("x", "y", "ax", "ay") if c in s]
+    axial = "z" in s or "az" in s
+    dofs = ("x", "y", "z") if axial else ("x", "y")
     window = run.case.get("output", {}).get("window", "hann")
     with _style():
-        fig = _new_figure("spectrum")
-        axes = fig.subplots(2, 2, squeeze=False).ravel()
-        for ax, name in zip(axes, channels):
+        fig = _new_figure("spectrum_axial" if axial else "spectrum")
+        # rows: displacement, acceleration; columns: the ring's DOFs
+        grid = fig.subplots(2, len(dofs), squeeze=False)
+        cells = [(grid[row][col], prefix + dof) for row, prefix in enumerate(("", "a"))
+                 for col, dof in enumerate(dofs)]
+        for ax, name in cells:
+            if name not in s:
+                ax.set_visible(False)
+                continue
             label, factor = channel_label(name, run.summary)
             peaks = _peaks_display(run.summary.get("peaks", {}).get(name, []), factor)
             amplitude = s[name] * factor
@@ -98,8 +110,6 @@ def spectrum_figure(run):
             ax.set_title("%s: %d largest peaks (▼), named by %s"
                          % (name, len(peaks), ", ".join(families) if families is not None
                             else "bearing frequency"))
-        for ax in axes[len(channels):]:
-            ax.set_visible(False)
         fig.suptitle(run.title("amplitude spectra (window %s, from t = %.3g s)"
                                % (window, run.transient), run.frequency_line()))
         fig.tight_layout()
@@ -141,17 +151,6 @@ def envelope_figure(run):
     return fig
 
 
-def _wrap(text, width):
-    words, lines, line = text.split(), [], ""
-    for w in words:
-        if line and len(line) + 1 + len(w) > width:
-            lines.append(line)
-            line = w
-        else:
-            line = (line + " " + w).strip()
-    return "\n".join(lines + [line])
-
-
 def ball_angles(run, t):
     """theta_j(t) = 2 pi j / Z + s 2 pi f_c t [rad] per ball j (s the sign of the shaft speed)."""
     z = run.balls
@@ -190,6 +189,64 @@ def ball_load_figure(run):
         ax.legend(loc="upper left", bbox_to_anchor=(1.01, 1.0), fontsize=8.5,
                   ncol=1 if z <= 14 else 2)
         fig.suptitle(run.title("ball loads (from t = %.3g s)" % run.transient))
+        fig.tight_layout()
+    return fig
+
+
+# Per-ball channels besides Q (ball_loads): the prefix, what it is, its symbol.
+BALL_CHANNELS = (
+    ("d", "approach", "d_j"),
+    ("r", "radial displacement", "r_j"),
+    ("vr", "radial velocity", "v_{r,j}"),
+    ("wb", "spin (relative to the cage)", "\\omega_{b,j}"),
+    ("Qo", "outer contact load", "Q_{o,j}"),
+    ("Fi", "friction force, inner contact", "F_{i,j}"),
+    ("Fo", "friction force, outer contact", "F_{o,j}"),
+)
+
+
+def ball_channel_families(run):
+    """The BALL_CHANNELS prefixes the response has (Z columns each: prefix1 ... prefixZ)."""
+    return [p for p, _, _ in BALL_CHANNELS if "%s1" % p in run.response]
+
+
+def ball_channel_figure(run):
+    """Each per-ball channel besides Q (ball approach, ball motion, ball dynamics), every ball
+    over the last ball passes: one panel per channel kind."""
+    r = run.response
+    t = r["t"]
+    families = ball_channel_families(run)
+    z = run.balls
+    bpfo = run.frequencies.get("bpfo", 0.0)
+    span = BALL_PASSES_ZOOMED * 2 / bpfo if bpfo > 0 else 0.1 * (t[-1] - t[0])
+    zoom = t >= t[-1] - span
+    columns = 1 if len(families) == 1 else 2
+    rows = (len(families) + columns - 1) // columns
+    with _style():
+        fig = Figure(figsize=ball_channels_size(rows), dpi=DPI)
+        axes = fig.subplots(rows, columns, squeeze=False, sharex=True)
+        for ax, prefix in zip(axes.ravel(), families):
+            what, symbol = next((w, y) for p, w, y in BALL_CHANNELS if p == prefix)
+            unit = channel_unit("%s1" % prefix, run.summary)
+            shown, factor = DISPLAY.get(unit, (unit, 1.0))
+            for j in range(z):
+                name = "%s%d" % (prefix, j + 1)
+                line, = ax.plot(t[zoom], r[name][zoom] * factor, color="C%d" % (j % 10), lw=0.9,
+                                label="ball %d" % (j + 1))
+                line.set_gid("ball_channels:" + name)
+            ax.set_xlim(t[zoom][0], t[-1])
+            ax.set_ylabel("$%s$ [%s]" % (symbol, shown))
+            ax.set_title("%s: %s%s…%s%d" % (what, prefix, 1, prefix, z))
+        for ax in axes.ravel()[len(families):]:
+            ax.set_visible(False)
+        for col in range(columns):  # the time axis under the lowest panel of each column
+            lowest = axes[(len(families) - 1 - col) // columns][col]
+            lowest.xaxis.set_tick_params(labelbottom=True)
+            lowest.set_xlabel("time t [s]")
+        axes[0][-1].legend(loc="upper left", bbox_to_anchor=(1.01, 1.0), fontsize=8.5,
+                           ncol=1 if z <= 14 else 2)
+        fig.suptitle(run.title("per-ball channels, last %s" % (
+            "%d ball passes" % (2 * BALL_PASSES_ZOOMED) if bpfo > 0 else "10 % of the record")))
         fig.tight_layout()
     return fig
 
@@ -237,6 +294,8 @@ def run_figures(run):
         figures["envelope"] = envelope_figure(run)
     if "Q1" in run.response and run.balls > 0:
         figures["ball_loads"] = ball_load_figure(run)
+    if ball_channel_families(run) and run.balls > 0:
+        figures["ball_channels"] = ball_channel_figure(run)
     if run.summary.get("acoustics", {}).get("microphones"):
         figures["spl"] = spl_figure(run)
     return figures

@@ -332,7 +332,8 @@ Outcome natural_frequency(const Context& ctx, const std::string& bearing) {
                       false,
                       false,
                       {lin, d.motion},
-                      {}}};
+                      {},
+                      Panel::trace}};
   o.detail = "f_n = " + fmt(wn / (2 * cf::kPi), 9) + " Hz (k_yy = " + fmt(st.kyy, 9) +
              " N/m, zeta = " + fmt(zeta, 6) + "), " + std::to_string(d.extrema) + " extrema";
   return o;

@@ -61,7 +61,9 @@ Figure spectrum_figure(const std::string& name, const std::string& title, const 
   Series s{"|Y(f)|", {}, {}, "line"};
   for (std::size_t k = 1; k < sp.frequency.size() && sp.frequency[k] <= f_max; ++k)
     s.x.push_back(sp.frequency[k]), s.y.push_back(std::max(sp.amplitude[k], 1e-16));
-  return Figure{name, title, "frequency [Hz]", "amplitude of y [m]", false, true, {s}, markers};
+  Figure f{name, title, "frequency [Hz]", "amplitude of y [m]", false, true, {s}, markers};
+  f.panel = Panel::spectrum;
+  return f;
 }
 
 Outcome line_outcome(const Line& line, double expected, Figure fig) {
@@ -208,7 +210,8 @@ Outcome reduction(const Context& ctx, const ModelInputs& in, RunSpec s, ModelKin
              false,
              false,
              {sb, sa},
-             {}}};
+             {},
+             Panel::trace}};
   return o;
 }
 

@@ -112,7 +112,8 @@ Outcome spall_line(const Context& ctx, DefectLocation where) {
                       {sp},
                       {{expected, line_names(where)[0]},
                        {2 * expected, line_names(where)[1]},
-                       {3 * expected, line_names(where)[2]}}}};
+                       {3 * expected, line_names(where)[2]}},
+                      Panel::spectrum}};
   return o;
 }
 

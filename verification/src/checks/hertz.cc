@@ -219,18 +219,17 @@ Figure load_approach_6308(const RaceContact& rc, const reference::HertzContact& 
   f.x_label = "approach delta [m]";
   f.y_label = "load Q [N]";
   f.log_x = f.log_y = true;
-  Series lumped{"lumped (inner race)", {}, {}, "line"};
+  // The check's Hertz solution as points, the lumped law Q = K δ^n (the toolkit's K and n, which
+  // the mutations move) as the line through them.
   Series hertz{"Hertz (reference)", {}, {}, "marker"};
-  for (int i = 0; i <= 20; ++i) {
+  for (int i = 0; i <= 20; i += 4) {
     const double q = std::pow(10.0, 1.0 + 3.0 * i / 20.0);
-    lumped.x.push_back(rc.approach(q));
-    lumped.y.push_back(q);
-    if (i % 4 == 0) {
-      hertz.x.push_back(ref.approach(q));
-      hertz.y.push_back(q);
-    }
+    hertz.x.push_back(ref.approach(q));
+    hertz.y.push_back(q);
   }
-  f.series = {lumped, hertz};
+  f.series = {hertz};
+  f.panel = Panel::force_approach;
+  f.laws = {{"lumped, inner race", rc.K, rc.exponent}};
   return f;
 }
 

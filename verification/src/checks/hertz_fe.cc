@@ -111,15 +111,13 @@ Check fe_k(Race race, const Mesh& m) {
     f.y_label = "force F [N]";
     f.log_x = f.log_y = true;
     Series fe{"FE Hertz-reduced block", {}, {}, "marker"};
-    Series lumped{"lumped exact Hertz K delta^n", {}, {}, "line"};
     for (const auto& s : j["steps"]) {
-      const double d = s["approach"].get<double>();
-      fe.x.push_back(d);
+      fe.x.push_back(s["approach"].get<double>());
       fe.y.push_back(s["force"].get<double>());
-      lumped.x.push_back(d);
-      lumped.y.push_back(rc.K * std::pow(d, rc.exponent));
     }
-    f.series = {fe, lumped};
+    f.series = {fe};
+    f.panel = Panel::force_approach;
+    f.laws = {{"lumped exact Hertz", rc.K, rc.exponent}};
     o.figures.push_back(f);
     return o;
   };

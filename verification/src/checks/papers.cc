@@ -67,7 +67,8 @@ Line largest_line(const SimulationResult& result, const RunSettings& settings,
                          false,
                          true,
                          {series},
-                         {{reference, "reference"}, {paper, "paper"}}};
+                         {{reference, "reference"}, {paper, "paper"}},
+                         Panel::spectrum};
   }
   return line;
 }
