@@ -146,6 +146,13 @@ if available(".mat"):
     scipy.io.savemat(work / "nan.mat", {"acc": with_nan})
     expect_error(".mat, NaN", work / "nan.mat", ["channel acc: sample 17 (from 0) is NaN"],
                  "--rate", "1000", "--unit", "g")
+    # matio inflates a corrupt zlib stream without a word: the reader checks the checksum.
+    z = bytearray((work / "v5_z.mat").read_bytes())
+    z[len(z) // 2] ^= 0xFF
+    (work / "corrupt_z.mat").write_bytes(bytes(z))
+    expect_error(".mat, a corrupt compressed variable", work / "corrupt_z.mat",
+                 ["corrupt: the variable at byte ", "it does not inflate (zlib: "],
+                 "--channel", "acc", "--rate", "1000", "--unit", "g")
     (work / "garbage.mat").write_bytes(bytes(range(256)) * 4)
     expect_error(".mat, corrupt file", work / "garbage.mat", ["matio cannot open it"])
     expect_error(".mat, missing file", work / "missing.mat", ["matio cannot open it"])

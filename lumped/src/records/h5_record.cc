@@ -10,6 +10,7 @@
 #include "bearing/records/channel_choice.h"
 #include "bearing/records/time_column.h"
 #include "bearing/units.h"
+#include "h5_global_heaps.h"
 #include "hdf5_handle.h"
 #include "record_bounds.h"
 
@@ -18,6 +19,19 @@ namespace bearing {
 namespace {
 
 using records_detail::H5Handle;
+
+// The file being read, for messages and for the guard run before its first variable-length read.
+struct Source {
+  std::filesystem::path path;
+  std::string file;
+  std::uintmax_t size = 0;
+  bool heaps_checked = false;
+
+  void before_variable_length_data() {
+    if (!heaps_checked) records_detail::check_global_heaps(path, size, file);
+    heaps_checked = true;
+  }
+};
 
 struct DatasetInfo {
   std::string path;  // "/group/name"
@@ -42,15 +56,17 @@ herr_t visit(hid_t group, const char* name, const H5L_info_t* info, void* data) 
   const int rank = space >= 0 ? H5Sget_simple_extent_ndims(space) : -1;
   DatasetInfo d;
   d.path = std::string("/") + name;
-  if ((cls == H5T_INTEGER || cls == H5T_FLOAT) && (rank == 1 || rank == 2)) {
+  const bool number = type >= 0 && records_detail::plain_number_type(type);
+  if (number && (rank == 1 || rank == 2)) {
     d.dims.resize(static_cast<std::size_t>(rank));
     H5Sget_simple_extent_dims(space, d.dims.data(), nullptr);
     d.element_size = H5Tget_size(type);
     walk.numeric.push_back(std::move(d));
   } else {
-    walk.others.push_back(d.path + (cls == H5T_INTEGER || cls == H5T_FLOAT
-                                        ? " (rank " + std::to_string(rank) + ")"
-                                        : " (not numeric)"));
+    const bool numeric = cls == H5T_INTEGER || cls == H5T_FLOAT;
+    walk.others.push_back(d.path + (number    ? " (rank " + std::to_string(rank) + ")"
+                                    : numeric ? " (a number type the reader does not convert)"
+                                              : " (not numeric)"));
   }
   if (space >= 0) H5Sclose(space);
   if (type >= 0) H5Tclose(type);
@@ -60,8 +76,8 @@ herr_t visit(hid_t group, const char* name, const H5L_info_t* info, void* data) 
 
 // A string or string-array attribute's values; nothing when the attribute is absent.
 std::optional<std::vector<std::string>> string_attribute(hid_t obj, const char* name,
-                                                         const std::string& file,
-                                                         const std::string& where) {
+                                                         Source& source, const std::string& where) {
+  const std::string& file = source.file;
   if (H5Aexists(obj, name) <= 0) return std::nullopt;
   const std::string what = "attribute " + std::string(name) + " of " + where;
   H5Handle attr(H5Aopen(obj, name, H5P_DEFAULT), H5Aclose, file, "open " + what);
@@ -73,6 +89,7 @@ std::optional<std::vector<std::string>> string_attribute(hid_t obj, const char* 
   const auto count = static_cast<std::size_t>(n);
   std::vector<std::string> out;
   if (H5Tis_variable_str(type) > 0) {
+    source.before_variable_length_data();
     H5Handle mem(H5Tcopy(H5T_C_S1), H5Tclose, file, "copy a string type");
     H5Tset_size(mem, H5T_VARIABLE);
     H5Tset_cset(mem, H5Tget_cset(type));
@@ -148,6 +165,7 @@ RawChannel read_h5_record(const std::filesystem::path& path, const RecordOptions
   records_detail::QuietHdf5 quiet;
   std::error_code ec;
   const std::uintmax_t file_size = std::filesystem::file_size(path, ec);
+  Source source{path, file, file_size};
   if (ec || H5Fis_hdf5(file.c_str()) <= 0)
     throw record_error(file, "", "not an HDF5 file (missing, unreadable or corrupt)");
   H5Handle h5(H5Fopen(file.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT), H5Fclose, file,
@@ -188,7 +206,7 @@ RawChannel read_h5_record(const std::filesystem::path& path, const RecordOptions
   std::vector<std::string> names;
   if (!table) {
     names = {d.path};
-  } else if (auto given = string_attribute(ds, "columns", file, d.path)) {
+  } else if (auto given = string_attribute(ds, "columns", source, d.path)) {
     if (given->size() != columns)
       throw record_error(file, "",
                          "attribute columns of " + d.path + " has " +
@@ -239,12 +257,12 @@ RawChannel read_h5_record(const std::filesystem::path& path, const RecordOptions
     raw.rate_tolerance = r.tolerance;
     raw.rate_origin = "time column " + names[*time] + " of " + d.path;
   }
-  if (const auto unit = string_attribute(ds, "unit", file, d.path); unit && !table) {
+  if (const auto unit = string_attribute(ds, "unit", source, d.path); unit && !table) {
     if (unit->size() != 1)
       throw record_error(file, "", "attribute unit of " + d.path + ": not one string");
     raw.unit = unit->front();
     raw.unit_origin = "attribute unit of " + d.path;
-  } else if (const auto units = string_attribute(ds, "units", file, d.path)) {
+  } else if (const auto units = string_attribute(ds, "units", source, d.path)) {
     if (units->size() != columns)
       throw record_error(file, "",
                          "attribute units of " + d.path + " has " + std::to_string(units->size()) +

@@ -48,3 +48,19 @@ class QuietHdf5 {
 };
 
 }  // namespace bearing::records_detail
+
+namespace bearing::records_detail {
+
+/// Whether an HDF5 datatype is a number as the readers convert it: an integer of 1, 2, 4 or 8
+/// bytes, or a float of 4 or 8 bytes with at most 64 bits of precision. A corrupt file can
+/// declare others (a "float" of 2 GB), for which HDF5 would allocate a conversion buffer of that
+/// size per value.
+inline bool plain_number_type(hid_t type) {
+  const H5T_class_t cls = H5Tget_class(type);
+  const std::size_t size = H5Tget_size(type);
+  if (cls == H5T_INTEGER) return size == 1 || size == 2 || size == 4 || size == 8;
+  if (cls != H5T_FLOAT) return false;
+  return (size == 4 || size == 8) && H5Tget_precision(type) <= 8 * size;
+}
+
+}  // namespace bearing::records_detail

@@ -4,7 +4,6 @@
 
 #include <cmath>
 #include <cstdint>
-#include <fstream>
 #include <memory>
 #include <optional>
 #include <string>
@@ -13,6 +12,7 @@
 
 #include "bearing/records/channel_choice.h"
 #include "bearing/units.h"
+#include "mat5_elements.h"
 #include "record_bounds.h"
 #ifdef BEARING_RECORDS_WITH_HDF5
 #include "hdf5_handle.h"
@@ -88,48 +88,22 @@ std::vector<VariableInfo> variables_of(mat_t* mat) {
   return out;
 }
 
-// matio reads a MATLAB 5 file cut short without a word, the missing data as zeros. The file's
-// top level is a 128-byte header and a sequence of data elements, each a tag (type, byte count:
-// 4 + 4 bytes) and its bytes (a matrix padded to 8, a compressed one not): every element must end
-// inside the file. MATLAB 7.3 files are HDF5, which checks its own end.
-void check_mat5_extent(const std::filesystem::path& path, std::uintmax_t file_size,
-                       const std::string& file) {
-  std::ifstream in(path, std::ios::binary);
-  unsigned char header[128];
-  if (!in.read(reinterpret_cast<char*>(header), sizeof header)) return;  // matio judged it
-  const bool big = header[126] == 'M' && header[127] == 'I';
-  const unsigned version =
-      big ? (header[124] << 8 | header[125]) : (header[125] << 8 | header[124]);
-  if (version != 0x0100) return;
-  const auto u32 = [big](const unsigned char* b) {
-    return big ? (std::uint32_t{b[0]} << 24 | std::uint32_t{b[1]} << 16 | std::uint32_t{b[2]} << 8 |
-                  b[3])
-               : (std::uint32_t{b[3]} << 24 | std::uint32_t{b[2]} << 16 | std::uint32_t{b[1]} << 8 |
-                  b[0]);
-  };
-  std::uintmax_t at = 128;
-  while (at + 8 <= file_size) {
-    unsigned char tag[8];
-    in.seekg(static_cast<std::streamoff>(at));
-    if (!in.read(reinterpret_cast<char*>(tag), sizeof tag)) return;
-    const std::uint32_t type = u32(tag), bytes = u32(tag + 4);
-    constexpr std::uint32_t kMatrix = 14, kCompressed = 15;
-    std::uintmax_t end = at + 8;
-    if ((type >> 16) != 0) {
-      // A small data element: its bytes are inside the tag.
-    } else {
-      end += bytes;
-      if (type == kMatrix) end += (8 - bytes % 8) % 8;
-      if (type != kMatrix && type != kCompressed) return;  // not a variable: matio judges it
-      if (end > file_size)
-        throw record_error(file, "",
-                           "truncated: the variable at byte " + std::to_string(at) + " claims " +
-                               std::to_string(bytes) + " bytes, " +
-                               std::to_string(end - file_size) + " more than the file has");
-    }
-    at = end;
-  }
+#ifdef BEARING_RECORDS_WITH_HDF5
+// A MATLAB 7.3 file is HDF5: matio reads a variable's data with HDF5, which allocates what the
+// stored type claims per value; the variable must be stored as a plain number (hdf5_handle.h).
+void check_mat73_type(const std::string& file, const std::string& name) {
+  using records_detail::H5Handle;
+  H5Handle h5(H5Fopen(file.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT), H5Fclose, file,
+              "open it (corrupt file?)");
+  H5Handle ds(H5Dopen2(h5, ("/" + name).c_str(), H5P_DEFAULT), H5Dclose, file,
+              "open the variable " + name);
+  H5Handle type(H5Dget_type(ds), H5Tclose, file, "read the type of " + name);
+  if (!records_detail::plain_number_type(type))
+    throw record_error(file, name,
+                       "stored as an HDF5 type of " + std::to_string(H5Tget_size(type)) +
+                           " bytes, not a number (corrupt file?)");
 }
+#endif
 
 template <class T>
 void append_as_double(const void* data, std::size_t n, std::vector<double>& out) {
@@ -162,6 +136,9 @@ std::vector<double> values_of(mat_t* mat, const VariableInfo& info, const std::s
   const std::size_t n = info.numel();
   const std::size_t size = element_size(info.class_type);
   records_detail::check_claimed_size(n, size, file_size, file, info.name);
+#ifdef BEARING_RECORDS_WITH_HDF5
+  if (Mat_GetVersion(mat) == MAT_FT_MAT73) check_mat73_type(file, info.name);
+#endif
   Var v{Mat_VarRead(mat, info.name.c_str())};
   if (!v || !v->data)
     throw record_error(file, info.name, "matio cannot read the variable's data (corrupt file?)");
@@ -235,7 +212,7 @@ RawChannel read_mat_record(const std::filesystem::path& path, const RecordOption
     throw record_error(file, "",
                        "matio cannot open it as a MAT-file (MATLAB 5, 7 or 7.3): missing, "
                        "unreadable or corrupt");
-  check_mat5_extent(path, file_size, file);
+  records_detail::check_mat5_elements(path, file_size, file);
   const std::vector<VariableInfo> vars = variables_of(mat.get());
   if (vars.empty())
     throw record_error(file, "", "matio finds no variable in it (empty, truncated or corrupt)");
