@@ -1,5 +1,6 @@
 #include "bearing/records/h5_record.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <optional>
@@ -158,22 +159,9 @@ std::string without_slashes(const std::string& path) {
   return p;
 }
 
-}  // namespace
-
-RawChannel read_h5_record(const std::filesystem::path& path, const RecordOptions& options) {
-  const std::string file = path.string();
-  records_detail::QuietHdf5 quiet;
-  std::error_code ec;
-  const std::uintmax_t file_size = std::filesystem::file_size(path, ec);
-  Source source{path, file, file_size};
-  if (ec || H5Fis_hdf5(file.c_str()) <= 0)
-    throw record_error(file, "", "not an HDF5 file (missing, unreadable or corrupt)");
-  H5Handle h5(H5Fopen(file.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT), H5Fclose, file,
-              "open it (corrupt file?)");
-
-  Walk walk;
-  if (H5Lvisit(h5, H5_INDEX_NAME, H5_ITER_INC, visit, &walk) < 0)
-    throw record_error(file, "", "HDF5 cannot list its datasets (corrupt file?)");
+// The dataset options.dataset names, or the file's only one.
+const DatasetInfo& choose_dataset(const Walk& walk, const RecordOptions& options,
+                                  const std::string& file) {
   std::vector<std::string> paths;
   for (const DatasetInfo& d : walk.numeric) paths.push_back(d.path);
   std::size_t index = 0;
@@ -192,7 +180,64 @@ RawChannel read_h5_record(const std::filesystem::path& path, const RecordOptions
                              (paths.empty() ? "none" : join_names(paths)) +
                              (walk.others.empty() ? "" : "; also " + join_names(walk.others)));
   }
-  const DatasetInfo& d = walk.numeric[index];
+  return walk.numeric[index];
+}
+
+// The channels' names: a vector's path, or a table's columns (attribute columns, or "0", ...).
+std::vector<std::string> column_names(hid_t ds, const DatasetInfo& d, bool table, Source& source) {
+  if (!table) return {d.path};
+  const std::size_t columns = static_cast<std::size_t>(d.dims[1]);
+  std::vector<std::string> names;
+  if (auto given = string_attribute(ds, "columns", source, d.path)) {
+    if (given->size() != columns)
+      throw record_error(source.file, "",
+                         "attribute columns of " + d.path + " has " +
+                             std::to_string(given->size()) + " names for " +
+                             std::to_string(columns) + " columns");
+    return *given;
+  }
+  for (std::size_t k = 0; k < columns; ++k) names.push_back(std::to_string(k));
+  return names;
+}
+
+// The unit the dataset states: attribute unit (a vector: `columns` 0), or units, one per
+// column of a table of `columns` columns (or one for a vector).
+void unit_of(RawChannel& raw, hid_t ds, const std::string& path, std::size_t columns,
+             std::size_t column, Source& source) {
+  const std::string& file = source.file;
+  if (const auto unit = string_attribute(ds, "unit", source, path); unit && columns == 0) {
+    if (unit->size() != 1)
+      throw record_error(file, "", "attribute unit of " + path + ": not one string");
+    raw.unit = unit->front();
+    raw.unit_origin = "attribute unit of " + path;
+  } else if (const auto units = string_attribute(ds, "units", source, path)) {
+    const std::size_t expected = std::max<std::size_t>(columns, 1);
+    if (units->size() != expected)
+      throw record_error(file, "",
+                         "attribute units of " + path + " has " + std::to_string(units->size()) +
+                             " units for " + std::to_string(expected) + " columns");
+    raw.unit = (*units)[column];
+    raw.unit_origin = "attribute units of " + path;
+  }
+}
+
+}  // namespace
+
+RawChannel read_h5_record(const std::filesystem::path& path, const RecordOptions& options) {
+  const std::string file = path.string();
+  records_detail::QuietHdf5 quiet;
+  std::error_code ec;
+  const std::uintmax_t file_size = std::filesystem::file_size(path, ec);
+  Source source{path, file, file_size};
+  if (ec || H5Fis_hdf5(file.c_str()) <= 0)
+    throw record_error(file, "", "not an HDF5 file (missing, unreadable or corrupt)");
+  H5Handle h5(H5Fopen(file.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT), H5Fclose, file,
+              "open it (corrupt file?)");
+
+  Walk walk;
+  if (H5Lvisit(h5, H5_INDEX_NAME, H5_ITER_INC, visit, &walk) < 0)
+    throw record_error(file, "", "HDF5 cannot list its datasets (corrupt file?)");
+  const DatasetInfo& d = choose_dataset(walk, options, file);
   H5Handle ds(H5Dopen2(h5, d.path.c_str(), H5P_DEFAULT), H5Dclose, file, "open " + d.path);
 
   // A vector (rank 1, or rank 2 with one row or column) is one channel named by its path; a
@@ -203,19 +248,7 @@ RawChannel read_h5_record(const std::filesystem::path& path, const RecordOptions
   const std::size_t rows =
       static_cast<std::size_t>(table || d.dims.size() == 1 ? d.dims[0] : d.dims[0] * d.dims[1]);
   records_detail::check_claimed_size(rows, d.element_size * columns, file_size, file, d.path);
-  std::vector<std::string> names;
-  if (!table) {
-    names = {d.path};
-  } else if (auto given = string_attribute(ds, "columns", source, d.path)) {
-    if (given->size() != columns)
-      throw record_error(file, "",
-                         "attribute columns of " + d.path + " has " +
-                             std::to_string(given->size()) + " names for " +
-                             std::to_string(columns) + " columns");
-    names = *given;
-  } else {
-    for (std::size_t k = 0; k < columns; ++k) names.push_back(std::to_string(k));
-  }
+  const std::vector<std::string> names = column_names(ds, d, table, source);
   std::optional<std::size_t> time;
   std::vector<std::string> candidates;
   std::vector<std::size_t> column_of;
@@ -257,19 +290,7 @@ RawChannel read_h5_record(const std::filesystem::path& path, const RecordOptions
     raw.rate_tolerance = r.tolerance;
     raw.rate_origin = "time column " + names[*time] + " of " + d.path;
   }
-  if (const auto unit = string_attribute(ds, "unit", source, d.path); unit && !table) {
-    if (unit->size() != 1)
-      throw record_error(file, "", "attribute unit of " + d.path + ": not one string");
-    raw.unit = unit->front();
-    raw.unit_origin = "attribute unit of " + d.path;
-  } else if (const auto units = string_attribute(ds, "units", source, d.path)) {
-    if (units->size() != columns)
-      throw record_error(file, "",
-                         "attribute units of " + d.path + " has " + std::to_string(units->size()) +
-                             " units for " + std::to_string(columns) + " columns");
-    raw.unit = (*units)[column];
-    raw.unit_origin = "attribute units of " + d.path;
-  }
+  unit_of(raw, ds, d.path, table ? columns : 0, column, source);
   return raw;
 }
 
