@@ -16,6 +16,7 @@ packages=(
   python3-matplotlib python3-numpy python3-jsonschema chromium                   # verification/: figures, report tests
   pybind11-dev python3-dev                                                       # python/: the module bearing (with python3-numpy)
   libhdf5-dev python3-h5py                                                       # sweep --save: sweep.h5 and its test
+  libmatio-dev libsndfile1-dev python3-scipy                                     # measured records: .mat, .wav; scipy writes the tests' files
   clang strace                                                                   # tests/sanitize (libFuzzer, ASan), guarantee_tests (kills at each commit step)
 )
 
