@@ -14,6 +14,7 @@
 
 #include "app/contact.h"
 #include "app/radiate.h"
+#include "app/rank_zero.h"
 #include "bearing/cli_options.h"
 #include "bearing/errors.h"
 
@@ -39,9 +40,14 @@ int main(int argc, char** argv) {
     if (*calibrate) return bearing::fem::run_calibrate(co, calibration_file, MPI_COMM_WORLD);
     if (*radiate) return bearing::fem::run_radiate(ro, MPI_COMM_WORLD);
     return bearing::fem::run_contact(o, MPI_COMM_WORLD);
+  } catch (const bearing::fem::FailedOnRankZero& e) {
+    return e.status;  // rank 0 says why
   } catch (const bearing::InputError& e) {
     std::cerr << "bearing-fem: input error: " << e.what() << '\n';
     return 2;
+  } catch (const bearing::OutputError& e) {
+    std::cerr << "bearing-fem: write error: " << e.what() << '\n';
+    return 3;
   } catch (const std::exception& e) {
     std::cerr << "bearing-fem: error: " << e.what() << '\n';
     return 1;

@@ -8,6 +8,10 @@
 // relative_difference.{K,semi_axes}) and DIR/vtu/contact_*.pvtu. Runs under mpirun.
 //
 //   bearing-fem calibrate CASE --out FILE
+//
+// writes FILE and, beside it, <stem>_inner/ and <stem>_outer/ with each race's files. Both
+// commands write all or nothing (AtomicFileSet on rank 0): input is checked before any file, every
+// file goes to a temporary name, and the set is committed after the solves.
 
 #include <deal.II/base/mpi.h>
 
@@ -18,6 +22,7 @@
 #include <fstream>
 #include <iomanip>
 #include <iostream>
+#include <optional>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -26,6 +31,8 @@
 #include <nlohmann/json.hpp>
 
 #include "app/contact.h"
+#include "app/rank_zero.h"
+#include "bearing/atomic_file_set.h"
 #include "bearing/calibration.h"
 #include "bearing/case_file.h"
 #include "bearing/cli_options.h"
@@ -73,11 +80,17 @@ nlohmann::json step_json(const bearing::fem::ApproachStep& s) {
           {"cg_iterations", s.linear_iterations}};
 }
 
-// The ring segment for --geometry groove: dimensions (ISO 15 by designation unless given), the
-// coarse mesh from meshes/raceway_segment.geo by gmsh (rank 0; the others wait), and a JSON record.
-nlohmann::json setup_raceway(const ContactOptions& o, const bearing::Case& c, bearing::Race race,
-                             const std::filesystem::path& out, MPI_Comm comm,
-                             bearing::fem::RacewaySegment& r) {
+// The ring segment of --geometry groove, checked before anything is written: its dimensions (ISO
+// 15 by designation unless given), the segment's angle and a JSON record; the coarse mesh comes
+// later (solve_contact).
+struct Raceway {
+  bearing::fem::RacewaySegment segment;
+  double groove_depth = 0;   // h, groove bottom to land [m]
+  double segment_angle = 0;  // [rad]
+  nlohmann::json record;     // contact.json's "raceway"
+};
+
+Raceway raceway_geometry(const ContactOptions& o, const bearing::Case& c, bearing::Race race) {
   using namespace bearing;
   const Bearing& b = c.bearing;
   RingDimensions dims{o.bore, o.outside, o.width};
@@ -101,6 +114,8 @@ nlohmann::json setup_raceway(const ContactOptions& o, const bearing::Case& c, be
         " deg is not supported (use --geometry hertz)");
   const bool outer = race == Race::outer;
   const double D = b.ball_diameter;
+  Raceway w;
+  fem::RacewaySegment& r = w.segment;
   r.outer = outer;
   r.ball_radius = D / 2;
   r.groove_radius = (outer ? b.outer_conformity : b.inner_conformity) * D;
@@ -113,32 +128,39 @@ nlohmann::json setup_raceway(const ContactOptions& o, const bearing::Case& c, be
                      std::to_string(2 * r.back_radius) + " m leaves no ring under the groove " +
                      "(groove-bottom diameter " + std::to_string(2 * r.groove_bottom) + " m)");
   // --groove-depth and --segment-angle are range-checked on the command line (main).
-  const double angle = o.segment_angle > 0 ? o.segment_angle * pi / 180 : pi / b.balls;
+  w.segment_angle = o.segment_angle > 0 ? o.segment_angle * pi / 180 : pi / b.balls;
+  w.groove_depth = o.groove_depth * D;
   r.paraboloid_gap = o.gap == "paraboloid";
-  fem::mesh_raceway_segment(r, o.groove_depth * D, angle, (out / "raceway_segment.msh").string(),
-                            comm);
-  return {{"ring", outer ? "outer" : "inner"},
-          {"bore", dims.bore},
-          {"outside_diameter", dims.outside},
-          {"width", dims.width},
-          {"dimensions_source", o.bore > 0 || o.outside > 0 || o.width > 0
-                                    ? "command line (ISO 15 for the rest)"
-                                    : "ISO 15 boundary dimensions of " + b.designation},
-          {"groove_radius", r.groove_radius},
-          {"groove_bottom_radius", r.groove_bottom},
-          {"clamped_radius", r.back_radius},
-          {"land_depth", r.land_depth},
-          {"segment_angle", angle},
-          {"gap", o.gap},
-          {"coarse_mesh", r.coarse_mesh},
-          {"mesh_source", std::string(BEARING_MESH_DIR) + "/raceway_segment.geo"}};
+  w.record = {{"ring", outer ? "outer" : "inner"},
+              {"bore", dims.bore},
+              {"outside_diameter", dims.outside},
+              {"width", dims.width},
+              {"dimensions_source", o.bore > 0 || o.outside > 0 || o.width > 0
+                                        ? "command line (ISO 15 for the rest)"
+                                        : "ISO 15 boundary dimensions of " + b.designation},
+              {"groove_radius", r.groove_radius},
+              {"groove_bottom_radius", r.groove_bottom},
+              {"clamped_radius", r.back_radius},
+              {"segment_angle", w.segment_angle},
+              {"gap", o.gap},
+              {"mesh_source", std::string(BEARING_MESH_DIR) + "/raceway_segment.geo"}};
+  return w;
 }
 
-// One race: solve, write DIR/force_approach.csv, DIR/contact.json (and VTU); returns the
-// contact.json object on rank 0 (null elsewhere).
-nlohmann::json solve_race(const ContactOptions& o, MPI_Comm comm) {
+// One contact computation, checked and set up before anything is written: the case, the race,
+// Hertz's reference, the load range and the FE parameters (groove: the ring, not yet meshed).
+struct ContactProblem {
+  bearing::Case c;
+  bearing::Race race = bearing::Race::inner;
+  bearing::RaceContact rc;
+  double q_min = 0, q_max = 0;
+  std::string q_source;
+  bearing::fem::HertzContactParameters p;
+  Raceway raceway;  // --geometry groove
+};
+
+ContactProblem contact_problem(const ContactOptions& o) {
   using namespace bearing;
-  const bool root = dealii::Utilities::MPI::this_mpi_process(comm) == 0;
   if (o.race != "inner" && o.race != "outer")
     throw InputError("--race = " + o.race + ": must be inner or outer");
   if (o.geometry != "hertz" && o.geometry != "groove")
@@ -146,37 +168,41 @@ nlohmann::json solve_race(const ContactOptions& o, MPI_Comm comm) {
   if (o.gap != "exact" && o.gap != "paraboloid")
     throw InputError("--gap = " + o.gap + ": must be exact or paraboloid");
 
+  ContactProblem pr;
   std::vector<Override> overrides;
   for (const auto& s : o.sets) overrides.push_back(parse_override(s));
-  const Case c =
-      o.case_path.empty() ? default_case(overrides) : read_case_file(o.case_path, overrides);
-  const Race race = o.race == "inner" ? Race::inner : Race::outer;
+  pr.c = o.case_path.empty() ? default_case(overrides) : read_case_file(o.case_path, overrides);
+  const Case& c = pr.c;
+  pr.race = o.race == "inner" ? Race::inner : Race::outer;
   const auto exact = make_exact_hertz();
-  const RaceContact rc = race_contact(c.bearing, race, *exact);
-  const Curvatures rho = race_curvatures(c.bearing, race);
+  pr.rc = race_contact(c.bearing, pr.race, *exact);
+  const RaceContact& rc = pr.rc;
+  const Curvatures rho = race_curvatures(c.bearing, pr.race);
 
   // Load range: from light load to the case's largest ball load Q_max (lumped static solution).
-  double q_max = o.load_max;
-  std::string q_source = "--load-max";
+  pr.q_max = o.load_max;
+  pr.q_source = "--load-max";
   if (o.peak_pressure > 0) {
     if (o.load_max > 0) throw InputError("give --load-max or --peak-pressure, not both");
     // p₀ ∝ Q^{1/3} in Hertz's theory: scale from any reference load.
-    q_max = std::pow(o.peak_pressure / rc.peak_pressure(1.0), 3.0);
-    q_source = "--peak-pressure " + std::to_string(o.peak_pressure) + " Pa (Hertz, this race)";
+    pr.q_max = std::pow(o.peak_pressure / rc.peak_pressure(1.0), 3.0);
+    pr.q_source = "--peak-pressure " + std::to_string(o.peak_pressure) + " Pa (Hertz, this race)";
   }
-  if (q_max <= 0) {
+  if (pr.q_max <= 0) {
     const ContactConstants cc = contact_constants(c.bearing, *exact);
     const auto st =
         solve_static_load(c.bearing.balls, cc.K, c.bearing.ball_gap(), c.operation.load);
-    q_max = st.q_max;
-    q_source = "static load distribution of the case (lumped solve_static_load, exact Hertz)";
-    if (!(q_max > 0))
+    pr.q_max = st.q_max;
+    pr.q_source = "static load distribution of the case (lumped solve_static_load, exact Hertz)";
+    if (!(pr.q_max > 0))
       throw InputError("the case's radial load gives no ball load; pass --load-max");
   }
-  const double q_min = o.load_min > 0 ? o.load_min : q_max * o.load_min_fraction;
+  const double q_max = pr.q_max;
+  pr.q_min = o.load_min > 0 ? o.load_min : q_max * o.load_min_fraction;
+  const double q_min = pr.q_min;
   if (!(q_min < q_max)) throw InputError("--load-min must be below the largest load");
 
-  fem::HertzContactParameters p;
+  fem::HertzContactParameters& p = pr.p;
   p.contact_modulus = 1 / rc.compliance;
   p.poisson = 0.3;
   p.radius_x = 1 / (rho.ball_1 + rho.race_1);
@@ -195,44 +221,23 @@ nlohmann::json solve_race(const ContactOptions& o, MPI_Comm comm) {
   p.domain_size = o.domain;
   p.verbose = !o.quiet;
   p.solver_tolerance = o.tolerance;
-  const std::filesystem::path out(o.out_dir);
-  if (root) std::filesystem::create_directories(out);
-  nlohmann::json ring_json;
   if (o.geometry == "groove") {
     p.geometry = "groove";
-    ring_json = setup_raceway(o, c, race, out, comm, p.raceway);
+    pr.raceway = raceway_geometry(o, c, pr.race);
+    p.raceway = pr.raceway.segment;
   }
-  if (o.vtu) {
-    p.vtu_directory = (out / "vtu").string();
-    if (root) std::filesystem::create_directories(p.vtu_directory);
-  }
-  MPI_Barrier(comm);
-  if (root && !o.quiet)
-    std::cout << "bearing-fem contact: " << o.race << " race, "
-              << (o.geometry == "hertz" ? "Hertz-reduced" : "groove (" + o.gap + " gap)")
-              << ", E* = " << p.contact_modulus << " Pa, R_x = " << p.radius_x
-              << " m, R_y = " << p.radius_y << " m, kappa = " << rc.shape.ellipticity << ", loads "
-              << q_min << " .. " << q_max << " N\n";
+  return pr;
+}
 
-  const fem::HertzContactResult r = fem::solve_hertz_contact(p, comm);
-  if (!root) return nullptr;
-
-  std::vector<double> d, f;
-  for (const auto& s : r.steps) {
-    d.push_back(s.approach);
-    f.push_back(s.force);
-  }
-  const fem::PowerLawFit fit = fem::fit_power_law(d, f);
+// contact.json: the FE result, Hertz's at the same load, their differences, the mesh, each step.
+nlohmann::json contact_json(const ContactOptions& o, const ContactProblem& pr,
+                            const bearing::fem::HertzContactResult& r,
+                            const bearing::fem::PowerLawFit& fit) {
+  using bearing::Race;
+  const bearing::RaceContact& rc = pr.rc;
+  const bearing::fem::HertzContactParameters& p = pr.p;
   const auto& last = r.steps.back();
   const double a_h = rc.semi_major(last.force), b_h = rc.semi_minor(last.force);
-
-  {
-    std::ofstream csv(out / "force_approach.csv");
-    csv << "approach,force,semi_axis_a,semi_axis_b,peak_pressure\n" << std::setprecision(17);
-    for (const auto& s : r.steps)
-      csv << s.approach << ',' << s.force << ',' << s.semi_major << ',' << s.semi_minor << ','
-          << s.peak_pressure << '\n';
-  }
   nlohmann::json steps = nlohmann::json::array();
   for (const auto& s : r.steps) {
     auto j = step_json(s);
@@ -242,8 +247,8 @@ nlohmann::json solve_race(const ContactOptions& o, MPI_Comm comm) {
     j["hertz_peak_pressure"] = rc.peak_pressure(s.force);
     steps.push_back(j);
   }
-  nlohmann::json j = {
-      {"case", c.source},
+  return {
+      {"case", pr.c.source},
       {"race", o.race},
       {"geometry", o.geometry},
       {"method",
@@ -254,12 +259,12 @@ nlohmann::json solve_race(const ContactOptions& o, MPI_Comm comm) {
                          "(gmsh meshes/raceway_segment.geo, refined on the exact surfaces), "
                          "E = (1-nu^2) E* (equivalent modulus: the ball's compliance given to the "
                          "ring), clamped ") +
-                 (race == Race::outer ? "outside diameter" : "bore") +
+                 (pr.race == Race::outer ? "outside diameter" : "bore") +
                  (o.gap == "exact" ? ", rigid sphere of the ball's radius (exact gap along z)"
                                    : ", Hertz's paraboloid gap (isolates the finite ring)") +
                  "; primal-dual active set; CG + Trilinos ML AMG"},
-      {"raceway", ring_json},
-      {"load_range", {{"min", q_min}, {"max", q_max}, {"max_source", q_source}}},
+      {"raceway", pr.raceway.record},
+      {"load_range", {{"min", pr.q_min}, {"max", pr.q_max}, {"max_source", pr.q_source}}},
       {"fe",
        {{"K", fit.K_three_halves},
         {"K_note", "K of the fit with the exponent fixed at 1.5 (comparable with Hertz's K)"},
@@ -299,13 +304,92 @@ nlohmann::json solve_race(const ContactOptions& o, MPI_Comm comm) {
       {"mpi_processes", r.mpi_processes},
       {"wall_time", r.wall_time},
       {"steps", steps}};
-  std::ofstream(out / "contact.json") << std::setprecision(17) << j.dump(2) << '\n';
+}
+
+// The files of one contact result, named relative to the folder of their file set: `prefix` is
+// "" for `contact --out DIR`, "6308_inner/" for a race of `calibrate`. They are committed in this
+// order, contact.json last: once it is the new one, so are the others. `others`: what this run
+// does not write that an earlier one may have (its VTU, its groove mesh); the commit removes it.
+struct ContactFiles {
+  std::vector<std::string> names, others;
+};
+
+ContactFiles contact_files(const ContactOptions& o, const std::string& prefix) {
+  ContactFiles f;
+  const auto add = [&](bool written, const char* name) {
+    (written ? f.names : f.others).push_back(prefix + name);
+  };
+  add(o.geometry == "groove", "raceway_segment.msh");
+  add(o.geometry == "groove", "raceway_segment.msh.log");
+  add(o.vtu, "vtu/");
+  add(true, "force_approach.csv");
+  add(true, "contact.json");
+  return f;
+}
+
+// What one race gives to be written (on rank 0; empty elsewhere).
+struct ContactResult {
+  nlohmann::json json;  // contact.json
+  std::string csv;      // force_approach.csv
+};
+
+// Solves `pr` (collective). Its groove mesh and VTU files go to their temporary names in `dir`
+// under `prefix` (contact_files), prepared by rank 0 under the file set's lock.
+ContactResult solve_contact(const ContactOptions& o, ContactProblem pr,
+                            const std::filesystem::path& dir, const std::string& prefix,
+                            MPI_Comm comm) {
+  using namespace bearing;
+  const bool root = dealii::Utilities::MPI::this_mpi_process(comm) == 0;
+  fem::HertzContactParameters& p = pr.p;
+  if (o.geometry == "groove") {
+    // gmsh on rank 0, the others wait.
+    fem::mesh_raceway_segment(p.raceway, pr.raceway.groove_depth, pr.raceway.segment_angle,
+                              temporary_path(dir, prefix + "raceway_segment.msh").string(),
+                              temporary_path(dir, prefix + "raceway_segment.msh.log").string(),
+                              comm);
+    pr.raceway.record["land_depth"] = p.raceway.land_depth;
+    pr.raceway.record["coarse_mesh"] = (dir / (prefix + "raceway_segment.msh")).string();
+  }
+  if (o.vtu) p.vtu_directory = temporary_path(dir, prefix + "vtu/").string();
+  if (root && !o.quiet)
+    std::cout << "bearing-fem contact: " << o.race << " race, "
+              << (o.geometry == "hertz" ? "Hertz-reduced" : "groove (" + o.gap + " gap)")
+              << ", E* = " << p.contact_modulus << " Pa, R_x = " << p.radius_x
+              << " m, R_y = " << p.radius_y << " m, kappa = " << pr.rc.shape.ellipticity
+              << ", loads " << pr.q_min << " .. " << pr.q_max << " N\n";
+
+  const fem::HertzContactResult r = fem::solve_hertz_contact(p, comm);
+  if (!root) return {};
+
+  std::vector<double> d, f;
+  for (const auto& s : r.steps) {
+    d.push_back(s.approach);
+    f.push_back(s.force);
+  }
+  const fem::PowerLawFit fit = fem::fit_power_law(d, f);
+  std::ostringstream csv;
+  csv << "approach,force,semi_axis_a,semi_axis_b,peak_pressure\n" << std::setprecision(17);
+  for (const auto& s : r.steps)
+    csv << s.approach << ',' << s.force << ',' << s.semi_major << ',' << s.semi_minor << ','
+        << s.peak_pressure << '\n';
+  const auto& last = r.steps.back();
+  const RaceContact& rc = pr.rc;
+  const double a_h = rc.semi_major(last.force), b_h = rc.semi_minor(last.force);
   if (!o.quiet)
     std::cout << std::setprecision(6) << "K_FE (n = 1.5) = " << fit.K_three_halves
               << " N/m^1.5, Hertz K = " << rc.K << " (" << 100 * (fit.K_three_halves / rc.K - 1)
               << " %); exponent " << fit.exponent << "; a " << 100 * (last.semi_major / a_h - 1)
               << " %, b " << 100 * (last.semi_minor / b_h - 1) << " %; " << r.wall_time << " s\n";
-  return j;
+  return {contact_json(o, pr, r, fit), csv.str()};
+}
+
+// Creates `dir` (and its parents) for `--out out`; an input error if it cannot.
+void create_folder(const std::filesystem::path& dir, const std::string& out) {
+  std::error_code ec;
+  std::filesystem::create_directories(dir, ec);
+  if (ec)
+    throw bearing::InputError("--out " + out + ": cannot create the folder " + dir.string() + " (" +
+                              ec.message() + ")");
 }
 
 std::string utc_now() {
@@ -315,76 +399,6 @@ std::string utc_now() {
   return buf;
 }
 
-// bearing-fem calibrate: both races over the case's load range (light load to Q_max), the power
-// law Q = K δ^n fitted to each (exponent free), written for lumped's contact = "calibrated".
-// The races' own contact.json and force_approach.csv go to <stem>_inner/ and <stem>_outer/ next
-// to the calibration file.
-int calibrate_races(const ContactOptions& base, const std::string& out_file, MPI_Comm comm) {
-  using namespace bearing;
-  const bool root = dealii::Utilities::MPI::this_mpi_process(comm) == 0;
-  if (out_file.empty()) throw InputError("--out: give the calibration file to write");
-  const std::filesystem::path file(out_file);
-  const std::filesystem::path dir = file.has_parent_path() ? file.parent_path() : ".";
-  CalibrationDocument doc;
-  ContactCalibration& cal = doc.calibration;
-  std::string mesh;
-  const struct {
-    const char* race;
-    RaceLaw& law;
-    RaceFitRecord& fit;
-  } races[] = {{"inner", cal.inner, doc.inner_fit}, {"outer", cal.outer, doc.outer_fit}};
-  for (const auto& [race, law, fit] : races) {
-    ContactOptions o = base;
-    o.race = race;
-    o.vtu = false;
-    o.out_dir = (dir / (file.stem().string() + "_" + race)).string();
-    const nlohmann::json j = solve_race(o, comm);
-    if (!root) continue;
-    law.K = j["fe"]["K_free_exponent"];
-    law.exponent = j["fe"]["exponent"];
-    law.fit_residual = j["fe"]["fit_residual"];
-    fit.K_three_halves = j["fe"]["K"];
-    fit.hertz_K = j["hertz"]["K"];
-    fit.details = file.stem().string() + "_" + race;  // next to the file
-    cal.load_min = j["load_range"]["min"];
-    cal.load_max = j["load_range"]["max"];
-    mesh += std::string(mesh.empty() ? "" : "; ") + race + ": " +
-            std::to_string(j["mesh"]["cells"].get<unsigned long>()) + " cells, " +
-            std::to_string(j["mesh"]["dofs"].get<unsigned long>()) + " DoFs";
-  }
-  if (!root) return 0;
-  std::vector<Override> overrides;
-  for (const auto& s : base.sets) overrides.push_back(parse_override(s));
-  const Case c =
-      base.case_path.empty() ? default_case(overrides) : read_case_file(base.case_path, overrides);
-  cal.bearing = c.bearing;
-  cal.geometry = base.geometry == "hertz" ? "hertz" : "groove";
-  const std::string body =
-      cal.geometry == "hertz"
-          ? "Hertz-reduced quarter block with E* and a rigid paraboloid"
-          : "ring segment with its true groove (meshes/raceway_segment.geo), E* in the ring, "
-            "rigid sphere (" +
-                base.gap + " gap)";
-  cal.method =
-      "bearing-fem contact per race: 3-D linear elasticity, Q1, primal-dual active set, CG + "
-      "Trilinos ML; " +
-      body + "; Q = K delta^n fitted by least squares of ln Q on ln delta over " +
-      std::to_string(base.steps) + " approach steps from light load to Q_max";
-  std::ostringstream mesh_text;
-  mesh_text << "N_b = " << base.cells << " cells per semi-minor axis at Q_max, grading "
-            << base.grading << ", stretch " << base.stretch << "; ";
-  cal.mesh = mesh_text.str() + mesh;
-  cal.date = utc_now();
-  doc.case_source = c.source;
-  write_calibration(doc, file.string());
-  if (!base.quiet) {
-    using nlohmann::json;  // the numbers as the file shows them
-    std::cout << "calibration written to " << file.string() << ": inner K = " << json(cal.inner.K)
-              << " N/m^" << json(cal.inner.exponent) << ", outer K = " << json(cal.outer.K)
-              << " N/m^" << json(cal.outer.exponent) << '\n';
-  }
-  return 0;
-}
 }  // namespace
 
 CLI::App* add_contact_command(CLI::App& app, ContactOptions& o) {
@@ -477,13 +491,115 @@ CLI::App* add_calibrate_command(CLI::App& app, ContactOptions& o, std::string& o
   return calibrate;
 }
 
+// bearing-fem contact: one race solved; its files in DIR written all or nothing (AtomicFileSet,
+// on rank 0, whose lock on DIR is held from before the solve to the commit).
 int run_contact(const ContactOptions& o, MPI_Comm comm) {
-  solve_race(o, comm);
+  ContactProblem problem = contact_problem(o);  // bad input ends here, before any file
+  const std::filesystem::path out(o.out_dir);
+  const ContactFiles files = contact_files(o, "");
+  std::optional<bearing::AtomicFileSet> set;  // rank 0's
+  on_rank_zero(comm, [&] {
+    create_folder(out, o.out_dir);
+    set.emplace(out, files.names, files.others, "--out " + o.out_dir);
+    if (o.vtu) set->fresh_folder("vtu/");
+  });
+  const ContactResult r = solve_contact(o, std::move(problem), out, "", comm);
+  if (!set) return 0;
+  set->write("force_approach.csv", r.csv);
+  set->write("contact.json", r.json.dump(2) + "\n");
+  set->commit();
   return 0;
 }
 
-int run_calibrate(const ContactOptions& o, const std::string& out, MPI_Comm comm) {
-  return calibrate_races(o, out, comm);
+// bearing-fem calibrate: both races over the case's load range (light load to Q_max), the power
+// law Q = K δ^n fitted to each (exponent free), written for lumped's contact = "calibrated".
+// The races' own contact.json and force_approach.csv go to <stem>_inner/ and <stem>_outer/ next
+// to the calibration file: one file set in the file's folder, committed after both solves, the
+// calibration file last.
+int run_calibrate(const ContactOptions& base, const std::string& out_file, MPI_Comm comm) {
+  using namespace bearing;
+  namespace fs = std::filesystem;
+  if (out_file.empty()) throw InputError("--out: give the calibration file to write");
+  const fs::path file(out_file);
+  if (!file.has_filename() || fs::is_directory(file))
+    throw InputError("--out " + out_file + ": a folder; give the calibration file to write (JSON)");
+  const fs::path dir = file.has_parent_path() ? file.parent_path() : ".";
+  const std::string stem = file.stem().string();
+  CalibrationDocument doc;
+  ContactCalibration& cal = doc.calibration;
+  std::string mesh;
+  struct Race {
+    const char* race;
+    RaceLaw& law;
+    RaceFitRecord& fit;
+    ContactOptions o;
+    ContactProblem problem;
+    ContactResult result;
+  } races[] = {{"inner", cal.inner, doc.inner_fit, base, {}, {}},
+               {"outer", cal.outer, doc.outer_fit, base, {}, {}}};
+  std::vector<std::string> names, others;
+  for (auto& r : races) {
+    r.o.race = r.race;
+    r.o.vtu = false;
+    r.problem = contact_problem(r.o);  // both races' input checked before any file is written
+    const ContactFiles f = contact_files(r.o, stem + "_" + r.race + "/");
+    names.insert(names.end(), f.names.begin(), f.names.end());
+    others.insert(others.end(), f.others.begin(), f.others.end());
+  }
+  names.push_back(file.filename().string());  // last: once it is the new one, so are the others
+  std::optional<AtomicFileSet> set;  // rank 0's; its lock on the folder is held to the commit
+  on_rank_zero(comm, [&] {
+    for (const auto& r : races) create_folder(dir / (stem + "_" + r.race), out_file);
+    set.emplace(dir, names, others, "--out " + out_file);
+  });
+  for (auto& r : races)
+    r.result = solve_contact(r.o, r.problem, dir, stem + "_" + r.race + "/", comm);
+  if (!set) return 0;
+  for (const auto& [race, law, fit, o, problem, result] : races) {
+    const nlohmann::json& j = result.json;
+    law.K = j["fe"]["K_free_exponent"];
+    law.exponent = j["fe"]["exponent"];
+    law.fit_residual = j["fe"]["fit_residual"];
+    fit.K_three_halves = j["fe"]["K"];
+    fit.hertz_K = j["hertz"]["K"];
+    fit.details = stem + "_" + race;  // next to the file
+    cal.load_min = j["load_range"]["min"];
+    cal.load_max = j["load_range"]["max"];
+    mesh += std::string(mesh.empty() ? "" : "; ") + race + ": " +
+            std::to_string(j["mesh"]["cells"].get<unsigned long>()) + " cells, " +
+            std::to_string(j["mesh"]["dofs"].get<unsigned long>()) + " DoFs";
+    set->write(fit.details + "/force_approach.csv", result.csv);
+    set->write(fit.details + "/contact.json", j.dump(2) + "\n");
+  }
+  const Case& c = races[0].problem.c;
+  cal.bearing = c.bearing;
+  cal.geometry = base.geometry == "hertz" ? "hertz" : "groove";
+  const std::string body =
+      cal.geometry == "hertz"
+          ? "Hertz-reduced quarter block with E* and a rigid paraboloid"
+          : "ring segment with its true groove (meshes/raceway_segment.geo), E* in the ring, "
+            "rigid sphere (" +
+                base.gap + " gap)";
+  cal.method =
+      "bearing-fem contact per race: 3-D linear elasticity, Q1, primal-dual active set, CG + "
+      "Trilinos ML; " +
+      body + "; Q = K delta^n fitted by least squares of ln Q on ln delta over " +
+      std::to_string(base.steps) + " approach steps from light load to Q_max";
+  std::ostringstream mesh_text;
+  mesh_text << "N_b = " << base.cells << " cells per semi-minor axis at Q_max, grading "
+            << base.grading << ", stretch " << base.stretch << "; ";
+  cal.mesh = mesh_text.str() + mesh;
+  cal.date = utc_now();
+  doc.case_source = c.source;
+  set->write(file.filename().string(), calibration_text(doc));
+  set->commit();
+  if (!base.quiet) {
+    using nlohmann::json;  // the numbers as the file shows them
+    std::cout << "calibration written to " << file.string() << ": inner K = " << json(cal.inner.K)
+              << " N/m^" << json(cal.inner.exponent) << ", outer K = " << json(cal.outer.K)
+              << " N/m^" << json(cal.outer.exponent) << '\n';
+  }
+  return 0;
 }
 
 }  // namespace bearing::fem

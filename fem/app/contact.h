@@ -44,12 +44,14 @@ CLI::App* add_contact_command(CLI::App& app, ContactOptions& o);
 /// Adds the `calibrate` subcommand to `app`, filling `o` and the calibration file `out`.
 CLI::App* add_calibrate_command(CLI::App& app, ContactOptions& o, std::string& out);
 
-/// Runs `contact`: writes DIR/force_approach.csv, DIR/contact.json (and DIR/vtu). Returns the
-/// exit code. Throws InputError for bad input.
+/// Runs `contact`: writes DIR/force_approach.csv, DIR/contact.json (and DIR/vtu/, with --geometry
+/// groove DIR/raceway_segment.msh and its .log), all or nothing (bearing/atomic_file_set.h, on
+/// rank 0). Returns the exit code. Throws InputError for bad input (before any file is written),
+/// OutputError if the files cannot be written; FailedOnRankZero on the other ranks.
 int run_contact(const ContactOptions& o, MPI_Comm comm);
 
-/// Runs `calibrate`: both races, the calibration file `out` and the races' folders beside it.
-/// Returns the exit code. Throws InputError for bad input.
+/// Runs `calibrate`: both races, the calibration file `out` and the races' folders beside it, all
+/// or nothing as run_contact's. Returns the exit code; throws as run_contact.
 int run_calibrate(const ContactOptions& o, const std::string& out, MPI_Comm comm);
 
 }  // namespace bearing::fem
