@@ -58,6 +58,8 @@
 
 #include "hertz_contact.h"
 
+#include "bearing/atomic_file_set.h"
+#include "bearing/errors.h"
 #include "contact_geometry.h"
 
 #include <deal.II/base/bounding_box.h>
@@ -93,8 +95,12 @@
 #include <limits>
 #include <map>
 #include <memory>
+#include <optional>
 #include <set>
+#include <sstream>
 #include <stdexcept>
+#include <string>
+#include <vector>
 
 namespace bearing::fem {
 
@@ -621,7 +627,33 @@ void HertzContactProblem::output_results(unsigned int step) const {
   for (auto& s : subdomain) s = static_cast<float>(triangulation.locally_owned_subdomain());
   data_out.add_data_vector(subdomain, "subdomain");
   data_out.build_patches();
-  data_out.write_vtu_with_pvtu_record(prm.vtu_directory + "/", "contact", step, comm, 3, 0);
+  // Each rank's piece and rank 0's record, named as write_vtu_with_pvtu_record names them, but
+  // written by write_file: a full disk is an OutputError, never a silently shorter file, and on
+  // every rank (one rank throwing alone would leave the others waiting in the next solve).
+  const unsigned int rank = Utilities::MPI::this_mpi_process(comm);
+  const unsigned int ranks = Utilities::MPI::n_mpi_processes(comm);
+  const std::string stem = "contact_" + Utilities::int_to_string(step, 3);
+  const auto piece = [&](unsigned int r) {
+    return stem + "." + Utilities::int_to_string(r, Utilities::needed_digits(ranks - 1)) + ".vtu";
+  };
+  std::string error;
+  try {
+    std::ostringstream vtu;
+    data_out.write_vtu(vtu);
+    write_file(prm.vtu_directory + "/" + piece(rank), vtu.str());
+    if (rank == 0) {
+      std::vector<std::string> pieces;
+      for (unsigned int r = 0; r < ranks; ++r) pieces.push_back(piece(r));
+      std::ostringstream record;
+      data_out.write_pvtu_record(record, pieces);
+      write_file(prm.vtu_directory + "/" + stem + ".pvtu", record.str());
+    }
+  } catch (const OutputError& e) {
+    error = e.what();
+  }
+  if (Utilities::MPI::max(error.empty() ? 0 : 1, comm) != 0)
+    throw OutputError(error.empty() ? "the VTU files could not be written (another rank says why)"
+                                    : error);
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -709,8 +741,18 @@ std::unique_ptr<ContactGeometry> make_hertz_block(const HertzContactParameters& 
 }
 
 HertzContactResult solve_hertz_contact(const HertzContactParameters& parameters, MPI_Comm comm) {
-  HertzContactProblem problem(parameters, comm);
-  return problem.run();
+  // An OutputError comes on every rank at once (output_results) and leaves once the problem is
+  // gone: its timers then close normally, not with deal.II's "uncaught exception" notice.
+  std::optional<OutputError> failed;
+  {
+    HertzContactProblem problem(parameters, comm);
+    try {
+      return problem.run();
+    } catch (const OutputError& e) {
+      failed.emplace(e);
+    }
+  }
+  throw *failed;
 }
 
 // ln F = ln K + n ln δ by least squares (two parameters), and ln K at n = 3/2 (one parameter:

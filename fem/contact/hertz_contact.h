@@ -67,9 +67,10 @@ struct RacewaySegment {
 /// others wait), the segment spanning `segment_angle` [rad] from the contact. Needs
 /// r.{outer, ball_radius, groove_radius, groove_bottom, back_radius, half_width}; sets
 /// r.land_depth (smaller than h where the groove reaches the ring's side) and r.coarse_mesh.
-/// gmsh's output goes to `msh` + ".log". Throws std::runtime_error if gmsh fails.
+/// gmsh's output goes to `log`. Throws std::runtime_error if gmsh fails (on rank 0 with the last
+/// lines of gmsh's output).
 void mesh_raceway_segment(RacewaySegment& r, double groove_depth, double segment_angle,
-                          const std::string& msh, MPI_Comm comm);
+                          const std::string& msh, const std::string& log, MPI_Comm comm);
 
 /// Everything that defines one contact computation. Units SI.
 struct HertzContactParameters {
@@ -99,7 +100,8 @@ struct HertzContactParameters {
   double solver_tolerance = 1e-11;  ///< CG: relative to the right-hand side's norm [-]
 
   // --- output --------------------------------------------------------------------------------
-  std::string vtu_directory;  ///< VTU/PVTU of every approach step here (empty: none)
+  std::string vtu_directory;  ///< VTU/PVTU of every approach step here (empty: none); the folder
+                              ///< must exist
   bool verbose = false;       ///< progress on rank 0's stdout
 };
 
@@ -134,7 +136,8 @@ struct HertzContactResult {
 };
 
 /// Builds the mesh, then solves every approach step by the primal–dual active-set method.
-/// Collective over `comm`; every rank gets the same result.
+/// Collective over `comm`; every rank gets the same result. Throws OutputError (bearing/errors.h)
+/// on every rank if a VTU file cannot be written.
 HertzContactResult solve_hertz_contact(const HertzContactParameters& parameters, MPI_Comm comm);
 
 /// Least-squares power law F = K δ^n through (δ_k, F_k): the fit of ln F on ln δ.

@@ -33,6 +33,7 @@
 #include <sstream>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 #include "bearing/constants.h"
 #include "contact_geometry.h"
@@ -196,10 +197,22 @@ class RacewaySegmentGeometry final : public ContactGeometry {
   mutable double coarse_hx = 0;
 };
 
+// The last `n` lines of the text file `path`, joined by " | " ("" if it cannot be read).
+std::string last_lines(const std::string& path, std::size_t n) {
+  std::ifstream in(path);
+  std::vector<std::string> lines;
+  for (std::string line; std::getline(in, line);)
+    if (!line.empty()) lines.push_back(line);
+  std::string out;
+  for (std::size_t k = lines.size() > n ? lines.size() - n : 0; k < lines.size(); ++k)
+    out += (out.empty() ? "" : " | ") + lines[k];
+  return out;
+}
+
 }  // namespace
 
 void mesh_raceway_segment(RacewaySegment& r, double groove_depth, double segment_angle,
-                          const std::string& msh, MPI_Comm comm) {
+                          const std::string& msh, const std::string& log, MPI_Comm comm) {
   if (!(groove_depth > 0 && segment_angle > 0 && segment_angle < pi / 2))
     throw std::invalid_argument(
         "mesh_raceway_segment: groove depth and segment angle out of range");
@@ -217,19 +230,25 @@ void mesh_raceway_segment(RacewaySegment& r, double groove_depth, double segment
   int status = 0;
   if (Utilities::MPI::this_mpi_process(comm) == 0) {
     std::ostringstream cmd;
-    cmd << std::setprecision(17) << '"' << BEARING_GMSH << "\" -3 -v 2 -setnumber race "
+    // -format msh: the version the .geo sets, whatever `msh` ends with (a temporary name).
+    cmd << std::setprecision(17) << '"' << BEARING_GMSH << "\" -3 -v 2 -format msh -setnumber race "
         << (r.outer ? 1 : 0) << " -setnumber groove_radius " << r.groove_radius
         << " -setnumber groove_bottom " << r.groove_bottom << " -setnumber groove_depth "
         << groove_depth << " -setnumber back_radius " << r.back_radius << " -setnumber half_width "
         << r.half_width << " -setnumber segment_angle " << segment_angle << " \""
-        << BEARING_MESH_DIR << "/raceway_segment.geo\" -o \"" << msh << "\" > \"" << msh
-        << ".log\" 2>&1";
+        << BEARING_MESH_DIR << "/raceway_segment.geo\" -o \"" << msh << "\" > \"" << log
+        << "\" 2>&1";
     status = std::system(cmd.str().c_str());
   }
   MPI_Bcast(&status, 1, MPI_INT, 0, comm);
   if (status != 0)
+    // The log's end in the message: the caller may write the log under a temporary name that
+    // goes with the failed run.
     throw std::runtime_error("gmsh failed on " + std::string(BEARING_MESH_DIR) +
-                             "/raceway_segment.geo (see " + msh + ".log)");
+                             "/raceway_segment.geo" +
+                             (Utilities::MPI::this_mpi_process(comm) == 0
+                                  ? ": " + last_lines(log, 5)
+                                  : std::string(" (rank 0 shows gmsh's output)")));
 }
 
 std::unique_ptr<ContactGeometry> make_raceway_segment(const HertzContactParameters& p) {

@@ -145,10 +145,10 @@ GrooveRun solve_groove(double q, bool paraboloid, const std::string& name) {
   r.back_radius = 20e-3;
   r.half_width = 11.5e-3;
   r.paraboloid_gap = paraboloid;
-  fem::mesh_raceway_segment(
-      r, 0.2 * b.ball_diameter, pi / b.balls,
-      (std::filesystem::temp_directory_path() / ("bearing_fem_test_" + name + ".msh")).string(),
-      MPI_COMM_WORLD);
+  const std::string msh =
+      (std::filesystem::temp_directory_path() / ("bearing_fem_test_" + name + ".msh")).string();
+  fem::mesh_raceway_segment(r, 0.2 * b.ball_diameter, pi / b.balls, msh, msh + ".log",
+                            MPI_COMM_WORLD);
   g.r = fem::solve_hertz_contact(p, MPI_COMM_WORLD);
   return g;
 }

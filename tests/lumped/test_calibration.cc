@@ -1,5 +1,5 @@
-// The FE-calibrated contact law (`[model] contact = "calibrated"`): writing calibration.json and
-// reading it back, rejecting a file computed for another bearing, and the law of a ball between
+// The FE-calibrated contact law (`[model] contact = "calibrated"`): the text of calibration.json
+// read back, rejecting a file computed for another bearing, and the law of a ball between
 // two calibrated races (closed form for equal exponents, least-squares fit otherwise).
 
 #include <cmath>
@@ -401,8 +401,8 @@ TEST(Calibration, PathsAndTheResolvedCase) {
   EXPECT_EQ(contact_constants(r).K, contact_constants(a).K);
 }
 
-// The writer (what bearing-fem calibrate calls) and the reader agree on every field, to the bit;
-// the record for people (K_three_halves, hertz_K, details, case) is in the file too.
+// The file's text (what bearing-fem calibrate writes) and the reader agree on every field, to the
+// bit; the record for people (K_three_halves, hertz_K, details, case) is in the file too.
 TEST(Calibration, WrittenFileReadsBackExactly) {
   CalibrationDocument doc;
   ContactCalibration& cal = doc.calibration;
@@ -425,10 +425,7 @@ TEST(Calibration, WrittenFileReadsBackExactly) {
   doc.case_source = "examples/seed003_6308.toml";
 
   namespace fs = std::filesystem;
-  fs::create_directories(test::test_dir());
-  const std::string path = (test::test_dir() / "written.json").string();
-  bearing::write_calibration(doc, path);
-  EXPECT_FALSE(fs::exists(path + ".partial"));
+  const std::string path = write_test_file("written.json", calibration_text(doc));
   const ContactCalibration back = read_calibration(path, "written.json");
 
   EXPECT_EQ(back.path, fs::absolute(path).lexically_normal().string());
@@ -503,17 +500,6 @@ TEST(Calibration, WriterReproducesTheExampleFile) {
   doc.outer_fit = record("outer");
   doc.case_source = file["case"];
   EXPECT_EQ(calibration_text(doc), text);
-}
-
-// A file that cannot be written leaves nothing behind.
-TEST(Calibration, FailedWriteLeavesNothing) {
-  namespace fs = std::filesystem;
-  CalibrationDocument doc;
-  doc.calibration.bearing = case_bearing();
-  const fs::path path = test::test_dir() / "no such folder" / "cal.json";
-  EXPECT_THROW(bearing::write_calibration(doc, path.string()), InputError);
-  EXPECT_FALSE(fs::exists(path));
-  EXPECT_FALSE(fs::exists(path.string() + ".partial"));
 }
 
 }  // namespace

@@ -1,6 +1,6 @@
-// The FE-calibrated contact law: writing and reading calibration.json (its keys are spelled here
-// alone), checking it belongs to the case's bearing, and the law of a ball between two calibrated
-// races (calibration.h).
+// The FE-calibrated contact law: the text of calibration.json and reading it back (its keys are
+// spelled here alone), checking it belongs to the case's bearing, and the law of a ball between
+// two calibrated races (calibration.h).
 
 #include "bearing/calibration.h"
 
@@ -221,24 +221,6 @@ std::string calibration_text(const CalibrationDocument& doc) {
   if (!cal.geometry.empty()) j["geometry"] = cal.geometry;
   // Keys sorted (nlohmann's default object); numbers in their shortest exact form.
   return j.dump(2) + "\n";
-}
-
-void write_calibration(const CalibrationDocument& doc, const std::string& path) {
-  const std::string text = calibration_text(doc);
-  // Complete or nothing: written to a temporary name, then renamed.
-  const std::filesystem::path file(path), partial = path + ".partial";
-  {
-    std::ofstream out(partial);
-    const bool opened = out.is_open();
-    out << text;
-    out.close();
-    if (!out) {
-      std::error_code ignored;
-      if (opened) std::filesystem::remove(partial, ignored);  // the part that was written
-      throw InputError("cannot write " + partial.string());
-    }
-  }
-  std::filesystem::rename(partial, file);
 }
 
 ContactCalibration parse_calibration(std::string_view json_text, const std::string& path,

@@ -1,9 +1,5 @@
 #include "bearing/output.h"
 
-#include <fcntl.h>
-#include <sys/file.h>
-#include <unistd.h>
-
 #include <algorithm>
 #include <cerrno>
 #include <cmath>
@@ -18,6 +14,7 @@
 #include <vector>
 
 #include "bearing/acoustics/sources.h"
+#include "bearing/atomic_file_set.h"
 #include "bearing/constants.h"
 #include "bearing/decimal.h"
 #include "bearing/errors.h"
@@ -104,29 +101,6 @@ class BufferedFile {
   std::FILE* file_;
   std::unique_ptr<char[]> buffer_;
   std::size_t used_ = 0;
-};
-
-// An exclusive flock(2) on `path` (created if missing, never removed: removing it would let a
-// second run lock a new file while a third still waits on the old one), held while alive.
-class FolderLock {
- public:
-  explicit FolderLock(const fs::path& path)
-      : fd_(::open(path.c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0644)) {
-    if (fd_ < 0)
-      throw OutputError("cannot create " + path.string() + " (" + std::strerror(errno) + ")");
-    while (::flock(fd_, LOCK_EX) != 0)
-      if (errno != EINTR) {
-        const std::string why = std::strerror(errno);
-        ::close(fd_);
-        throw OutputError("cannot lock " + path.string() + " (" + why + ")");
-      }
-  }
-  ~FolderLock() { ::close(fd_); }  // closing releases the lock
-  FolderLock(const FolderLock&) = delete;
-  FolderLock& operator=(const FolderLock&) = delete;
-
- private:
-  int fd_;
 };
 
 // `what` builds the message only when it is needed (the check runs for every value written).
@@ -258,22 +232,6 @@ std::string columns_json(const std::vector<std::string>& files,
                              {"columns", tables[i].columns},
                              {"units", tables[i].units}};
   return j.dump(2) + "\n";
-}
-
-// Puts the complete file `from` under the name `to` in one step, so a kill at any moment leaves
-// `to` the old file or the new one, never neither. An existing `to` is swapped with `from`
-// (renameat2 RENAME_EXCHANGE) and the old file, now under `from`, removed: a plain rename onto
-// an existing file makes ext4 write the new file's blocks out at once (auto_da_alloc, ~4 ms for
-// the default run), which the exchange does not. Without the exchange (no `to` yet, a file
-// system or kernel without it) a plain rename.
-void replace_file(const fs::path& from, const fs::path& to) {
-#ifdef RENAME_EXCHANGE
-  if (::renameat2(AT_FDCWD, from.c_str(), AT_FDCWD, to.c_str(), RENAME_EXCHANGE) == 0) {
-    fs::remove(from);
-    return;
-  }
-#endif
-  fs::rename(from, to);
 }
 
 void write_text(const fs::path& path, const std::string& text) {
@@ -540,16 +498,8 @@ void write_run(const std::string& dir, const Case& c, const SimulationResult& r,
   if (s.noise) names.push_back("pressure" + ext);
   if (!s.envelopes.empty()) names.push_back("envelope" + ext);
   if (format == OutputFormat::npy) names.push_back("columns.json");
-  const auto temporary_of = [&](const std::string& name) {
-    return fs::path(dir) / ("." + name + ".partial");
-  };
-  std::vector<fs::path> temporary;
-  for (const auto& name : names) temporary.push_back(temporary_of(name));
-  // Runs into one folder write and commit one at a time (two at once would write the same
-  // temporary files); the lock goes with the process, so a killed run holds nothing.
-  const FolderLock lock(fs::path(dir) / ".run.lock");
   // Every result file a run can write: those not in this set are an earlier run's (another
-  // format, no acoustics or envelope now) and go; so do their temporaries a killed run left.
+  // format, no acoustics or envelope now) and go, with their temporaries a killed run left.
   std::vector<std::string> stale;
   for (const char* stem : {"response", "spectrum", "pressure", "envelope"})
     for (const char* e : {".csv", ".npy"}) stale.push_back(std::string(stem) + e);
@@ -559,32 +509,26 @@ void write_run(const std::string& dir, const Case& c, const SimulationResult& r,
                                return std::find(names.begin(), names.end(), n) != names.end();
                              }),
               stale.end());
-  for (const auto& name : stale) fs::remove(temporary_of(name), ec);
-  try {
-    std::vector<std::string> table_files;
-    std::vector<TableLayout> tables;
-    const auto table = [&](std::size_t i, TableLayout layout) {
-      table_files.push_back(names[i]);
-      tables.push_back(std::move(layout));
-    };
-    table(0, write_response(temporary[0], format, r.response));
-    table(1, write_spectrum(temporary[1], format, r.response, s));
-    write_text(temporary[2], summary);
-    write_text(temporary[3], resolved);
-    std::size_t next = 4;
-    if (s.noise) table(next, write_pressure(temporary[next], format, *s.noise)), ++next;
-    if (!s.envelopes.empty()) table(next, write_envelope(temporary[next], format, s)), ++next;
-    if (format == OutputFormat::npy) write_text(temporary[next], columns_json(table_files, tables));
-    for (std::size_t i = 0; i < names.size(); ++i)
-      replace_file(temporary[i], fs::path(dir) / names[i]);
-    for (const auto& name : stale) fs::remove(fs::path(dir) / name);
-  } catch (const fs::filesystem_error& e) {
-    for (const auto& t : temporary) fs::remove(t, ec);
-    throw OutputError("--out " + dir + ": " + e.what());
-  } catch (...) {
-    for (const auto& t : temporary) fs::remove(t, ec);
-    throw;
-  }
+  // Runs into one folder write and commit one at a time (two at once would write the same
+  // temporary files); a failure removes what was written.
+  AtomicFileSet files(dir, names, stale, "--out " + dir);
+  std::vector<fs::path> temporary;
+  for (const auto& name : names) temporary.push_back(files.temporary(name));
+  std::vector<std::string> table_files;
+  std::vector<TableLayout> tables;
+  const auto table = [&](std::size_t i, TableLayout layout) {
+    table_files.push_back(names[i]);
+    tables.push_back(std::move(layout));
+  };
+  table(0, write_response(temporary[0], format, r.response));
+  table(1, write_spectrum(temporary[1], format, r.response, s));
+  write_text(temporary[2], summary);
+  write_text(temporary[3], resolved);
+  std::size_t next = 4;
+  if (s.noise) table(next, write_pressure(temporary[next], format, *s.noise)), ++next;
+  if (!s.envelopes.empty()) table(next, write_envelope(temporary[next], format, s)), ++next;
+  if (format == OutputFormat::npy) write_text(temporary[next], columns_json(table_files, tables));
+  files.commit();
 }
 
 }  // namespace bearing

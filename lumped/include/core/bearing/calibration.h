@@ -1,7 +1,7 @@
 #pragma once
 // The FE-calibrated contact law (`[model] contact = "calibrated"`, DESIGN.md "ContactLaw"): the
 // load–deflection law Q = K δ^n of each race, fitted by `bearing-fem calibrate` to a finite-element
-// force–approach curve (MODEL.md §9), written by it as calibration.json (write_calibration) and
+// force–approach curve (MODEL.md §9), written by it as calibration.json (calibration_text) and
 // read back from it (read_calibration): the file's keys live in calibration.cc alone.
 //
 // The file (SI units; numbers in their shortest exact form):
@@ -82,11 +82,6 @@ struct CalibrationDocument {
 /// final newline. What parse_calibration gives for an absent key is written as absent: a race's
 /// fit_residual of −1 (not given), a load range of [0, 0] (none) and an empty geometry.
 std::string calibration_text(const CalibrationDocument& doc);
-
-/// Writes calibration_text(doc) to `path` complete or not at all: to `path`.partial, then renamed.
-/// Throws InputError if it cannot be written, std::filesystem::filesystem_error if the rename
-/// fails.
-void write_calibration(const CalibrationDocument& doc, const std::string& path);
 
 /// Parses and validates calibration JSON. `shown` names the input in messages, e.g.
 /// `model.calibration = "cal.json"`; `path` is stored as is. Throws InputError ("<shown>: <key> =
