@@ -1,8 +1,8 @@
 #!/usr/bin/python3
 """The drive-end channel of each CWRU record as float32 .npy, for tests that need the measured
-signals without ../shared (README.md in this folder).
+signals without the original files (README.md in this folder).
 
-    /usr/bin/python3 tests/data/cwru/make_npy.py ../shared/data/cwru tests/data/cwru
+    /usr/bin/python3 tests/data/cwru/make_npy.py MAT_FOLDER tests/data/cwru
 
 For each NNN_*.mat in SOURCE: the variable XNNN_DE_time (drive-end accelerometer, g; a column
 vector of float64 in the file) flattened to 1-D and rounded to float32 by numpy's astype (IEEE
