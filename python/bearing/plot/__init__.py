@@ -13,6 +13,9 @@ FOLDER is recognised by its files:
   the envelope spectra, peaks, band, spectral kurtosis and diagnosis; ``ball_loads`` (with
   ``output.ball_loads``): Q_j against the ball's angle around the bearing (polar) and in time;
   ``spl`` (with ``[acoustics]``): the SPL per microphone (total, ring, balls) and p(t);
+  ``sensor`` (with ``[housing]``): the housing's ay_housing beside the ring's ay over the last
+  ball passes, both spectra with f_h marked, and each one's cumulative energy share against
+  frequency (the orbit is then the ring relative to the housing);
 - a sweep (``bearing-sim sweep --out FOLDER``: ``sweep.csv``) gives ``sweep_<statistic>`` (rms,
   ptp, kurtosis, crest, peak_frequency; one panel per ring channel) and ``sweep_spl``: against the
   varied key as lines (one key), as heat maps (two keys), as points against each key (three and

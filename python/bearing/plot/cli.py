@@ -15,8 +15,8 @@ from .contact_figure import contact_figure
 
 # --- folders and the command line ------------------------------------------------------------
 
-KNOWN_NAMES = ("time", "orbit", "spectrum", "envelope", "ball_loads", "spl", "force_approach",
-               "sweep_spl") + tuple("sweep_" + s for s in STATISTICS)
+KNOWN_NAMES = ("time", "orbit", "spectrum", "envelope", "ball_loads", "spl", "sensor",
+               "force_approach", "sweep_spl") + tuple("sweep_" + s for s in STATISTICS)
 
 
 def figures_of(folder):
