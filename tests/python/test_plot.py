@@ -9,9 +9,10 @@ the files exist, are images of the expected size, and the plotted data are the f
 
 CASE: run (default case: time, orbit, spectrum), run_outputs (envelope, ball loads, acoustics,
 output.format = "npy"), run_housing (the sensor figure of a case with [housing]), sweep2 (2 x 2:
-heat maps), sweep1 (one key with acoustics: lines), contact_example (examples/seed003_6308_calibration_inner, a committed bearing-fem output),
-contact_fem (a fresh bearing-fem contact run; needs --fem), cli (formats, default --out, errors,
-import without the compiled extension).
+heat maps), sweep1 (one key with acoustics: lines), contact_example
+(examples/seed003_6308_calibration_inner, a committed bearing-fem output), contact_fem (a fresh
+bearing-fem contact run; needs --fem), cli (formats, default --out, errors, import without the
+compiled extension).
 """
 import argparse
 import csv
