@@ -137,11 +137,14 @@ const Range kRanges[] = {
     {"cage.slide_speed", 0.01, 1, true, &bearing::limits::cage_slide_speed},
     {"solver.dt", 0.5e-6, 5e-6, true, &bearing::limits::solver_dt},
     {"solver.tolerance", 1e-8, 1e-4, true, &bearing::limits::solver_tolerance},
+    {"housing.mass", 0.05, 5, true, &bearing::limits::housing_mass},
+    {"housing.frequency", 500, 10e3, true, &bearing::limits::housing_frequency},
+    {"housing.damping_ratio", 0, 0.3, false, &bearing::limits::housing_damping_ratio},
 };
 
 class CaseDraw {
  public:
-  explicit CaseDraw(std::uint64_t seed) : rng_(seed) {}
+  explicit CaseDraw(std::uint64_t seed) : rng_(seed), housing_rng_(seed + 1) {}
 
   double u(double lo, double hi) { return std::uniform_real_distribution<double>(lo, hi)(rng_); }
   int integer(int lo, int hi) { return std::uniform_int_distribution<int>(lo, hi)(rng_); }
@@ -167,8 +170,30 @@ class CaseDraw {
   std::string next();
 
  private:
+  // [housing] for a kind that carries it, from a stream of its own: the draws of the other keys
+  // stay those made before the table existed.
+  std::string housing(const bearing::ModelDescriptor& kind);
+
   std::mt19937_64 rng_;
+  std::mt19937_64 housing_rng_;
 };
+
+std::string num(double v);
+
+std::string CaseDraw::housing(const bearing::ModelDescriptor& kind) {
+  const auto u = [&](double lo, double hi) {
+    return std::uniform_real_distribution<double>(lo, hi)(housing_rng_);
+  };
+  if (!kind.housing || u(0, 1) >= 0.3) return "";
+  std::ostringstream t;
+  t << "[housing]\n";
+  for (const char* key : {"housing.mass", "housing.frequency", "housing.damping_ratio"})
+    for (const Range& r : kRanges)
+      if (std::string(key) == r.key)
+        t << std::string(key).substr(8) << " = "
+          << num(r.log ? std::exp(u(std::log(r.lo), std::log(r.hi))) : u(r.lo, r.hi)) << "\n";
+  return t.str();
+}
 
 std::string num(double v) {
   std::ostringstream s;
@@ -266,6 +291,7 @@ std::string CaseDraw::next() {
     const double lo = u(500, 3000);
     t << "envelope_band = [" << num(lo) << ", " << num(u(lo + 1000, rate / 2)) << "]\n";
   }
+  t << housing(kind);
   return t.str();
 }
 

@@ -59,7 +59,15 @@ go npy run "$ex/seed000_608_quasistatic.toml" $S --set output.format=npy --set o
 go sweep1 sweep "$ex/seed003_6308.toml" $S --vary operation.speed=1000rpm:3000rpm:3 --vary bearing.balls=7:9:2
 go sweep_noise sweep "$ex/seed000_608_quasistatic.toml" $S --vary operation.load.1=-60:-40:2
 go sweep_fail sweep $S --vary solver.dt=1us:2ms:2
+# the housing and its sensor channels (2dof, 3dof; info lists the coupled modes)
+H="--set housing.mass=1kg --set housing.frequency=3kHz"
+go housing_2dof run "$ex/cwru_6205_outer.toml" $S $H --set output.ball_loads=true
+go housing_3dof run $S $H --set model.kind=3dof --set operation.axial_load=100 --set solver.method=newmark
+go info_housing info "$ex/cwru_6205_outer.toml" $H --json
 # input errors (messages and exit codes)
+go e_housing_balls run "$ex/seed004_6304.toml" $H
+go e_housing_freq run --set housing.mass=1kg
+go e_housing_zeta run $H --set housing.damping_ratio=1
 go e_kind run --set model.kind=4dof
 go e_method run --set solver.method=euler
 go e_contact run --set model.contact=calibratd

@@ -10,7 +10,8 @@ the files exist, are images of the expected size, and the plotted data are the f
 CASE: run (default case: time, orbit, spectrum), run_outputs (envelope, ball loads, acoustics,
 output.format = "npy"), run_3dof (the 3-DOF model with an axial load: z, az in time,
 spectrum and envelope), run_balls (seed 004's ball-DOF model with an axial load and every
-per-ball output: z, az and the ball_channels figure), sweep2 (2 x 2: heat maps), sweep1 (one key
+per-ball output: z, az and the ball_channels figure), run_housing (the sensor figure of a case
+with [housing]), sweep2 (2 x 2: heat maps), sweep1 (one key
 with acoustics: lines), contact_example (examples/seed003_6308_calibration_inner, a committed
 bearing-fem output), contact_fem (a fresh bearing-fem contact run; needs --fem),
 calibration_example (examples/seed003_6308_calibration.json and its race folders),
@@ -347,6 +348,43 @@ def case_run_balls(args, plot):
     want = 2 * plot.BALL_PASSES_ZOOMED / summary["frequencies"]["bpfo"]
     check(abs(span - want) < 2 / 20000.0, "ball_channels: spans %d ball passes (%.4g s)"
           % (2 * plot.BALL_PASSES_ZOOMED, span))
+
+
+def case_run_housing(args, plot):
+    """A run with [housing]: the sensor figure draws response.csv's ay and ay_housing and
+    spectrum.csv's, their energy shares are the spectra's own, and the orbit is the ring relative
+    to the housing; the other figures as for any run."""
+    folder = os.path.join(args.work, "run_housing")
+    run_sim(args, "run", "--out", folder, *SHORT, "--set", "operation.load=[0, -500]",
+            "--set", "housing.mass=1kg", "--set", "housing.frequency=3kHz")
+    result = plot_cli(args, folder)
+    check(result.returncode == 0, "bearing-plot exits 0 (%s)" % result.stderr.strip())
+    check_files(plot, os.path.join(folder, "plots"), ["time", "orbit", "spectrum", "sensor"])
+    figures = plot.run_figures(plot.load_run(folder))
+    summary = json.load(open(os.path.join(folder, "summary.json")))
+    response = csv_columns(os.path.join(folder, "response.csv"))
+    spectrum = csv_columns(os.path.join(folder, "spectrum.csv"))
+    factor = plot.DISPLAY["m/s^2"][1]
+    t = response["t"]
+    for c in ("ay", "ay_housing"):
+        zoom = artist(figures["sensor"], "sensor_time:" + c).get_xydata()
+        n = len(zoom)
+        check(n > 10 and same(zoom, np.column_stack([t[-n:], response[c][-n:] * factor])),
+              "sensor: %s over the last ball passes equals response.csv" % c)
+        check(same(artist(figures["sensor"], "sensor_spectrum:" + c).get_xydata(),
+                   np.column_stack([spectrum["frequency"], spectrum[c] * factor])),
+              "sensor: the spectrum of %s equals spectrum.csv" % c)
+        f, amplitude = spectrum["frequency"], spectrum[c]
+        power = np.where(f > 0, amplitude ** 2, 0.0)
+        share = artist(figures["sensor"], "sensor_energy:" + c).get_ydata()
+        check(np.allclose(share, np.cumsum(power) / power.sum(), rtol=1e-12, atol=0),
+              "sensor: the energy share of %s is the cumulative squared spectrum" % c)
+    steady = t >= summary["case"]["transient"]
+    um = plot.DISPLAY["m"][1]
+    check(same(artist(figures["orbit"], "orbit").get_xydata(),
+               np.column_stack([(response["x"] - response["x_housing"])[steady] * um,
+                                (response["y"] - response["y_housing"])[steady] * um])),
+          "orbit: with a housing, the ring relative to it")
 
 
 # --- sweeps -----------------------------------------------------------------------------------

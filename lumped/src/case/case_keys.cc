@@ -4,6 +4,9 @@
 // preset, waviness entries, ball errors, the calibration file, acoustics) have them in
 // case_rules.cc.
 
+#include <cmath>
+#include <limits>
+
 #include "bearing/constants.h"
 #include "bearing/models/ball_dofs.h"
 #include "bearing/models/model_registry.h"
@@ -319,6 +322,55 @@ std::vector<Key> ball_keys() {
   };
 }
 
+// A [housing] key: range-checked, and if `required` refused when missing, only when the table is
+// there (absent, the housing is off and its keys keep their defaults, unchecked). A missing
+// required key lands as NaN (the reader takes finite numbers only) and is reported by the check,
+// after the table's unknown keys, so `mas = "1 kg"` is answered with "did you mean mass".
+template <class At>
+Key housing_quantity(std::string name, Dimension dim, std::string help, At at, const Limit& limit,
+                     bool required) {
+  Key k = quantity(
+      std::move(name), dim, std::move(help), at, unchecked(), [at, required](const Case& c) {
+        return c.housing.enabled && required ? std::numeric_limits<double>::quiet_NaN() : at(c);
+      });
+  require_own_limit(limit, k.name);
+  k.check = [at, key = k.name, dim, limit](const Case& c) {
+    if (!c.housing.enabled) return;
+    if (std::isnan(at(c)))
+      throw InputError(key +
+                       " is missing: [housing] needs mass and frequency (the resonance the "
+                       "sensor sees), e.g. mass = \"1 kg\", frequency = \"3 kHz\"");
+    check_limit(limit, key, at(c), dim);
+  };
+  return k;
+}
+
+std::vector<Key> housing_keys() {
+  Key t = table("housing",
+                "the outer ring on its own support, and the sensor's resonance (2dof, 3dof); "
+                "present: on");
+  // The table's presence turns the housing on.
+  t.before = [](const TableReader& r, Case& c) { c.housing.enabled = r.present(); };
+  t.after = [](Case& c) { check_housing_supported(c.model.kind, c.housing); };
+  t.written = [](const Case& c) { return c.housing.enabled; };
+  return {
+      t,
+      housing_quantity(
+          "housing.mass", D::mass,
+          "modal mass of the outer ring with its housing and sensor, m_h (required)",
+          [](auto& c) -> auto& { return c.housing.mass; }, limits::housing_mass, true),
+      housing_quantity(
+          "housing.frequency", D::frequency,
+          "natural frequency f_h of the housing on its support alone (required)",
+          [](auto& c) -> auto& { return c.housing.frequency; }, limits::housing_frequency, true),
+      housing_quantity(
+          "housing.damping_ratio", D::dimensionless,
+          "damping ratio of the housing's resonance in [0, 1) (default 0.05)",
+          [](auto& c) -> auto& { return c.housing.damping_ratio; }, limits::housing_damping_ratio,
+          false),
+  };
+}
+
 std::vector<Key> solver_keys() {
   Key t = table("solver", "time integration");
   t.after = check_solver_times;
@@ -453,9 +505,9 @@ std::vector<Key> acoustics_keys() {
 
 std::vector<Key> all_keys() {
   std::vector<Key> out;
-  for (auto part :
-       {bearing_keys, material_keys, rotor_keys, operation_keys, waviness_keys, ball_error_keys,
-        model_keys, defect_keys, cage_keys, ball_keys, solver_keys, output_keys, acoustics_keys})
+  for (auto part : {bearing_keys, material_keys, rotor_keys, operation_keys, waviness_keys,
+                    ball_error_keys, model_keys, defect_keys, cage_keys, ball_keys, housing_keys,
+                    solver_keys, output_keys, acoustics_keys})
     for (Key& k : part()) out.push_back(std::move(k));
   return out;
 }

@@ -37,12 +37,14 @@ const std::vector<ModelDescriptor>& model_registry() {
        {},
        false,
        false,
+       true,
        free_angle,
        make_two_dof_model},
       {ModelKind::three_dof,
        "x, y and the axial z under an axial load or preload (seed 001)",
        {},
        false,
+       true,
        true,
        loaded_angle,
        make_three_dof_model},
@@ -51,6 +53,7 @@ const std::vector<ModelDescriptor>& model_registry() {
        {"cage", "ball"},
        true,
        true,
+       false,
        ball_angle,
        [](const ModelInputs& in) -> std::unique_ptr<BearingModel> {
          return make_ball_dof_model(in);
@@ -58,6 +61,7 @@ const std::vector<ModelDescriptor>& model_registry() {
       {ModelKind::quasi_static,
        "equilibrium per output instant, no inertia (seed 000)",
        {},
+       false,
        false,
        false,
        free_angle,
@@ -101,13 +105,52 @@ void check_axial_load_supported(ModelKind kind, double axial_load, double radial
                    "); allowed: 0 with this kind, or model.kind = " + carriers);
 }
 
+void check_housing_supported(ModelKind kind, const Housing& housing) {
+  if (!housing.enabled || model_descriptor(kind).housing) return;
+  std::string carriers;
+  for (const ModelDescriptor& d : model_registry())
+    if (d.housing)
+      carriers +=
+          std::string(carriers.empty() ? "" : " or ") + "\"" + name_of(kModelKinds, d.kind) + "\"";
+  const std::string why =
+      model_descriptor(kind).dynamic
+          ? "its balls' inertia would have to follow the moving outer ring, which it does not model"
+          : "it has no inertia, and the housing is a resonance";
+  throw InputError("[housing]: model.kind = \"" + std::string(name_of(kModelKinds, kind)) +
+                   "\" keeps the outer ring fixed to the ground (" + why +
+                   "); the housing needs model.kind = " + carriers + ", or remove [housing]");
+}
+
+std::unique_ptr<BearingModel> make_dynamic_model(ModelKind kind, const ModelInputs& inputs) {
+  const ModelDescriptor& d = model_descriptor(kind);
+  if (!d.dynamic)
+    throw InputError("model.kind = \"" + std::string(name_of(kModelKinds, kind)) +
+                     "\" has no equations of motion (no integrator runs it)");
+  if (!inputs.housing.enabled) return d.dynamic(inputs);
+  check_housing_supported(kind, inputs.housing);
+  // The bearing's force without the ring loads is what it exerts on the inner ring (housing.h);
+  // the static start comes from the model with them.
+  ModelInputs bearing_only = inputs;
+  bearing_only.load = Eigen::Vector2d::Zero();
+  bearing_only.unbalance = 0.0;
+  bearing_only.gravity = false;
+  RingLoad load;
+  load.constant = inputs.radial_load();
+  load.unbalance_force = inputs.unbalance * inputs.inner_speed * inputs.inner_speed;
+  load.shaft_speed = inputs.inner_speed;
+  return make_housing_model(d.dynamic(bearing_only), load, inputs.housing,
+                            d.dynamic(inputs)->initial_displacement());
+}
+
 std::unique_ptr<ModelRun> make_run(ModelKind kind, const ModelInputs& inputs,
                                    const SolverSettings& solver) {
   const ModelDescriptor& d = model_descriptor(kind);
   check_defects_supported(kind, inputs.defects);
   check_axial_load_supported(kind, inputs.axial_load, inputs.radial_load().norm());
+  check_housing_supported(kind, inputs.housing);
   if (d.dynamic)
-    return make_dynamic_run(d.dynamic(inputs), inputs, solver, d.contact_angle(inputs));
+    return make_dynamic_run(make_dynamic_model(kind, inputs), inputs, solver,
+                            d.contact_angle(inputs));
   return d.run(inputs, solver);
 }
 

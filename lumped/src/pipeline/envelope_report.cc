@@ -111,8 +111,11 @@ std::string envelope_text(const RunSummary& s) {
                 "Envelope spectra (spectral kurtosis over a noise floor of %.3g of the energy):\n",
                 kEnvelopeNoiseFloor);
   out += buf;
+  int width = 3;  // the channel names in one column: ax, ay and ay_housing
+  for (const EnvelopeSummary& e : s.envelopes)
+    width = std::max(width, static_cast<int>(e.channel.size()));
   for (const EnvelopeSummary& e : s.envelopes) {
-    std::snprintf(buf, sizeof buf, "  %-3s %s (%s), SK %.3g: ", e.channel.c_str(),
+    std::snprintf(buf, sizeof buf, "  %-*s %s (%s), SK %.3g: ", width, e.channel.c_str(),
                   band_text(e.band).c_str(), source_text(e.source), e.spectral_kurtosis);
     out += buf + lines_text(e.peaks, 4, e.unit) + "\n";
   }

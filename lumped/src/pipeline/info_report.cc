@@ -71,6 +71,8 @@ InfoReport compute_info(const Case& c) {
     info.max_step = info.crossing / kStepsPerDefectCrossing;
     r.defects.push_back(info);
   }
+  if (c.housing.enabled)
+    r.housing_modes = housing_modes(*make_dynamic_model(c.model.kind, static_model_inputs(c)));
   return r;
 }
 
@@ -128,6 +130,18 @@ nlohmann::json info_json(const InfoReport& r) {
                             {"crossing", finite_or_null(info.crossing)},
                             {"max_step", finite_or_null(info.max_step)}});
   }
+  if (r.input.housing.enabled) {
+    const Housing& h = r.input.housing;
+    json modes = json::array();
+    for (const HousingMode& m : r.housing_modes)
+      modes.push_back({{"frequency", m.frequency}, {"housing_share", m.housing_share}});
+    j["housing"] = {{"mass", h.mass},
+                    {"frequency", h.frequency},
+                    {"damping_ratio", h.damping_ratio},
+                    {"stiffness", h.stiffness()},
+                    {"damping", h.damping()},
+                    {"modes", modes}};
+  }
   // K is in N/m^n with the exponent n beside it (1.5 for the Hertz methods).
   const std::string k_unit = cal ? "N/m^exponent" : "N/m^1.5";
   j["units"] = {{"case.speed", "rad/s"},
@@ -154,6 +168,15 @@ nlohmann::json info_json(const InfoReport& r) {
       j["units"][k] = "m";
     j["units"]["defects.crossing"] = "s";
     j["units"]["defects.max_step"] = "s";
+  }
+  if (r.input.housing.enabled) {
+    j["units"]["housing.mass"] = "kg";
+    j["units"]["housing.frequency"] = "Hz";
+    j["units"]["housing.damping_ratio"] = "1";
+    j["units"]["housing.stiffness"] = "N/m";
+    j["units"]["housing.damping"] = "N s/m";
+    j["units"]["housing.modes.frequency"] = "Hz";
+    j["units"]["housing.modes.housing_share"] = "1";
   }
   if (cal) {
     j["units"]["contact.calibration.load_range"] = "N";
@@ -224,6 +247,22 @@ std::string calibrated_law_text(const ContactCalibration& cal, const ContactCons
 namespace {
 
 // The defects as the contacts see them, and the step they ask for.
+// The housing and what it becomes with the bearing on it, for info_text; empty without one.
+std::string housing_text(const InfoReport& r) {
+  const Housing& h = r.input.housing;
+  if (!h.enabled) return "";
+  std::ostringstream o;
+  o << "\nHousing (outer ring on its support)\n  m_h = " << num(h.mass)
+    << " kg, f_h = " << num(h.frequency) << " Hz alone, damping ratio " << num(h.damping_ratio)
+    << ": k_h = " << num(h.stiffness(), 4) << " N/m, c_h = " << num(h.damping(), 4) << " N s/m\n"
+    << "  with the bearing, linearised at the static state (undamped), the modes:\n";
+  o << "  " << rpad("frequency [Hz]", 16) << rpad("housing share", 16) << "\n";
+  for (const HousingMode& m : r.housing_modes)
+    o << "  " << rpad(num(m.frequency, 5), 16) << rpad(fixed(100 * m.housing_share, 1) + " %", 16)
+      << "\n";
+  return o.str();
+}
+
 std::string defects_text(const InfoReport& r) {
   if (r.defects.empty()) return "";
   std::ostringstream o;
@@ -335,6 +374,7 @@ std::string info_text(const InfoReport& r) {
         << rpad(fixed(s.ball_approach[j] * 1e6, 4), 16) << rpad(num(s.ball_loads[j]), 14) << "\n";
   }
   o << defects_text(r);
+  o << housing_text(r);
   return o.str();
 }
 

@@ -311,6 +311,13 @@ nlohmann::json summary_json(const Case& c, const SimulationResult& r, const RunS
                  {"ball_inertia", c.ball.inertia},
                  {"ball_damping", c.ball.damping},
                  {"centrifugal", c.ball.centrifugal}};
+  // The outer ring's support as it ran (housing.h); absent when the outer ring is fixed.
+  if (c.housing.enabled)
+    j["housing"] = {{"mass", c.housing.mass},
+                    {"frequency", c.housing.frequency},
+                    {"damping_ratio", c.housing.damping_ratio},
+                    {"stiffness", c.housing.stiffness()},
+                    {"damping", c.housing.damping()}};
   j["channels"] = json::object();
   j["peaks"] = json::object();
   for (const auto& ch : s.channels) {
@@ -375,6 +382,13 @@ nlohmann::json summary_json(const Case& c, const SimulationResult& r, const RunS
     j["units"]["cage.ball_inertia"] = "kg m^2";
     j["units"]["cage.ball_damping"] = "N s/m";
   }
+  if (c.housing.enabled) {
+    j["units"]["housing.mass"] = "kg";
+    j["units"]["housing.frequency"] = "Hz";
+    j["units"]["housing.damping_ratio"] = "1";
+    j["units"]["housing.stiffness"] = "N/m";
+    j["units"]["housing.damping"] = "N s/m";
+  }
   if (!s.envelopes.empty()) {
     j["envelope"] = envelope_json(s.envelopes);
     add_envelope_units(j["units"]);
@@ -416,15 +430,27 @@ std::string summary_text(const Case& c, const SimulationResult& r, const RunSumm
                   c.ball.centrifugal ? "on" : "off");
     o << buf;
   }
+  if (c.housing.enabled) {
+    std::snprintf(buf, sizeof buf,
+                  "Housing: %.4g kg at %.4g Hz on its support alone, damping ratio %.4g "
+                  "(k %.4g N/m, c %.4g N s/m)\n",
+                  c.housing.mass, c.housing.frequency, c.housing.damping_ratio,
+                  c.housing.stiffness(), c.housing.damping());
+    o << buf;
+  }
   std::snprintf(buf, sizeof buf, "Statistics over %.4g s after a %.4g s transient:\n",
                 c.solver.duration - c.solver.transient, c.solver.transient);
   o << buf;
+  int width = 3;  // the names in one column: x, vy, ... and ay_housing
+  for (const auto& ch : s.channels)
+    if (ch.group != ChannelGroup::ball) width = std::max(width, static_cast<int>(ch.name.size()));
   for (const auto& ch : s.channels) {
     if (ch.group == ChannelGroup::ball) continue;
     const auto& st = ch.statistics;
     std::snprintf(buf, sizeof buf,
-                  "  %-3s mean %11.4g  rms %11.4g  ptp %11.4g %-6s kurtosis %6.3f  crest %6.3f",
-                  ch.name.c_str(), st.mean, st.rms, st.ptp, ch.unit.c_str(), st.kurtosis, st.crest);
+                  "  %-*s mean %11.4g  rms %11.4g  ptp %11.4g %-6s kurtosis %6.3f  crest %6.3f",
+                  width, ch.name.c_str(), st.mean, st.rms, st.ptp, ch.unit.c_str(), st.kurtosis,
+                  st.crest);
     o << buf;
     if (!ch.peaks.empty()) {
       const auto& p = ch.peaks.front();

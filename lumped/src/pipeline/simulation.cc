@@ -23,6 +23,7 @@ ModelInputs model_inputs(const Case& c) {
   in.damping = c.rotor.damping;
   in.axial_mass = c.rotor.axial_mass;
   in.axial_damping = c.rotor.axial_damping;
+  in.housing = c.housing;
   in.inner_waviness.harmonics = c.excitation.inner_waviness;
   in.outer_waviness.harmonics = c.excitation.outer_waviness;
   in.ball_size_errors = c.excitation.ball_size_errors;
@@ -57,11 +58,7 @@ RunSettings run_settings(const Case& c) {
 }
 
 std::unique_ptr<BearingModel> make_model(const Case& c) {
-  const ModelDescriptor& d = model_descriptor(c.model.kind);
-  if (!d.dynamic)
-    throw InputError("model.kind = \"" + std::string(name_of(kModelKinds, c.model.kind)) +
-                     "\" has no equations of motion (no integrator runs it)");
-  return d.dynamic(model_inputs(c));
+  return make_dynamic_model(c.model.kind, model_inputs(c));
 }
 
 RunKinematics SimulationResult::kinematics() const {

@@ -18,6 +18,9 @@ FOLDER is recognised by its files:
   or an ``[acoustics]`` ball source, and for ``balls`` ``output.ball_dynamics``): each per-ball
   channel d_j, r_j, vr_j, wb_j, Qo_j, Fi_j, Fo_j of every ball in time; ``spl`` (with
   ``[acoustics]``): the SPL per microphone (total, ring, balls) and p(t);
+  ``sensor`` (with ``[housing]``): the housing's ay_housing beside the ring's ay over the last
+  ball passes, both spectra with f_h marked, and each one's cumulative energy share against
+  frequency (the orbit is then the ring relative to the housing);
 - a sweep (``bearing-sim sweep --out FOLDER``: ``sweep.csv``) gives ``sweep_<statistic>`` (rms,
   ptp, kurtosis, crest, peak_frequency; one panel per ring channel) and ``sweep_spl``: against the
   varied key as lines (one key), as heat maps (two keys), as points against each key (three and

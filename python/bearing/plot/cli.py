@@ -17,7 +17,7 @@ from .calibration_figure import calibration_figure
 # --- folders and the command line ------------------------------------------------------------
 
 KNOWN_NAMES = ("time", "orbit", "spectrum", "envelope", "ball_loads", "ball_channels", "spl",
-               "force_approach", "calibration", "sweep_spl") + tuple("sweep_" + s
+               "sensor", "force_approach", "calibration", "sweep_spl") + tuple("sweep_" + s
                                                                     for s in STATISTICS)
 
 

@@ -15,6 +15,7 @@ SIZES = {
     "orbit": (13.0, 6.6),
     "spectrum": (13.0, 8.5),
     "spectrum_axial": (15.0, 8.5),
+    "sensor": (13.0, 8.5),
     "envelope": (13.0, 7.0),
     "ball_loads": (13.0, 6.2),
     "spl": (13.0, 5.6),

@@ -10,6 +10,7 @@ from .common import (
     BALL_PASSES_ZOOMED, DISPLAY, DPI, _frequency_limit, _new_figure, _nice_ceiling, _style,
     _wrap, ball_channels_size, channel_label, channel_unit, load_line_passes, ring_channel)
 from .panels import ball_load_axes, orbit_axes, spectrum_axes, spl_axes, trace_axes
+from .sensor_figure import has_sensor, sensor_figure
 
 # The ring channels the time and spectrum figures draw, in this order (z, az: 3-DOF, or balls with
 # an axial load); the velocities are in the files and summary.json, not drawn.
@@ -54,13 +55,17 @@ def time_figure(run):
 
 def orbit_figure(run):
     """The inner-ring centre in the x-y plane: with the clearance circle, and the steady orbit
-    enlarged."""
+    enlarged. With a [housing] the ring relative to the outer ring (x - x_housing, y - y_housing),
+    the position the clearance is about."""
     r = run.response
     factor = DISPLAY["m"][1]
     steady = r["t"] >= run.transient
     if not steady.any():
         steady = np.ones_like(steady)
-    x, y = r["x"] * factor, r["y"] * factor
+    x, y = r["x"], r["y"]
+    if "x_housing" in r and "y_housing" in r:
+        x, y = x - r["x_housing"], y - r["y_housing"]
+    x, y = x * factor, y * factor
     with _style():
         fig = _new_figure("orbit")
         whole, zoom = fig.subplots(1, 2)
@@ -292,6 +297,8 @@ def run_figures(run):
         figures["spectrum"] = spectrum_figure(run)
     if run.envelope is not None:
         figures["envelope"] = envelope_figure(run)
+    if has_sensor(run):
+        figures["sensor"] = sensor_figure(run)
     if "Q1" in run.response and run.balls > 0:
         figures["ball_loads"] = ball_load_figure(run)
     if ball_channel_families(run) and run.balls > 0:

@@ -20,6 +20,7 @@
 #include "bearing/contact.h"
 #include "bearing/excitation.h"
 #include "bearing/local_defect.h"
+#include "bearing/models/housing.h"
 #include "bearing/models/model_kind.h"
 #include "bearing/signal/envelope.h"
 #include "bearing/signal/spectrum.h"
@@ -124,6 +125,7 @@ struct Case {
   SolverOptions solver;
   OutputOptions output;
   AcousticsOptions acoustics;  ///< on when the case has an [acoustics] table
+  Housing housing;             ///< the outer ring's support and sensor: on with a [housing] table
 };
 
 /// The contact constants of the case's law (the one place models, the static solution and `info`

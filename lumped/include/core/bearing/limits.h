@@ -79,5 +79,18 @@ inline constexpr Limit solver_tolerance{
 inline constexpr Limit solver_max_displacement{
     "solver.max_displacement", D::length, 0, inf, true, false, "must be positive"};
 
+inline constexpr Limit housing_mass{
+    "housing.mass", D::mass, 0, inf, true, false, "must be positive (> 0 kg)"};
+inline constexpr Limit housing_frequency{
+    "housing.frequency", D::frequency, 0, inf, true, false, "must be positive (> 0 Hz)"};
+inline constexpr Limit housing_damping_ratio{
+    "housing.damping_ratio",
+    D::dimensionless,
+    0,
+    1,
+    false,
+    true,
+    "must lie in [0, 1) (an underdamped resonance; 0.05: 5 % of critical)"};
+
 }  // namespace limits
 }  // namespace bearing

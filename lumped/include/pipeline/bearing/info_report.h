@@ -11,6 +11,7 @@
 #include "bearing/case_file.h"
 #include "bearing/contact.h"
 #include "bearing/kinematics.h"
+#include "bearing/models/housing.h"
 #include "bearing/static_load.h"
 
 namespace bearing {
@@ -44,6 +45,9 @@ struct InfoReport {
   double inner_peak_pressure = 0;  ///< peak Hertz pressure of the most loaded ball, inner race [Pa]
   double outer_peak_pressure = 0;  ///< the same on the outer race [Pa]
   std::vector<DefectInfo> defects;  ///< one per [[defects]] entry
+  /// With [housing]: the undamped modes of the bearing on the housing at the static state
+  /// (housing_modes, housing.h), ascending.
+  std::vector<HousingMode> housing_modes;
 };
 
 /// The warning `info` and `run` give when the static load's peak Hertz pressure passes
@@ -60,7 +64,9 @@ InfoReport compute_info(const Case& c);
 /// with an axial load axial.{contact_angle [rad], ball_load [N], z [m]}}; plus
 /// contact.method, static.ball_angles [rad] and a `units` object; for a calibrated law
 /// contact.calibration (calibration_json, json_helpers.h); with [[defects]], defects[] with
-/// location, width, depth [m], inner_drop, outer_drop [m], crossing, max_step [s] (null at rest).
+/// location, width, depth [m], inner_drop, outer_drop [m], crossing, max_step [s] (null at rest);
+/// with [housing], housing.{mass [kg], frequency [Hz], damping_ratio, stiffness [N/m], damping
+/// [N s/m], modes[].{frequency [Hz], housing_share}}.
 /// Throws SolverError if any value is not finite.
 nlohmann::json info_json(const InfoReport& report);
 

@@ -12,6 +12,7 @@
 #include "bearing/contact_loop.h"
 #include "bearing/excitation.h"
 #include "bearing/local_defect.h"
+#include "bearing/models/housing.h"
 #include "bearing/traction.h"
 
 namespace bearing {
@@ -34,6 +35,8 @@ struct ModelInputs {
   double damping = 0.0;        ///< radial viscous damping c [N s/m]
   double axial_mass = 0.0;     ///< axial mass [kg] (3-DOF; 0 → same as mass)
   double axial_damping = 0.0;  ///< axial damping [N s/m] (3-DOF)
+  /// The outer ring's support and the sensor on it (housing.h); off: the outer ring is fixed.
+  Housing housing;
 
   /// The constant radial load on the inner ring [N]: `load`, with the weight −m g on F_y when
   /// `gravity` is on.

@@ -54,7 +54,8 @@ class ModelOutputs {
   virtual ~ModelOutputs() = default;
 
   /// Names of the ring's DOFs, the first dof_names().size() entries of q: {"x", "y"} or
-  /// {"x", "y", "z"}; the output channel stems.
+  /// {"x", "y", "z"}, followed by "x_housing", "y_housing" with the housing (housing.h); the
+  /// output channel stems.
   virtual std::vector<std::string> dof_names() const = 0;
 
   /// Number of balls Z.

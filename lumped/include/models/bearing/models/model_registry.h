@@ -45,6 +45,9 @@ struct ModelDescriptor {
   /// Carries operation.axial_load (an axial DOF, or the loaded contact angle). A kind without
   /// one has no equilibrium for an axial load: check_axial_load_supported refuses it.
   bool axial_load;
+  /// Carries [housing]: the outer ring on its own support (housing.h). A kind that does not keeps
+  /// its outer ring on the ground: check_housing_supported refuses the table.
+  bool housing;
   /// The contact angle the model's kinematics use [rad]: the free one, or the loaded one of the
   /// axial static state.
   double (*contact_angle)(const ModelInputs&);
@@ -79,6 +82,15 @@ void check_defects_supported(ModelKind kind, const std::vector<LocalDefect>& def
 /// the error. Throws InputError naming operation.axial_load, its value and the kinds that carry
 /// it.
 void check_axial_load_supported(ModelKind kind, double axial_load, double radial_load);
+
+/// [housing] (`housing.enabled`) needs a kind that carries it (ModelDescriptor::housing). Throws
+/// InputError naming [housing], the kind, why it cannot, and the kinds that can.
+void check_housing_supported(ModelKind kind, const Housing& housing);
+
+/// The equations of motion of `kind` for `inputs`: the kind's own model, carried by the housing
+/// (housing.h) when inputs.housing.enabled. Throws InputError for a kind without equations of
+/// motion, one that cannot carry the housing, or inputs the model refuses.
+std::unique_ptr<BearingModel> make_dynamic_model(ModelKind kind, const ModelInputs& inputs);
 
 /// A dynamic model through the [solver] integrator (dynamic_run.cc); `contact_angle` [rad] the
 /// kind's kinematic angle (ModelDescriptor::contact_angle), which the defects' transit times use.
