@@ -74,9 +74,10 @@ TEST(LineFloor, MedianOfEverySecondBinOfBothFlanks) {
   s.amplitude[150] = s.amplitude[252] = 50;               // two lines in the flanks: outvoted
   const LineFloor f = floor_around(s, 195, 205, 0, 399);
   EXPECT_EQ(f.power, 4.0);
-  // Flanks as wide as the window but at least 50 bins: [145, 195) and (205, 255], every second
-  // bin from the window outwards: 194, 192, …, 146 (25) and 206, …, 254 (25).
-  EXPECT_EQ(f.samples, 50);
+  // Flanks as wide as the window but at least kFloorFlankBins = 20 bins: [175, 195) and
+  // (205, 225], every second bin from the window outwards: 194, 192, …, 176 (10) and 206, …, 224
+  // (10).
+  EXPECT_EQ(f.samples, 20);
   // Clipped by the limits.
   EXPECT_EQ(floor_around(s, 195, 205, 180, 220).samples, 8 + 8);  // 194…180, 206…220
   EXPECT_THROW(floor_around(s, 205, 195, 0, 399), InputError);

@@ -79,6 +79,15 @@ bool in_zone(double f, const std::vector<FrequencyBand>& zones) {
   return false;
 }
 
+// The bin nearest to f is a peak: above its left neighbour, not below its right one.
+bool on_peak(const Spectrum& s, double f) {
+  const long k = std::lround(f / s.resolution);
+  const long last = static_cast<long>(s.amplitude.size()) - 1;
+  if (k < 1 || k > last) return false;
+  const auto a = [&s](long i) { return s.amplitude[static_cast<std::size_t>(i)]; };
+  return a(k) > a(k - 1) && (k == last || a(k) >= a(k + 1));
+}
+
 // The lines at offset δ (bin, amplitude, level, excluded) and the comb's evidence there.
 double evaluate(const Spectrum& s, const HarmonicComb& c, double delta,
                 std::vector<LineSetup>& lines, int harmonics_rated) {
@@ -180,14 +189,17 @@ CombSearch search_comb(const Spectrum& s, const HarmonicComb& c, double false_al
   double best = -1, best_delta = 0;
   for (long i = 0; i <= steps; ++i) {
     const double delta = steps > 0 ? -c.slip + 2 * c.slip * static_cast<double>(i) / steps : 0.0;
+    if (c.anchored && !on_peak(s, c.carrier * (1 + delta))) continue;
     const double e = evaluate(s, c, delta, lines, out.rated_harmonics);
     if (e > best || (e == best && std::abs(delta) < std::abs(best_delta)))
       best = e, best_delta = delta;
   }
+  if (best < 0) best_delta = 0;  // anchored, and no offset on a peak
   out.offset = best_delta;
   out.carrier = (1 + best_delta) * c.carrier;
-  out.evidence = evaluate(s, c, best_delta, lines, out.rated_harmonics);
-  out.detected = out.rated_harmonics > 0 && out.evidence >= out.threshold;
+  const double evidence = evaluate(s, c, best_delta, lines, out.rated_harmonics);  // the lines
+  out.evidence = best < 0 ? 0.0 : evidence;
+  out.detected = best >= 0 && out.rated_harmonics > 0 && out.evidence >= out.threshold;
   for (const LineSetup& l : lines) out.lines.push_back(l.line);
   return out;
 }

@@ -16,7 +16,7 @@ struct HarmonicLine {
   double frequency = 0;  ///< the line's refined frequency [Hz] (peak_vertex_offset())
   double amplitude = 0;  ///< its largest bin [unit of the spectrum]
   double level = 0;      ///< over its floor [dB] (CombLine::level)
-  bool used = false;     ///< entered the refinement (level ≥ the comb's threshold)
+  bool used = false;     ///< entered the refinement (estimate_fundamental())
 };
 
 /// What estimate_fundamental() found.
@@ -31,14 +31,16 @@ struct FundamentalEstimate {
 
 /// The fundamental f of the series f, 2f, …, K f (K = `harmonics`) in the amplitude spectrum
 /// `spectrum`, within (1 ± tolerance)·nominal:
-///  1. search_comb() of the harmonics (no sidebands, slip = tolerance, rated over the whole
-///     spectrum from its third bin to its last), at the false-alarm probability `false_alarm`:
-///     found if its evidence reaches the threshold;
-///  2. refinement: each harmonic whose own level reaches the threshold is located at the largest of
-///     the three bins around the comb's, refined by peak_vertex_offset(), and f is the
-///     least-squares fit of f_k = k f to those: f = Σ k f_k / Σ k² (the error of a refined line is
-///     about the same in Hz for every k, so the higher harmonics pin f down more finely); with none
-///     of them over the threshold alone, f is the comb's carrier.
+///  1. search_comb() of the harmonics (no sidebands, slip = tolerance, anchored: the fundamental
+///     on a peak, rated over the whole spectrum from its third bin to its last), at the
+///     false-alarm probability `false_alarm`: found if its evidence reaches the threshold;
+///  2. refinement: each harmonic's line is located at the largest of the three bins around the
+///     comb's and refined by peak_vertex_offset(); the fundamental f_1 is used, and each further
+///     harmonic whose own level reaches the threshold and whose peak lies within 0.1 bin of
+///     k f_1 (ten times the refinement's own bias: a peak further off is pulled by another
+///     source's line beside it); f is the least-squares
+///     fit of f_k = k f to those: f = Σ k f_k / Σ k² (the error of a refined line is about the
+///     same in Hz for every k, so the higher harmonics pin f down more finely).
 /// Within ±10 % only the true f lines the whole comb up with the series: another harmonic j ≠ k of
 /// the series meets the comb's k-th line only at f'/f = j/k, outside [0.9, 1.1] for every k ≤ 9, so
 /// it adds to one term at most.

@@ -32,6 +32,11 @@ struct HarmonicComb {
   /// flanks (floor_around()) lie inside this band [Hz]: a squared envelope spectrum's floor falls
   /// to zero at the demodulated band's width, a raw spectrum ends at the Nyquist frequency.
   FrequencyBand rated;
+  /// Only offsets at which the first harmonic's bin is a peak (above its left neighbour, not
+  /// below its right one) count: a harmonic series is anchored on its fundamental, so that a comb
+  /// whose higher harmonics merely meet other sources' lines, its fundamental on no line, loses.
+  /// Restricting the offsets can only lower the false-alarm rate.
+  bool anchored = false;
   /// Zones where lines of another source sit (e.g. shaft harmonics in a squared envelope
   /// spectrum) [Hz]: a comb line whose bin falls into one counts as absent at that offset.
   std::vector<FrequencyBand> excluded;
@@ -73,7 +78,8 @@ struct CombSearch {
 /// each offset δ ∈ [−slip, slip] in steps that move the fastest line by half a bin, every rated
 /// line is read at its nearest bin, its level taken over its floor (floor_around() of the line's
 /// whole window, within comb.rated, estimated once), and the comb's evidence formed (CombSearch);
-/// the best offset wins (a tie: the smaller |δ|). The threshold is comb_threshold() of the rated
+/// the best offset wins (a tie: the smaller |δ|; anchored: only offsets whose first harmonic sits
+/// on a peak; none such: evidence 0, offset 0). The threshold is comb_threshold() of the rated
 /// lines' floors with trials = the bins the fastest rated line crosses.
 /// Throws InputError for a carrier that is not positive and finite, harmonics < 1, a modulation
 /// that is negative or not finite, a slip outside [0, 0.5), a false_alarm outside (0, 1), or a

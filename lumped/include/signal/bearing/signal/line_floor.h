@@ -10,10 +10,12 @@
 
 namespace bearing {
 
-/// Fewest bins a floor flank spans (floor_around()): 50 bins, of which every second one is a
-/// floor sample, give at least 25 samples per flank; the median of n exponential samples scatters
-/// by about 1.44/√n of itself (20 % for n = 50, both flanks).
-inline constexpr int kFloorFlankBins = 50;
+/// Fewest bins a floor flank spans (floor_around()): 20 bins, of which every second one is a
+/// floor sample, give at least 10 samples per flank. The median of n exponential samples scatters
+/// by about 1.44/√n of itself (32 % for n = 20), which floor_exceedance() takes into account:
+/// few samples only raise the threshold. Wider flanks would reach 0 Hz below the first lines of a
+/// short record (a 1 s record has 1 Hz bins).
+inline constexpr int kFloorFlankBins = 20;
 
 /// A floor estimate: the power (amplitude squared) of the background and how many samples it rests
 /// on.
