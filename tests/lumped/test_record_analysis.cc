@@ -194,6 +194,14 @@ TEST(RecordAnalysis, NamesSyntheticFaultsAndNotNoise) {
       EXPECT_EQ(a.lines->family, fault.family) << prewhiten << ": " << a.lines->reason;
       EXPECT_EQ(a.family(), fault.family);
       EXPECT_EQ(a.prewhitened, prewhiten);
+      // Each line to one source: the named family's lines (3·BPFO beside 2·BPFI, …) lend the
+      // others nothing, so no other family is detected.
+      for (const FamilyLines& other : a.lines->families)
+        if (other.family != fault.family) {
+          EXPECT_FALSE(other.comb.detected) << prewhiten << ": " << a.lines->reason;
+          ASSERT_FALSE(other.excluding.empty());
+          EXPECT_EQ(other.excluding.front(), fault.family);
+        }
     }
   test::SplitMix64 g(8);
   std::vector<double> noise(48000);

@@ -84,6 +84,61 @@ std::string lines_text(const FamilyLines& f) {
          ")";
 }
 
+// One family's comb: its rate, sideband spacing and whether that moves with the rate.
+struct FamilySpec {
+  FaultFamily family;
+  double carrier, modulation;
+  bool slips;
+};
+
+std::vector<FamilySpec> family_specs(const BearingFrequencies& f) {
+  return {{FaultFamily::outer, f.bpfo, 0.0, false},
+          {FaultFamily::inner, f.bpfi, f.shaft, false},
+          {FaultFamily::ball, 2 * f.bsf, f.ftf, true}};
+}
+
+FamilyLines search_family(const Spectrum& ses, const FamilySpec& spec, const FaultLineSettings& s,
+                          FrequencyBand rated, const std::vector<FrequencyBand>& zones) {
+  HarmonicComb comb;
+  comb.carrier = spec.carrier;
+  comb.harmonics = s.harmonics;
+  comb.modulation = spec.modulation;
+  comb.modulation_slips = spec.slips;
+  comb.slip = s.slip;
+  comb.rated = rated;
+  comb.excluded = zones;
+  FamilyLines family;
+  family.family = spec.family;
+  family.nominal = spec.carrier;
+  family.modulation = spec.modulation;
+  family.comb = search_comb(ses, comb, s.false_alarm);
+  for (const CombLine& l : family.comb.lines)
+    family.labels.push_back(line_label(spec.family, l.harmonic, l.sideband));
+  return family;
+}
+
+double margin(const FamilyLines& f) {
+  return f.comb.evidence - f.comb.threshold;
+}
+
+// The zones around every line of a detected family up to `top` [Hz] at the rate it was found at:
+// its harmonics n·c and their sidebands n·c ± g, n·c ± 2g (the squared envelope of impacts whose
+// strength goes as 1 + d cos 2πgt carries (1 + d cos)²: both), each ±(2 + n/(2K)) bins (the rate
+// is found to half a bin at the K-th harmonic; a line's window main lobe spans ±1 bin).
+std::vector<FrequencyBand> family_zones(const FamilyLines& f, double top, double resolution,
+                                        const FaultLineSettings& s) {
+  std::vector<FrequencyBand> zones;
+  const double c = f.comb.carrier;
+  const double g =
+      f.family == FaultFamily::ball ? f.modulation * (1 + f.comb.offset) : f.modulation;
+  for (int n = 1; n * c <= top + g; ++n) {
+    const double half = (2 + 0.5 * n / s.harmonics) * resolution;
+    for (int m = g > 0 ? -2 : 0; m <= (g > 0 ? 2 : 0); ++m)
+      zones.push_back({n * c + m * g - half, n * c + m * g + half});
+  }
+  return zones;
+}
+
 }  // namespace
 
 std::vector<FamilyLines> search_fault_lines(const Spectrum& ses, double band_width,
@@ -95,33 +150,32 @@ std::vector<FamilyLines> search_fault_lines(const Spectrum& ses, double band_wid
       throw InputError("fault lines: bearing frequency = " + format_number(v) +
                        " Hz: must be positive and finite (is the shaft turning?)");
   const FrequencyBand rated{3 * ses.resolution, band_width};
-  const auto zones = shaft_zones(f.shaft, band_width, ses.resolution, s.shaft_exclusion);
-  struct Spec {
-    FaultFamily family;
-    double carrier, modulation;
-    bool slips;
-  };
-  const Spec specs[] = {{FaultFamily::outer, f.bpfo, 0.0, false},
-                        {FaultFamily::inner, f.bpfi, f.shaft, false},
-                        {FaultFamily::ball, 2 * f.bsf, f.ftf, true}};
+  std::vector<FrequencyBand> zones =
+      shaft_zones(f.shaft, band_width, ses.resolution, s.shaft_exclusion);
   std::vector<FamilyLines> out;
-  for (const Spec& spec : specs) {
-    HarmonicComb comb;
-    comb.carrier = spec.carrier;
-    comb.harmonics = s.harmonics;
-    comb.modulation = spec.modulation;
-    comb.modulation_slips = spec.slips;
-    comb.slip = s.slip;
-    comb.rated = rated;
-    comb.excluded = zones;
-    FamilyLines family;
-    family.family = spec.family;
-    family.nominal = spec.carrier;
-    family.modulation = spec.modulation;
-    family.comb = search_comb(ses, comb, s.false_alarm);
-    for (const CombLine& l : family.comb.lines)
-      family.labels.push_back(line_label(spec.family, l.harmonic, l.sideband));
-    out.push_back(std::move(family));
+  for (const FamilySpec& spec : family_specs(f))
+    out.push_back(search_family(ses, spec, s, rated, zones));
+  // Each line to one source: the detected family furthest over its threshold keeps its lines,
+  // which are then left out of the others' search (3·BPFO lies 0.7 % from 2·BPFI of the 6205:
+  // a strong outer race would otherwise lend the inner race one harmonic); repeat with the rest.
+  std::vector<bool> fixed(out.size(), false);
+  for (;;) {
+    std::size_t next = out.size();
+    for (std::size_t i = 0; i < out.size(); ++i)
+      if (!fixed[i] && out[i].comb.detected &&
+          (next == out.size() || margin(out[i]) > margin(out[next])))
+        next = i;
+    if (next == out.size()) break;
+    fixed[next] = true;
+    const std::vector<FrequencyBand> lines = family_zones(out[next], band_width, ses.resolution, s);
+    zones.insert(zones.end(), lines.begin(), lines.end());
+    for (std::size_t i = 0; i < out.size(); ++i)
+      if (!fixed[i]) {
+        std::vector<FaultFamily> excluding = out[i].excluding;
+        excluding.push_back(out[next].family);
+        out[i] = search_family(ses, family_specs(f)[i], s, rated, zones);
+        out[i].excluding = std::move(excluding);
+      }
   }
   return out;
 }
@@ -143,7 +197,6 @@ LineDiagnosis diagnose_lines(std::vector<FamilyLines> families, const FaultLineS
   d.families = std::move(families);
   const FamilyLines* named = nullptr;  // detected, furthest over its threshold
   const FamilyLines* nearest = nullptr;
-  const auto margin = [](const FamilyLines& f) { return f.comb.evidence - f.comb.threshold; };
   for (const FamilyLines& f : d.families) {
     if (f.comb.rated_harmonics == 0) continue;
     if (!nearest || margin(f) > margin(*nearest)) nearest = &f;

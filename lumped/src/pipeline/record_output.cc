@@ -64,11 +64,19 @@ json family_json(const FamilyLines& f) {
                      {"rated", l.rated},
                      {"excluded", l.excluded}});
   }
-  return {{"nominal", f.nominal},        {"modulation", f.modulation},
-          {"carrier", f.comb.carrier},   {"offset", f.comb.offset},
-          {"evidence", f.comb.evidence}, {"threshold", f.comb.threshold},
-          {"trials", f.comb.trials},     {"rated_harmonics", f.comb.rated_harmonics},
-          {"detected", f.comb.detected}, {"lines", lines}};
+  json excluding = json::array();
+  for (FaultFamily e : f.excluding) excluding.push_back(name_of(kFaultFamilies, e));
+  return {{"nominal", f.nominal},
+          {"modulation", f.modulation},
+          {"carrier", f.comb.carrier},
+          {"offset", f.comb.offset},
+          {"evidence", f.comb.evidence},
+          {"threshold", f.comb.threshold},
+          {"trials", f.comb.trials},
+          {"rated_harmonics", f.comb.rated_harmonics},
+          {"detected", f.comb.detected},
+          {"excluding", excluding},
+          {"lines", lines}};
 }
 
 json settings_json(const FaultLineSettings& s) {

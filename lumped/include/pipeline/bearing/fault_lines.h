@@ -51,6 +51,9 @@ struct FamilyLines {
   /// The label of each comb line, as fault_frequency_names_up_to() spells them: "BPFO",
   /// "3xBPFO", "2xBPFI-fr", "2xBSF", "4xBSF+FTF" (one per comb.lines entry).
   std::vector<std::string> labels;
+  /// Families whose lines were left out of this one's search (search_fault_lines(): each line
+  /// to one source), in the order they were fixed.
+  std::vector<FaultFamily> excluding;
 };
 
 /// The verdict of the fault lines.
@@ -65,7 +68,11 @@ struct LineDiagnosis {
 
 /// The three families' combs in `ses` (the squared envelope spectrum of a band `band_width` [Hz]
 /// wide: its floor falls to zero there, so lines are rated from its third bin up to band_width),
-/// at the bearing frequencies `f` [Hz]. Throws InputError for settings out of range (slip
+/// at the bearing frequencies `f` [Hz], zones around the shaft harmonics left out. Each line is
+/// then given to one source: the detected family furthest over its threshold keeps its combs,
+/// and every line of its series (n·c, n·c ± g and n·c ± 2g up to band_width, at the rate found,
+/// ±(2 + n/2K) bins) is left out of the others', which are searched again; repeated while a family
+/// not yet fixed is detected. Throws InputError for settings out of range (slip
 /// outside [0, 0.5), harmonics < 1, false_alarm outside (0, 1), shaft_exclusion negative) or a
 /// frequency that is not positive.
 std::vector<FamilyLines> search_fault_lines(const Spectrum& ses, double band_width,

@@ -30,7 +30,8 @@ struct RecordOrigin {
 /// and `peaks.<ch>` (as `run`), `peak_families`, with an envelope `envelope` (as `run`, plus
 /// `prewhitened`) and `fault_lines` {settings, and per family outer, inner, ball: nominal,
 /// modulation, carrier [Hz], offset [-], evidence, threshold [dB], trials, rated_harmonics,
-/// detected, lines[] (label, harmonic, sideband, nominal, frequency [Hz], amplitude, floor
+/// detected, excluding[] (families whose lines were left out of its search), lines[] (label,
+/// harmonic, sideband, nominal, frequency [Hz], amplitude, floor
 /// [unit²], floor_samples, level [dB], rated, excluded)}, `diagnosis` (the settings' rule:
 /// line_to_floor {family, rule, channel, unit, band [Hz], band_source, spectral_kurtosis,
 /// evidence[] (label, frequency, amplitude, level), evidence_level, threshold, margin [dB], reason,
