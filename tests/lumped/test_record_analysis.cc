@@ -212,6 +212,27 @@ TEST(RecordAnalysis, NamesSyntheticFaultsAndNotNoise) {
       << a.lines->reason;
 }
 
+TEST(RecordAnalysis, EnvelopePeaksAreNamedAtTheRatesFound) {
+  // An outer race striking 0.6 % faster than the catalogue's BPFO (2.6 bins of 0.25 Hz): run's
+  // naming (one bin) leaves its envelope lines unnamed; named at the rate found, they are BPFO.
+  const BearingFrequencies f = bearing_frequencies(cwru_bearing(), kSpeed);
+  const std::vector<double> x = fault_record(1.006 * f.bpfo, 0, 7);
+  const auto label_at = [](const RecordAnalysis& a, double frequency) {
+    for (const Peak& p : a.summary.envelopes.front().peaks)
+      if (std::abs(p.frequency - frequency) < 0.5) return p.label;
+    return std::string("(no peak)");
+  };
+  const RecordAnalysis a = analyse_record(x, kRate, "DE", "m/s^2", cwru_bearing(), given());
+  ASSERT_EQ(a.family(), FaultFamily::outer) << a.lines->reason;
+  EXPECT_EQ(label_at(a, 1.006 * f.bpfo), "BPFO");
+  EXPECT_EQ(label_at(a, 2 * 1.006 * f.bpfo), "2xBPFO");
+  RecordAnalysisSettings runs_rule;
+  runs_rule.rule = DiagnosisRule::envelope_peaks;
+  const RecordAnalysis b =
+      analyse_record(x, kRate, "DE", "m/s^2", cwru_bearing(), given(), runs_rule);
+  EXPECT_EQ(label_at(b, 1.006 * f.bpfo), "");
+}
+
 TEST(RecordAnalysis, GaussianNoiseFalseAlarmsStayWithinTheStatedRate) {
   // 120 records of white Gaussian noise, 2 s at 12 kHz, analysed at a false-alarm probability of
   // 0.05 per family: each family's count is at most binomial(120, 0.05) (the union bound over

@@ -59,6 +59,25 @@ std::string where_text(const EnvelopeSummary& e, bool prewhitened) {
          (prewhitened ? ", pre-whitened" : "");
 }
 
+// The envelope peaks named at the rates the detected families were found at (the others at
+// their nominal rates): a measured bearing's lines sit off the catalogue's by more than the one
+// bin find_peaks() allows (the CWRU records' 0.3 %, 3–5 bins), and would stay unnamed. run's rule
+// reads the names, so it keeps the nominal ones.
+void rename_envelope_peaks(RecordAnalysis& a) {
+  BearingFrequencies found = a.frequencies;
+  for (const FamilyLines& l : a.lines->families) {
+    if (!l.comb.detected) continue;
+    if (l.family == FaultFamily::outer) found.bpfo = l.comb.carrier;
+    if (l.family == FaultFamily::inner) found.bpfi = l.comb.carrier;
+    if (l.family == FaultFamily::ball)
+      found.bsf = 0.5 * l.comb.carrier, found.ftf = a.frequencies.ftf * (1 + l.comb.offset);
+  }
+  EnvelopeSummary& e = a.summary.envelopes.front();
+  const auto names = fault_frequency_names_up_to(0.5 * a.rate, found.shaft, found.ftf, found.bpfo,
+                                                 found.bpfi, found.bsf);
+  e.peaks = find_peaks(e.spectrum, names, a.settings.peaks);
+}
+
 }  // namespace
 
 FaultFamily RecordAnalysis::family() const {
@@ -160,6 +179,7 @@ RecordAnalysis analyse_record(const std::vector<double>& x, double rate, const s
   a.lines = diagnose_lines(
       search_fault_lines(*a.squared_envelope, e.band.high - e.band.low, f, settings.lines),
       settings.lines, where_text(e, a.prewhitened));
+  if (settings.rule == DiagnosisRule::line_to_floor) rename_envelope_peaks(a);
   return a;
 }
 

@@ -127,7 +127,9 @@ RecordSpeed estimate_speed(const Spectrum& spectrum, double nominal, double tole
 /// `speed`: the speed (given, or estimate_speed()), the bearing frequencies, statistics, spectrum
 /// and peaks (bearing_frequency_names_up_to(…, LineFamilies::all())), the envelope
 /// (analyse_envelope() of the record or its pre-whitened copy), diagnose() of it, the squared
-/// envelope spectrum of the envelope's band, search_fault_lines() and diagnose_lines() in it.
+/// envelope spectrum of the envelope's band, search_fault_lines() and diagnose_lines() in it; with
+/// rule line_to_floor, the envelope peaks then named at the rates the detected families were found
+/// at (a measured line sits off the catalogue's by more than find_peaks()' one bin).
 /// Throws InputError naming what is wrong: a NaN or infinite sample (its index), a rate that is
 /// not positive and finite, a speed that is not, a record shorter than 20 shaft revolutions (the
 /// fault lines' slip windows would span no bin and their floors reach 0 Hz), settings out of range,
