@@ -18,6 +18,8 @@ Example::
     result.t, result["ay"]                         # s, m/s^2 (NumPy views, no copies)
     result.summary["channels"]["ay"]["rms"]        # m/s^2, as summary.json
     rows = bearing.sweep(case, vary={"waviness.inner.0.amplitude": "0um:1um:5"}, jobs=2)
+    a = bearing.analyse(samples, 12000, case, speed="estimate")   # a measured record [m/s^2]
+    a.summary["diagnosis"]["family"]                # "outer", "inner", "ball" or "none"
 
 API
 ---
@@ -26,6 +28,7 @@ API
 ``info``      ``bearing-sim info --json`` as a dict
 ``run``       ``bearing-sim run``: a ``Result`` (``.t``, channels, ``.spectrum``, ``.summary``)
 ``sweep``     ``bearing-sim sweep``: the rows of sweep.csv (list of dicts or pandas DataFrame)
+``analyse``   a measured record (NumPy array, SI) analysed: an ``Analysis`` (``.summary``, spectra)
 ``presets``   the bearing catalogue;  ``keys``, ``keys_help`` every case-file key
 ``InputError`` (a ValueError) and ``SolverError`` (a RuntimeError): the C++ library's messages,
               exactly as bearing-sim prints them after ``error:``.
@@ -56,6 +59,7 @@ except ImportError as _error:  # the .py files are there but the extension was n
 else:
     Case = _bearing.Case
     Result = _bearing.Result
+    Analysis = _bearing.Analysis
     InputError = _bearing.InputError
     SolverError = _bearing.SolverError
     InputError.__doc__ = (
@@ -65,8 +69,8 @@ else:
         "A numerical procedure that did not reach its answer, e.g. a blow-up; the message says "
         "why and what to change (bearing-sim exits with status 3).")
 
-__all__ = ["Case", "Result", "InputError", "SolverError", "info", "run", "sweep", "presets",
-           "keys", "keys_help"]
+__all__ = ["Case", "Result", "Analysis", "InputError", "SolverError", "info", "run", "sweep",
+           "analyse", "presets", "keys", "keys_help"]
 
 
 def _case(case):
@@ -162,6 +166,43 @@ def sweep(case, vary, jobs=0, as_dataframe=None):
             raise
         return rows
     return pandas.DataFrame(rows)
+
+
+def analyse(samples, rate, case, speed=None, *, speed_source="option", channel="record",
+            unit="m/s^2", prewhiten=False, band="auto", rule="line_to_floor", false_alarm=1e-3,
+            slip=0.02, harmonics=3, file="", speed_origin=""):
+    """Analyses a measured record as ``bearing-sim analyse`` does; returns an :class:`Analysis`.
+
+    ``samples``: a 1-D array of one channel in SI (``unit``: "m/s^2", "m/s" or "m"; convert g
+    with 9.80665 first); ``rate``: its sampling rate [Hz]; ``case``: a :class:`Case` or a case
+    file's path, giving the bearing (``bearing.preset = "6205"`` suffices), the nominal speed
+    and the spectrum's window and peak count. ``speed``: None (the case's ``operation.speed``),
+    ``"estimate"`` (the shaft frequency found from the record's shaft harmonics within ±10 % of
+    the case's speed), or the speed itself: a number [rad/s] or a string with a unit
+    (``"1797 rpm"``), whose source is ``speed_source`` ("option", or "record" for a speed the
+    file stored). ``prewhiten``: cepstral pre-whitening before the envelope analysis.
+    ``band``: "auto" (the kurtogram's), "none", or (low, high) [Hz, or strings with units].
+    ``rule``: "line_to_floor" (the fault lines of the squared envelope spectrum over their floor,
+    threshold from ``false_alarm`` per family and record, lines searched within ±``slip`` with
+    ``harmonics`` harmonics) or "envelope_peaks" (run's rule). ``channel`` names the channel in
+    the outputs; ``file`` and ``speed_origin`` are recorded in the summary. The GIL is released
+    meanwhile. Raises InputError naming what is wrong (a NaN sample, a rate <= 0, a record too
+    short, no shaft line found by the estimate, ...).
+
+    The result: ``.summary`` (summary.json's content as a dict: record, speed and its source,
+    frequencies [Hz], channels, peaks, envelope, fault_lines, diagnosis, units), ``.family``
+    (the diagnosis), ``.spectrum`` ({"frequency" [Hz], channel: amplitude}), ``.envelope``
+    ({"frequency", "env_<channel>" [unit], "ses_<channel>" [unit^2]} or None), ``str(a)`` (the
+    readable summary) and ``.write(dir, format="csv")`` (spectrum, envelope, summary.json, all or
+    nothing; ``bearing-plot dir`` draws it).
+
+    >>> a = bearing.analyse(x, 12000, bearing.Case.from_toml('[bearing]\npreset = "6205"\n'
+    ...                     '[operation]\nspeed = "1797 rpm"'), prewhiten=True)
+    >>> a.summary["fault_lines"]["inner"]["evidence"]     # dB over the floor
+    """
+    return _bearing.analyse(samples, float(rate), _case(case), speed, speed_source, channel, unit,
+                            bool(prewhiten), band, rule, float(false_alarm), float(slip),
+                            int(harmonics), file, speed_origin)
 
 
 def presets():

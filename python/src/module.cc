@@ -26,10 +26,14 @@
 #include "bearing/sweep.h"
 #include "bearing/sweep_columns.h"
 #include "bearing/units.h"
+#include "bindings.h"
 
 namespace py = pybind11;
+using bearing_python::CaseHandle;
+using bearing_python::to_python;
+using bearing_python::view;
 
-namespace {
+namespace bearing_python {
 
 // ---------------------------------------------------------------------------------------------
 // JSON → Python: the dicts of `info --json` and summary.json, number for number (a double stays
@@ -74,34 +78,9 @@ py::array view(const std::vector<double>& data, py::handle owner) {
   return a;
 }
 
-// ---------------------------------------------------------------------------------------------
-// A case as the CLI builds it: a file (or TOML text, or the built-in default) plus overrides,
-// resolved again after every override so that errors surface where they are made.
-struct CaseHandle {
-  enum class Origin { file, text, builtin };
-  Origin origin = Origin::builtin;
-  std::string path;      // Origin::file: the file, as given
-  std::string text;      // Origin::text: the TOML
-  std::string base_dir;  // Origin::text: folder for relative table paths
-  std::string source;    // Origin::text: the name used in messages
-  std::vector<bearing::Override> overrides;
-  bearing::Case resolved;
+}  // namespace bearing_python
 
-  // The case with `extra` overrides after this one's (a sweep point's).
-  bearing::Case load(const std::vector<bearing::Override>& extra = {}) const {
-    auto all = overrides;
-    all.insert(all.end(), extra.begin(), extra.end());
-    switch (origin) {
-      case Origin::file:
-        return bearing::read_case_file(path, all);
-      case Origin::text:
-        return bearing::parse_case(text, source, all, base_dir);
-      case Origin::builtin:
-        break;
-    }
-    return bearing::default_case(all);
-  }
-};
+namespace {
 
 // A Python value as the text after '=' of `--set KEY=VALUE`: a str as it is (TOML, or else a
 // string, as on the command line), True/False, numbers as Python prints them (shortest
@@ -295,6 +274,7 @@ PYBIND11_MODULE(_bearing, m) {
   py::register_exception<bearing::SolverError>(m, "SolverError", PyExc_RuntimeError);
   bind_case(m);
   bind_result(m);
+  bearing_python::bind_analysis(m);
 
   m.def(
       "info",

@@ -3,6 +3,7 @@
 // our own (std:: distributions differ between standard libraries) and the vibration of a
 // structural resonance struck by a train of impacts, the signature of a local bearing fault.
 
+#include <algorithm>
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
@@ -43,6 +44,10 @@ struct ImpactTrain {
   double damping_ratio = 0.02;  ///< ζ [-]
   double modulation = 0;        ///< f_m [Hz]
   double depth = 0;             ///< modulation depth [-], ≤ 1
+  /// Each impact's time jitters by this fraction of the period (normal, standard deviation) [-]:
+  /// a real fault's balls slip, so its train is not periodic (0: exactly periodic).
+  double jitter = 0;
+  std::uint64_t seed = 1;  ///< of the jitter
 };
 
 /// n samples at `sample_rate` [Hz] of the train (each impact's ringing followed for 20 time
@@ -52,8 +57,9 @@ inline std::vector<double> impact_train(const ImpactTrain& p, std::size_t n, dou
   const double wn = two_pi * p.resonance, decay = p.damping_ratio * wn;
   const double wd = wn * std::sqrt(1 - p.damping_ratio * p.damping_ratio);
   const double duration = static_cast<double>(n) / sample_rate;
+  SplitMix64 g(p.seed);
   for (int j = 0; j / p.rate < duration; ++j) {
-    const double tj = j / p.rate;
+    const double tj = std::max(0.0, (j + (p.jitter > 0 ? p.jitter * g.normal() : 0.0)) / p.rate);
     const double a = 1 + p.depth * std::cos(two_pi * p.modulation * tj);
     const auto first = static_cast<std::size_t>(std::ceil(tj * sample_rate));
     for (std::size_t i = first; i < n; ++i) {

@@ -15,7 +15,8 @@ with [housing]), sweep2 (2 x 2: heat maps), sweep1 (one key
 with acoustics: lines), contact_example (examples/seed003_6308_calibration_inner, a committed
 bearing-fem output), contact_fem (a fresh bearing-fem contact run; needs --fem),
 calibration_example (examples/seed003_6308_calibration.json and its race folders),
-calibration_fem (a fresh bearing-fem calibrate; needs --fem), report (the bearing-verify report's
+calibration_fem (a fresh bearing-fem calibrate; needs --fem), analysis (an analysed record
+written by the compiled module's bearing.analyse: spectrum, envelope), report (the bearing-verify report's
 figures: verification/plot_figures.py on a figures.json with every panel kind), cli (formats,
 default --out, errors, import without the compiled extension).
 """
@@ -448,6 +449,58 @@ def case_sweep1(args, plot):
 
 
 # --- contact ----------------------------------------------------------------------------------
+
+def outer_fault_record(rate=12000.0, seconds=3.0):
+    """Outer-race impacts of the 6205 at 1797 rpm (BPFO, 1 % jitter) ringing 3 kHz, in noise."""
+    rng = np.random.default_rng(3)
+    bpfo = 3.5848 * 1797 / 60
+    t = np.arange(int(seconds * rate)) / rate
+    x = 0.5 * rng.standard_normal(t.size) + 0.4 * np.sin(2 * np.pi * 1797 / 60 * t)
+    for j in range(int(seconds * bpfo)):
+        d = t - (j + 0.01 * rng.standard_normal()) / bpfo
+        ring = d >= 0
+        x[ring] += np.exp(-565 * d[ring]) * np.sin(2 * np.pi * 3000 * d[ring])
+    return x
+
+
+def case_analysis(args, plot):
+    """An analysed record (bearing.analyse(...).write, as bearing-sim analyse writes it), CSV and
+    .npy: spectrum and envelope figures, their data the files' (the squared envelope spectrum and
+    each family's rated lines included)."""
+    try:
+        import bearing
+        if bearing._bearing is None:
+            raise ImportError(bearing._import_error)
+    except ImportError as e:
+        print("SKIP: the compiled module bearing is needed to write an analysis (%s)" % e)
+        sys.exit(77)
+    case = bearing.Case.from_toml('[bearing]\npreset = "6205"\n[operation]\nspeed = "1797 rpm"\n')
+    analysis = bearing.analyse(outer_fault_record(), 12000, case, channel="DE", file="rig.mat")
+    sizes = {"spectrum": plot.SIZES["record_spectrum"], "envelope": plot.SIZES["record_envelope"]}
+    for fmt in ("csv", "npy"):
+        folder = os.path.join(args.work, "analysis_" + fmt)
+        analysis.write(folder, fmt)
+        check(plot.detect(folder) == "analysis", "%s is recognised as an analysed record" % folder)
+        result = plot_cli(args, folder)
+        check(result.returncode == 0, "bearing-plot ANALYSIS_DIR exits 0 (%s)"
+              % result.stderr.strip()[-300:])
+        check_files(plot, os.path.join(folder, "plots"), ["spectrum", "envelope"], sizes=sizes)
+        figures = plot.record_figures(plot.load_analysis(folder))
+        spectrum = plot.read_table(folder, "spectrum")
+        envelope = plot.read_table(folder, "envelope")
+        check(same(artist(figures["spectrum"], "spectrum:DE").get_ydata(), spectrum["DE"]),
+              "%s: the spectrum drawn is spectrum.%s's DE" % (fmt, fmt))
+        check(same(artist(figures["envelope"], "envelope:DE").get_ydata(), envelope["env_DE"]),
+              "%s: the envelope spectrum drawn is env_DE" % fmt)
+        check(same(artist(figures["envelope"], "ses").get_ydata(), envelope["ses_DE"]),
+              "%s: the squared envelope spectrum drawn is ses_DE" % fmt)
+        summary = json.load(open(os.path.join(folder, "summary.json")))
+        outer = [l for l in summary["fault_lines"]["outer"]["lines"]
+                 if l["rated"] and not l["excluded"]]
+        check(same(artist(figures["envelope"], "ses:outer").get_xdata(),
+                   [l["frequency"] for l in outer]), "%s: the outer race's lines marked" % fmt)
+        check(summary["diagnosis"]["family"] == "outer", "the synthetic outer fault is named")
+
 
 def check_contact(args, plot, folder, out):
     result = plot_cli(args, folder, "--out", out)

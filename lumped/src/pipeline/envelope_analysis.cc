@@ -32,7 +32,8 @@ double envelope_min_bandwidth(const BearingFrequencies& f) {
 EnvelopeSummary analyse_envelope(const std::string& channel, const std::string& unit,
                                  const std::vector<double>& x, double sample_rate,
                                  const BearingFrequencies& f, const EnvelopeBandSetting& setting,
-                                 Window window, int max_peaks) {
+                                 Window window, int max_peaks, double min_bandwidth,
+                                 std::vector<double>* envelope) {
   if (setting.source == EnvelopeBandSource::none)
     throw InputError("envelope analysis of " + channel + ": no band asked for (source none)");
   EnvelopeSummary e;
@@ -40,7 +41,8 @@ EnvelopeSummary analyse_envelope(const std::string& channel, const std::string& 
   e.unit = unit;
   e.source = setting.source;
   if (setting.source == EnvelopeBandSource::automatic) {
-    Kurtogram k = fast_kurtogram(x, sample_rate, {envelope_min_bandwidth(f), kEnvelopeNoiseFloor});
+    const double narrowest = min_bandwidth > 0 ? min_bandwidth : envelope_min_bandwidth(f);
+    Kurtogram k = fast_kurtogram(x, sample_rate, {narrowest, kEnvelopeNoiseFloor});
     e.band = k.best.band;
     e.spectral_kurtosis = k.best.spectral_kurtosis;
     e.kurtogram = std::move(k.map);
@@ -48,7 +50,9 @@ EnvelopeSummary analyse_envelope(const std::string& channel, const std::string& 
     e.band = setting.band;
     e.spectral_kurtosis = spectral_kurtosis(x, sample_rate, e.band, kEnvelopeNoiseFloor);
   }
-  e.spectrum = envelope_spectrum(x, sample_rate, e.band, window);
+  std::vector<double> band = band_envelope(x, sample_rate, e.band);
+  e.spectrum = amplitude_spectrum(band, sample_rate, window);  // envelope_spectrum()
+  if (envelope) *envelope = std::move(band);
   const auto names =
       fault_frequency_names_up_to(0.5 * sample_rate, f.shaft, f.ftf, f.bpfo, f.bpfi, f.bsf);
   e.peaks = find_peaks(e.spectrum, names, max_peaks);

@@ -21,6 +21,12 @@ FOLDER is recognised by its files:
   ``sensor`` (with ``[housing]``): the housing's ay_housing beside the ring's ay over the last
   ball passes, both spectra with f_h marked, and each one's cumulative energy share against
   frequency (the orbit is then the ring relative to the housing);
+- an analysed record (``bearing-sim analyse RECORD --out FOLDER``, ``bearing.analyse(...).write``:
+  ``summary.json`` with a ``record`` block and ``spectrum.csv`` or ``.npy``) gives ``spectrum``:
+  the record's amplitude spectrum with its named peaks; ``envelope`` (with an envelope band): the
+  envelope spectrum with its peaks, band and spectral kurtosis, and the squared envelope spectrum
+  with each fault family's lines at its best slip, its evidence and threshold [dB], and the
+  diagnosis;
 - a sweep (``bearing-sim sweep --out FOLDER``: ``sweep.csv``) gives ``sweep_<statistic>`` (rms,
   ptp, kurtosis, crest, peak_frequency; one panel per ring channel) and ``sweep_spl``: against the
   varied key as lines (one key), as heat maps (two keys), as points against each key (three and
@@ -40,6 +46,7 @@ this folder no longer gives (e.g. ``spl`` after a rerun without acoustics) is re
 status: 0 written, 2 the folder (or file) is none of the above.
 
 Library use: ``load_run(folder)``, ``run_figures(run)`` (name -> matplotlib Figure),
+``record_figures(load_analysis(folder))``,
 ``sweep_figures(load_sweep(folder))``, ``contact_figure(load_contact(folder))``,
 ``calibration_figure(load_calibration(path))``, ``plot_folder(folder, out, fmt)``; and the panel
 functions ``trace_axes``, ``orbit_axes``, ``spectrum_axes``, ``ball_load_axes``, ``spl_axes``,
@@ -81,6 +88,7 @@ from .sweep_figures import (  # noqa: F401
     STATISTIC_SHORT, channel_title, key_display, statistic_display, sweep_figures)
 from .contact_figure import contact_figure  # noqa: F401
 from .calibration_figure import calibration_figure  # noqa: F401
+from .record_figures import Analysis, load_analysis, record_figures  # noqa: F401
 from .cli import KNOWN_NAMES, default_out, figures_of, main, plot_folder, save  # noqa: F401
 from .report_figures import (  # noqa: F401
     PANELS, display_label, draw_report_figures, report_figure)

@@ -9,6 +9,7 @@ from matplotlib.figure import Figure
 from .common import DPI, FORMATS, FolderError, STATISTICS
 from .folders import detect, load_calibration, load_contact, load_run, load_sweep
 from .run_figures import run_figures
+from .record_figures import load_analysis, record_figures
 from .sweep_figures import sweep_figures
 from .contact_figure import contact_figure
 from .calibration_figure import calibration_figure
@@ -27,6 +28,8 @@ def figures_of(folder):
     kind = detect(folder)
     if kind == "run":
         return kind, run_figures(load_run(folder))
+    if kind == "analysis":
+        return kind, record_figures(load_analysis(folder))
     if kind == "sweep":
         return kind, sweep_figures(load_sweep(folder))
     if kind == "calibration":
@@ -76,9 +79,12 @@ def main(argv=None):
                     "bearing-fem contact output or of a bearing-fem calibration; the kind is "
                     "recognised from the files.",
         epilog="Run: time, orbit, spectrum, and with their outputs envelope, ball_loads, "
-               "ball_channels, spl (a 3-DOF run adds z and az to time and spectrum). Sweep: "
-               "sweep_<statistic>, sweep_spl. Contact: force_approach. Calibration: calibration.")
-    parser.add_argument("folder", metavar="RUN_DIR|SWEEP_DIR|CONTACT_DIR|CALIBRATION.json")
+               "ball_channels, spl (a 3-DOF run adds z and az to time and spectrum). Analysed "
+               "record: spectrum, envelope (with the squared envelope spectrum's fault lines). "
+               "Sweep: sweep_<statistic>, sweep_spl. Contact: force_approach. Calibration: "
+               "calibration.")
+    parser.add_argument("folder",
+                        metavar="RUN_DIR|ANALYSIS_DIR|SWEEP_DIR|CONTACT_DIR|CALIBRATION.json")
     parser.add_argument("--out", metavar="DIR", help="where the figures go (default FOLDER/plots; "
                         "for DIR/STEM.json, DIR/STEM_plots)")
     parser.add_argument("--format", choices=FORMATS, default="png", help="file format (png)")

@@ -21,6 +21,8 @@ SIZES = {
     "spl": (13.0, 5.6),
     "sweep": (13.0, 8.5),
     "force_approach": (13.0, 5.8),
+    "record_spectrum": (13.0, 6.0),
+    "record_envelope": (13.0, 8.5),
     "calibration": (13.0, 10.0),
     "report": (7.0, 4.4),  # one panel of the verification report (bearing-verify)
 }

@@ -320,8 +320,8 @@ def _is_calibration(path):
 
 
 def detect(folder):
-    """'run', 'sweep', 'contact' or 'calibration'; FolderError naming the folder and what was
-    expected. A calibration may be named by its JSON file."""
+    """'run', 'analysis', 'sweep', 'contact' or 'calibration'; FolderError naming the folder and
+    what was expected. A calibration may be named by its JSON file."""
     if os.path.isfile(folder):
         if calibration_file(folder):
             return "calibration"
@@ -333,6 +333,9 @@ def detect(folder):
     has = lambda name: os.path.isfile(os.path.join(folder, name))  # noqa: E731
     if has("summary.json") and (has("response.csv") or has("response.npy")):
         return "run"
+    if (has("summary.json") and (has("spectrum.csv") or has("spectrum.npy"))
+            and "record" in _read_json(os.path.join(folder, "summary.json"))):
+        return "analysis"
     if has("sweep.csv"):
         return "sweep"
     if has("force_approach.csv") and has("contact.json"):
@@ -347,7 +350,8 @@ def detect(folder):
             inside.append(sub)
     raise FolderError(
         "%s is not a folder bearing-plot knows: expected a bearing-sim run (summary.json with "
-        "response.csv or response.npy), a bearing-sim sweep (sweep.csv), a bearing-fem contact "
+        "response.csv or response.npy), an analysed record (summary.json with a record block "
+        "and spectrum.csv or .npy), a bearing-sim sweep (sweep.csv), a bearing-fem contact "
         "output (force_approach.csv with contact.json) or a bearing-fem calibration (its JSON "
         "file)%s" % (
             folder, "; its subfolders %s are: plot each of them" % ", ".join(inside[:6])

@@ -50,15 +50,18 @@ inline constexpr double kEnvelopeNoiseFloor = 1e-2;
 double envelope_min_bandwidth(const BearingFrequencies& frequencies);
 
 /// The envelope analysis of x (sampled at `sample_rate` [Hz]; `channel` and `unit` only name it):
-/// the band (setting.band, or fast_kurtogram(x, rate, envelope_min_bandwidth(f)).best), its
+/// the band (setting.band, or fast_kurtogram(x, rate, min_bandwidth).best with min_bandwidth > 0,
+/// else envelope_min_bandwidth(f) [Hz]: a run's choice), its
 /// spectral kurtosis, envelope_spectrum(x, rate, band, window) and its `max_peaks` largest peaks
 /// labelled with fault_frequency_names_up_to(rate/2, …) (f with cage slip, as the run turns).
+/// With `envelope`, the band's Hilbert envelope (band_envelope()) is left there.
 /// Throws InputError for setting.source = none, and as the functions it calls (a band outside
 /// 0 … rate/2, a non-finite sample, fewer than 2 samples).
 EnvelopeSummary analyse_envelope(const std::string& channel, const std::string& unit,
                                  const std::vector<double>& x, double sample_rate,
                                  const BearingFrequencies& frequencies,
-                                 const EnvelopeBandSetting& setting, Window window, int max_peaks);
+                                 const EnvelopeBandSetting& setting, Window window, int max_peaks,
+                                 double min_bandwidth = 0, std::vector<double>* envelope = nullptr);
 
 /// analyse_envelope() of every ring acceleration channel of the response (group ring,
 /// derivative 2: ax, ay and, 3-DOF, az) over its analysis window; none for setting.source none.

@@ -18,6 +18,12 @@ struct Peak {
   double label_error = 0;  ///< frequency − the named frequency [Hz] (0 when unlabelled)
 };
 
+/// Offset δ ∈ [−½, ½] [bins] of the vertex of the parabola through (−1, a), (0, b), (1, c) for a
+/// local maximum b (b > a, b ≥ c): through the logarithms when all three are positive, else
+/// through the amplitudes; 0 where the three are not curved downwards. A peak at bin k lies at
+/// (k + δ)·resolution.
+double peak_vertex_offset(double a, double b, double c);
+
 /// The largest local maxima of `spectrum`, largest first (equal amplitudes: lower frequency first),
 /// at most max_peaks of them, each at least relative_threshold × the largest non-DC bin.
 ///
