@@ -17,6 +17,7 @@
 #include <gsl/gsl_errno.h>
 #include <CLI/CLI.hpp>
 
+#include "analyse_command.h"
 #include "bearing/case_file.h"
 #include "bearing/cli_options.h"
 #include "bearing/contact_loop.h"
@@ -463,6 +464,9 @@ int main(int argc, char** argv) {
   merge->add_option("OUT", merge_out, "Folder for the merged sweep.csv")->required();
   merge->add_option("DIRS", merge_dirs, "The parts' folders")->required();
 
+  bearing_app::AnalyseOptions ao;
+  auto* analyse = bearing_app::add_analyse_command(app, ao);
+
   auto* presets = app.add_subcommand("presets", "List the catalogue bearings and their sources");
 
   try {
@@ -493,6 +497,7 @@ int main(int argc, char** argv) {
     if (*run) return run_command(case_path, overrides_of(sets), out_dir, json, quiet, tty);
     if (*sweep) return sweep_command(so, tty);
     if (*merge) return merge_command(merge_out, merge_dirs);
+    if (*analyse) return bearing_app::analyse_command(ao);
   } catch (const bearing::InputError& e) {
     std::cerr << who() << ": error: " << e.what() << "\n";
     return fail(2);

@@ -169,7 +169,7 @@ def sweep(case, vary, jobs=0, as_dataframe=None):
 
 
 def analyse(samples, rate, case, speed=None, *, speed_source="option", channel="record",
-            unit="m/s^2", prewhiten=False, band="auto", rule="line_to_floor", false_alarm=1e-3,
+            unit="m/s^2", prewhiten=True, band="auto", rule="line_to_floor", false_alarm=1e-3,
             slip=0.02, harmonics=3, file="", speed_origin=""):
     """Analyses a measured record as ``bearing-sim analyse`` does; returns an :class:`Analysis`.
 
@@ -180,7 +180,7 @@ def analyse(samples, rate, case, speed=None, *, speed_source="option", channel="
     ``"estimate"`` (the shaft frequency found from the record's shaft harmonics within ±10 % of
     the case's speed), or the speed itself: a number [rad/s] or a string with a unit
     (``"1797 rpm"``), whose source is ``speed_source`` ("option", or "record" for a speed the
-    file stored). ``prewhiten``: cepstral pre-whitening before the envelope analysis.
+    file stored). ``prewhiten``: cepstral pre-whitening before the envelope analysis (default on).
     ``band``: "auto" (the kurtogram's), "none", or (low, high) [Hz, or strings with units].
     ``rule``: "line_to_floor" (the fault lines of the squared envelope spectrum over their floor,
     threshold from ``false_alarm`` per family and record, lines searched within ±``slip`` with
@@ -197,7 +197,7 @@ def analyse(samples, rate, case, speed=None, *, speed_source="option", channel="
     nothing; ``bearing-plot dir`` draws it).
 
     >>> a = bearing.analyse(x, 12000, bearing.Case.from_toml('[bearing]\npreset = "6205"\n'
-    ...                     '[operation]\nspeed = "1797 rpm"'), prewhiten=True)
+    ...                     '[operation]\nspeed = "1797 rpm"'))
     >>> a.summary["fault_lines"]["inner"]["evidence"]     # dB over the floor
     """
     return _bearing.analyse(samples, float(rate), _case(case), speed, speed_source, channel, unit,

@@ -98,7 +98,9 @@ std::unique_ptr<AnalysisResult> analyse(
   settings.lines.slip = slip;
   settings.lines.harmonics = harmonics;
   auto out = std::make_unique<AnalysisResult>();
-  out->origin = {file, input.source, speed_origin};
+  out->origin.file = file;
+  out->origin.case_source = input.source;
+  out->origin.speed_origin = speed_origin;
   py::gil_scoped_release release;
   out->analysis = bearing::analyse_record(x, rate, channel, unit, input.bearing, sp, settings);
   out->summary_json = bearing::record_summary_json(out->analysis, out->origin);
@@ -110,7 +112,7 @@ std::unique_ptr<AnalysisResult> analyse(
 void bind_analysis(py::module_& m) {
   m.def("analyse", &analyse, py::arg("samples"), py::arg("rate"), py::arg("case"),
         py::arg("speed") = py::none(), py::arg("speed_source") = "option",
-        py::arg("channel") = "record", py::arg("unit") = "m/s^2", py::arg("prewhiten") = false,
+        py::arg("channel") = "record", py::arg("unit") = "m/s^2", py::arg("prewhiten") = true,
         py::arg("band") = "auto", py::arg("rule") = "line_to_floor", py::arg("false_alarm") = 1e-3,
         py::arg("slip") = 0.02, py::arg("harmonics") = 3, py::arg("file") = "",
         py::arg("speed_origin") = "",

@@ -66,6 +66,7 @@ TEST(RecordAnalysis, OfARunsResponseIsTheRunsAnalysis) {
   s.envelope = as.envelope;
   s.min_bandwidth = envelope_min_bandwidth(r.frequencies);
   s.rule = DiagnosisRule::envelope_peaks;
+  s.prewhiten = false;  // a run's envelope is of the response as it is
   const RecordAnalysis a =
       analyse_record(r.response.steady("ay"), r.response.rate, "ay", "m/s^2", c.bearing,
                      {SpeedSource::case_file, c.operation.speed}, s);

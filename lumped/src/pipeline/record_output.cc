@@ -11,6 +11,7 @@
 #include "bearing/atomic_file_set.h"
 #include "bearing/constants.h"
 #include "bearing/json_helpers.h"
+#include "bearing/units.h"
 #include "envelope_report.h"
 #include "result_tables.h"
 
@@ -212,9 +213,13 @@ json record_summary_json(const RecordAnalysis& a, const RecordOrigin& origin) {
   j["record"] = {{"file", origin.file},
                  {"channel", a.channel},
                  {"rate", a.rate},
+                 {"rate_origin", origin.rate_origin},
                  {"samples", a.samples},
                  {"duration", static_cast<double>(a.samples) / a.rate},
                  {"unit", a.unit},
+                 {"stored_unit", origin.stored_unit},
+                 {"scale", origin.scale},
+                 {"unit_origin", origin.unit_origin},
                  {"prewhitened", a.prewhitened}};
   j["case"] = {{"source", origin.case_source}, {"bearing", a.bearing}, {"speed", a.speed.speed}};
   j["speed"] = speed_json(a, origin);
@@ -261,7 +266,12 @@ std::string record_summary_text(const RecordAnalysis& a, const RecordOrigin& ori
                 origin.file.empty() ? "(samples in memory)" : origin.file.c_str(),
                 a.channel.c_str(), a.samples, a.rate, static_cast<double>(a.samples) / a.rate,
                 a.unit.c_str());
-  o << buf << "Bearing " << a.bearing
+  o << buf;
+  if (!origin.stored_unit.empty())
+    o << "  stored in " << origin.stored_unit
+      << (origin.scale == 1.0 ? std::string() : " x " + format_number(origin.scale))
+      << " (unit from " << origin.unit_origin << "), rate from " << origin.rate_origin << "\n";
+  o << "Bearing " << a.bearing
     << (origin.case_source.empty() ? "" : " (case " + origin.case_source + ")") << "\n"
     << speed_text(a);
   const BearingFrequencies& f = a.frequencies;

@@ -83,8 +83,10 @@ struct RecordAnalysisSettings {
   /// holds the last harmonic searched with its upper sideband and the floor beside it.
   double min_bandwidth = 0;
   /// Cepstral pre-whitening (prewhitening.h) of the record before the kurtogram and the envelope;
-  /// the statistics and the spectrum stay those of the record as measured.
-  bool prewhiten = false;
+  /// the statistics and the spectrum stay those of the record as measured. On by default: a
+  /// measured record's shaft, gear and electrical lines otherwise reach the squared envelope
+  /// spectrum and raise false alarms (CWRU's healthy record 97 does without it).
+  bool prewhiten = true;
   FaultLineSettings lines;  ///< the fault-line search and its false-alarm rate
   DiagnosisRule rule = DiagnosisRule::line_to_floor;
   double speed_tolerance = 0.1;  ///< `estimate`: the search within ±10 % of the nominal speed [-]

@@ -20,10 +20,17 @@ struct RecordOrigin {
   /// Where the speed was found when the record or an option gave it ("variable X130RPM", "--speed
   /// 1797rpm"); "" to say nothing.
   std::string speed_origin;
+  /// How the file's values became SI samples, as the reader found them: the stored unit ("g")
+  /// and scale (stored × scale = value in it), and where the rate and the unit came from
+  /// ("--rate", "the WAV header"); all "" (scale 1) for samples from memory.
+  std::string stored_unit;
+  double scale = 1.0;
+  std::string rate_origin;
+  std::string unit_origin;
 };
 
-/// summary.json of an analysis: `record` {file, channel, rate [Hz], samples, duration [s], unit,
-/// prewhitened}, `case` {source, bearing, speed [rad/s]}, `speed` {value [rad/s], shaft [Hz],
+/// summary.json of an analysis: `record` {file, channel, rate [Hz], rate_origin, samples,
+/// duration [s], unit (SI), stored_unit, scale, unit_origin, prewhitened}, `case` {source, bearing, speed [rad/s]}, `speed` {value [rad/s], shaft [Hz],
 /// rpm, source "option" | "case" | "record" | "estimate", origin, and for an estimate `estimate`
 /// {nominal [rad/s], tolerance, harmonics[] (order, frequency [Hz], amplitude, level [dB], used),
 /// evidence and threshold [dB], false_alarm, refinement}}, `frequencies` [Hz], `channels.<ch>`
