@@ -28,6 +28,7 @@ enum class ReferenceKind {
   limit,         ///< a limit the model must reach (static limit, reduction of a model to another)
   cross_model,   ///< two independent models of the same physics
   paper,         ///< a value printed in a source paper (../shared/seeds/)
+  measurement,   ///< a measured record and its known condition (the CWRU test rig)
 };
 
 /// |value − reference| ≤ bound (absolute) or |value / reference − 1| ≤ bound (relative).
@@ -79,6 +80,10 @@ struct Check {
   std::vector<std::string> catches;  ///< mutation ids (mutations.cc) that must make it fail
   std::function<Outcome(const Context&)> measure;
   std::optional<PaperValue> paper;  ///< paper checks only
+  /// false: measured and shown with its evidence, never judged (status "reported", counted
+  /// apart): for what the method is not expected to establish, e.g. a fault that the record does
+  /// not clearly show. Such a check names no mutation.
+  bool judged = true;
 };
 
 }  // namespace bearing::verify

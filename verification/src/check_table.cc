@@ -26,7 +26,8 @@ void validate(const std::vector<Check>& all) {
     if (c.id.empty() || !ids.insert(c.id).second)
       throw std::logic_error(where + "empty or duplicate id");
     if (!known_family(c.family)) throw std::logic_error(where + "unknown family " + c.family);
-    if (c.catches.empty()) throw std::logic_error(where + "names no mutation it must catch");
+    if (c.catches.empty() && c.judged)
+      throw std::logic_error(where + "names no mutation it must catch");
     for (const auto& m : c.catches)
       if (find_mutation(m) == nullptr) throw std::logic_error(where + "unknown mutation " + m);
     if (!c.measure) throw std::logic_error(where + "no measurement");
@@ -57,6 +58,7 @@ std::vector<Check> all_checks() {
   append(all, acoustics_fe_checks());
   append(all, paper_checks());
   append(all, paper_contact_checks());
+  append(all, measured_checks());
   validate(all);
   return all;
 }

@@ -33,6 +33,16 @@ Bearing Context::bearing(const std::string& designation) const {
   return bearing(preset(designation));
 }
 
+RecordAnalysis Context::analyse_record(const std::vector<double>& samples, double rate,
+                                       const Bearing& b, SpeedSetting speed,
+                                       RecordAnalysisSettings settings) const {
+  read(kAnalysis);
+  speed.speed *= perturbation_.analysis_speed;
+  settings.prewhiten = settings.prewhiten && !perturbation_.drop_prewhitening;
+  settings.lines.false_alarm *= perturbation_.false_alarm;
+  return bearing::analyse_record(samples, rate, "record", "m/s^2", b, speed, settings);
+}
+
 Bearing Context::bearing(Bearing b) const {
   read(kPitch);
   b.pitch_diameter *= perturbation_.pitch_diameter;

@@ -19,6 +19,7 @@
 #include "bearing/kinematics.h"
 #include "bearing/models/model_inputs.h"
 #include "bearing/models/model_kind.h"
+#include "bearing/record_analysis.h"
 #include "bearing/simulation.h"
 #include "bearing/static_load.h"
 #include "check.h"
@@ -91,6 +92,12 @@ class Context {
   Microphone microphone(double radius, double angle) const;
   /// An AcousticsOptions with the perturbation applied (air, microphones).
   AcousticsOptions acoustics(AcousticsOptions a) const;
+
+  // --- measured records ------------------------------------------------------------------
+  /// analyse_record() of the pipeline with the perturbation's analysis knobs: the speed scaled,
+  /// the pre-whitening dropped, the false-alarm rate scaled.
+  RecordAnalysis analyse_record(const std::vector<double>& samples, double rate, const Bearing& b,
+                                SpeedSetting speed, RecordAnalysisSettings settings) const;
 
   // --- finite elements --------------------------------------------------------------------
   /// Runs `bearing-fem ARGS --out DIR` (under mpirun -np N when asked; the same arguments run

@@ -133,9 +133,9 @@ int run_command(const Options& o) {
   report.info.wall_time =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   write_report(report, o.out, BEARING_VERIFY_PLOT_SCRIPT);
-  std::printf("%d passed, %d failed, %d skipped of %zu checks; report: %s\n", report.passed(),
-              report.failed(), report.skipped(), report.results.size(),
-              (fs::path(o.out) / "report.html").c_str());
+  std::printf("%d passed, %d failed, %d skipped, %d reported of %zu checks; report: %s\n",
+              report.passed(), report.failed(), report.skipped(), report.reported(),
+              report.results.size(), (fs::path(o.out) / "report.html").c_str());
   return report.failed() > 0 ? 4 : 0;
 }
 
@@ -171,9 +171,11 @@ int mutate_command(const Options& o) {
   write_report(report, o.out, BEARING_VERIFY_PLOT_SCRIPT);
   int caught = 0;
   for (const auto& m : report.mutations) caught += m.caught() ? 1 : 0;
-  std::printf("mutation score %d/%zu; baseline %d passed, %d failed, %d skipped; report: %s\n",
-              caught, report.mutations.size(), report.passed(), report.failed(), report.skipped(),
-              (fs::path(o.out) / "report.html").c_str());
+  std::printf(
+      "mutation score %d/%zu; baseline %d passed, %d failed, %d skipped, %d reported; report: "
+      "%s\n",
+      caught, report.mutations.size(), report.passed(), report.failed(), report.skipped(),
+      report.reported(), (fs::path(o.out) / "report.html").c_str());
   return caught == static_cast<int>(report.mutations.size()) && report.failed() == 0 ? 0 : 4;
 }
 

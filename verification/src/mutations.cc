@@ -41,6 +41,14 @@ const std::vector<Mutation>& mutations() {
        with([](Perturbation& p) { p.fe_cells = 0.5; })},
       {"spall-width-x0.8", "every local defect 20 % narrower than the case says",
        with([](Perturbation& p) { p.defect_width = 0.8; })},
+      {"analysis-speed-x1.03",
+       "a measured record analysed at a shaft speed 3 % high (a speed reading or unit bug)",
+       with([](Perturbation& p) { p.analysis_speed = 1.03; })},
+      {"prewhitening-dropped", "a measured record's cepstral pre-whitening left out",
+       with([](Perturbation& p) { p.drop_prewhitening = true; })},
+      {"false-alarm-x100",
+       "the fault-line threshold computed for a false-alarm rate 100 times the stated one",
+       with([](Perturbation& p) { p.false_alarm = 100; })},
   };
   return table;
 }

@@ -20,6 +20,7 @@ enum Knob : unsigned {
   kMicrophone = 1u << 8,  ///< microphone_distance
   kFeCells = 1u << 9,     ///< fe_cells
   kDefect = 1u << 10,     ///< defect_width
+  kAnalysis = 1u << 11,   ///< analysis_speed, drop_prewhitening, false_alarm
 };
 
 struct Perturbation {
@@ -35,6 +36,9 @@ struct Perturbation {
   double microphone_distance = 1.0;  ///< × every lumped microphone's distance [-]
   double fe_cells = 1.0;             ///< × cells across the FE contact patch / per radius [-]
   double defect_width = 1.0;         ///< × the width of every local defect the models see [-]
+  double analysis_speed = 1.0;       ///< × the shaft speed a record's analysis is given [-]
+  bool drop_prewhitening = false;    ///< a record analysed without its cepstral pre-whitening
+  double false_alarm = 1.0;  ///< × the false-alarm rate the fault-line threshold is for [-]
 
   /// The knobs this perturbation turns away from the identity.
   unsigned changed() const {
@@ -50,6 +54,7 @@ struct Perturbation {
     if (microphone_distance != 1.0) k |= kMicrophone;
     if (fe_cells != 1.0) k |= kFeCells;
     if (defect_width != 1.0) k |= kDefect;
+    if (analysis_speed != 1.0 || drop_prewhitening || false_alarm != 1.0) k |= kAnalysis;
     return k;
   }
 };

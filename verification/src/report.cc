@@ -18,6 +18,8 @@ const char* to_string(Status s) {
       return "fail";
     case Status::skipped:
       return "skipped";
+    case Status::reported:
+      return "reported";
   }
   return "?";
 }
@@ -38,6 +40,8 @@ const char* to_string(ReferenceKind k) {
       return "cross-model";
     case ReferenceKind::paper:
       return "paper";
+    case ReferenceKind::measurement:
+      return "measurement";
   }
   return "?";
 }
@@ -83,6 +87,9 @@ int Report::passed() const {
 }
 int Report::skipped() const {
   return count(*this, Status::skipped);
+}
+int Report::reported() const {
+  return count(*this, Status::reported);
 }
 
 void write_report(const Report& report, const std::string& dir, const std::string& plot_script) {

@@ -11,7 +11,8 @@
 
 namespace bearing::verify {
 
-enum class Status { pass, fail, skipped };
+/// reported: a check that is measured and shown but not judged (Check::judged is false).
+enum class Status { pass, fail, skipped, reported };
 
 struct CheckResult {
   const Check* check = nullptr;
@@ -19,7 +20,8 @@ struct CheckResult {
   double value = 0.0;
   double reference = 0.0;
   double deviation = 0.0;  ///< |value/reference − 1| (relative) or |value − reference| (absolute)
-  std::string verdict;     ///< "pass", "fail", "skipped"; papers: "agree", "disagree-explained"
+  std::string
+      verdict;  ///< "pass", "fail", "skipped", "reported"; papers: "agree", "disagree-explained"
   std::string detail;      ///< the check's detail, or the error / skip reason
   double wall_time = 0.0;  ///< [s]
   std::vector<Figure> figures;
@@ -62,6 +64,7 @@ struct Report {
   int failed() const;
   int passed() const;
   int skipped() const;
+  int reported() const;
 };
 
 /// Writes DIR/report.json, DIR/report.md, DIR/report.html and DIR/figures/ (PNG through

@@ -65,7 +65,10 @@ std::vector<FamilyCount> family_counts(const Report& report) {
     FamilyCount c{f.id, f.title};
     for (const auto& r : report.results) {
       if (r.check->family != f.id) continue;
-      (r.status == Status::pass ? c.passed : r.status == Status::fail ? c.failed : c.skipped)++;
+      (r.status == Status::pass       ? c.passed
+       : r.status == Status::fail     ? c.failed
+       : r.status == Status::reported ? c.reported
+                                      : c.skipped)++;
     }
     out.push_back(c);
   }

@@ -22,7 +22,7 @@ std::string seconds_text(double s);
 /// Passed/total per family and in all.
 struct FamilyCount {
   std::string id, title;
-  int passed = 0, failed = 0, skipped = 0;
+  int passed = 0, failed = 0, skipped = 0, reported = 0;
 };
 std::vector<FamilyCount> family_counts(const Report& report);
 /// Mutations caught / total.

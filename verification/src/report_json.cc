@@ -71,22 +71,27 @@ nlohmann::json report_json(const Report& report) {
   };
   nlohmann::json summary = nlohmann::json::array();
   for (const auto& f : kFamilies) {
-    int pass = 0, fail = 0, skip = 0;
+    int pass = 0, fail = 0, skip = 0, reported = 0;
     for (const auto& r : report.results) {
       if (r.check->family != f.id) continue;
-      (r.status == Status::pass ? pass : r.status == Status::fail ? fail : skip)++;
+      (r.status == Status::pass       ? pass
+       : r.status == Status::fail     ? fail
+       : r.status == Status::reported ? reported
+                                      : skip)++;
     }
     summary.push_back({{"family", f.id},
                        {"title", f.title},
                        {"passed", pass},
                        {"failed", fail},
-                       {"skipped", skip}});
+                       {"skipped", skip},
+                       {"reported", reported}});
   }
   j["summary"] = summary;
   j["totals"] = {{"checks", report.results.size()},
                  {"passed", report.passed()},
                  {"failed", report.failed()},
-                 {"skipped", report.skipped()}};
+                 {"skipped", report.skipped()},
+                 {"reported", report.reported()}};
   nlohmann::json checks = nlohmann::json::array();
   for (const auto& r : report.results) checks.push_back(check_json(r));
   j["checks"] = checks;

@@ -33,11 +33,13 @@ void title_page(std::ostringstream& md, const Report& report) {
 }
 
 void summary(std::ostringstream& md, const Report& report) {
-  md << "## Summary\n\n| family | passed | failed | skipped |\n|---|---|---|---|\n";
+  md << "## Summary\n\n| family | passed | failed | skipped | reported, not judged |\n"
+        "|---|---|---|---|---|\n";
   for (const auto& f : family_counts(report))
-    md << "| " << f.title << " | " << f.passed << " | " << f.failed << " | " << f.skipped << " |\n";
+    md << "| " << f.title << " | " << f.passed << " | " << f.failed << " | " << f.skipped << " | "
+       << f.reported << " |\n";
   md << "| **all** | **" << report.passed() << "** | **" << report.failed() << "** | **"
-     << report.skipped() << "** |\n\n";
+     << report.skipped() << "** | **" << report.reported() << "** |\n\n";
   md << "**Verdict: " << verdict_text(report) << "**\n\n";
 }
 

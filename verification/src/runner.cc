@@ -44,8 +44,10 @@ CheckResult run_check(const Check& check, const Context& context) {
     // NaN fails: the comparison below is false for it.
     const bool within = std::isfinite(o.value) && std::isfinite(o.reference) &&
                         r.deviation <= check.tolerance.bound;
-    r.status = within ? Status::pass : Status::fail;
-    if (check.paper && within)
+    r.status = !check.judged ? Status::reported : within ? Status::pass : Status::fail;
+    if (!check.judged)
+      r.verdict = "reported";
+    else if (check.paper && within)
       r.verdict = check.paper->disagreement.empty() ? "agree" : "disagree-explained";
     else
       r.verdict = to_string(r.status);
