@@ -95,8 +95,12 @@ def main():
     assert totals["passed"] == sum(c["status"] == "pass" for c in checks)
     assert totals["failed"] == sum(c["status"] == "fail" for c in checks)
     assert totals["skipped"] == sum(c["status"] == "skipped" for c in checks)
-    assert sum(s["passed"] + s["failed"] + s["skipped"] for s in report["summary"]) == len(checks)
+    assert totals["reported"] == sum(c["status"] == "reported" for c in checks)
+    assert sum(s["passed"] + s["failed"] + s["skipped"] + s["reported"]
+               for s in report["summary"]) == len(checks)
     for c in checks:
+        # Only a reported (not judged) check names no mutation it must catch.
+        assert c["catches"] or c["status"] == "reported", f"{c['id']}: names no mutation"
         for fig in c["figures"]:
             assert os.path.isfile(os.path.join(report_dir, fig)), f"{c['id']}: missing {fig}"
         if c["status"] != "skipped":
@@ -106,7 +110,8 @@ def main():
         assert "mutations" in report and "mutation_score" in report, "no mutation score"
         assert report["mutation_score"]["total"] == len(report["mutations"])
     print(f"report.json valid: {len(checks)} checks, {totals['passed']} passed, "
-          f"{totals['failed']} failed, {totals['skipped']} skipped; {figures} figures drawn by "
+          f"{totals['failed']} failed, {totals['skipped']} skipped, {totals['reported']} reported; "
+          f"{figures} figures drawn by "
           f"bearing.plot with their data (panels: {', '.join(panels)})")
 
 
