@@ -313,8 +313,10 @@ class Analyse(unittest.TestCase):
         cls.tmp.cleanup()
 
     def test_summary_equals_the_written_summary_json(self):
+        # Not pre-whitened: this 3 s record's impacts are weakly impulsive (envelope SK ~0.5), and
+        # after whitening the kurtogram picks a band without them (docs/bearing-sim.md, Limits).
         a = bearing.analyse(self.x, 12000, self.case, speed="estimate", channel="DE",
-                            file="130.mat")
+                            file="130.mat", prewhiten=False)
         out = pathlib.Path(self.tmp.name) / "analysis"
         a.write(str(out))
         self.assertEqual(a.summary, json.loads((out / "summary.json").read_text()))
