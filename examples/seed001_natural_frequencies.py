@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""Small-oscillation natural frequencies of the seed 001 bearing (3-DOF model, MODEL.md §4).
+"""Small-oscillation natural frequencies of the seed 001 bearing (3-DOF model, docs/model.md §4).
 
 Linearises the 3-DOF contact forces of examples/seed001_balls_preload.toml about the static state
 under the radial load W and the axial preload P_l, and prints the three natural frequencies

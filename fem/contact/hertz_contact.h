@@ -1,5 +1,5 @@
 #pragma once
-// Finite-element reference for one ball–race Hertz contact (MODEL.md §9, issue 4 phase 1).
+// Finite-element reference for one ball–race Hertz contact (docs/model.md §9, issue 4 phase 1).
 //
 // The Hertz-reduced problem. Two elastic bodies touching at a point, with principal radii of
 // relative curvature R_x (rolling direction) and R_y (transverse), behave — in the small-strain,

@@ -1,5 +1,5 @@
 #pragma once
-// Finite-element reference for sound radiation (MODEL.md §9, issue 6): the exterior Helmholtz
+// Finite-element reference for sound radiation (docs/model.md §9, issue 6): the exterior Helmholtz
 // problem around rigid bodies whose surfaces vibrate, truncated by a perfectly matched layer.
 //
 // Time dependence e^{iωt}, k = ω/c₀ (the convention of lumped's acoustics/sources.h). The sound

@@ -1,5 +1,6 @@
 # Runs `bearing-sim info <example> --json` for every case in examples/ and checks that the output
-# is valid JSON with every key DESIGN.md documents, each a finite number (or array of numbers).
+# is valid JSON with every key docs/bearing-sim.md documents, each a finite number (or array of
+# numbers).
 # Invoked by ctest: cmake -DBEARING_SIM=... -DEXAMPLES=... -P info_examples.cmake
 
 file(GLOB cases "${EXAMPLES}/*.toml")

@@ -9,7 +9,7 @@ foreach(run serial mpi2)
   string(JSON n_${run} GET "${json_${run}}" fe exponent)
 endforeach()
 # CMake has no floating point: compare with a tiny awk-free trick through math on scaled digits
-# is not possible, so let Python (DESIGN.md: /usr/bin/python3 is a project dependency) compare.
+# is not possible, so let Python (Debian's /usr/bin/python3, which setup.sh installs) compare.
 execute_process(
   COMMAND /usr/bin/python3 -c
     "import sys; a,b,c,d=map(float,sys.argv[1:]); e=max(abs(b/a-1),abs(d-c)); print('K serial %r mpi %r, exponent %r %r, difference %.2e'%(a,b,c,d,e)); sys.exit(0 if e<1e-8 else 1)"

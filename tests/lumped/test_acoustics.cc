@@ -1,7 +1,7 @@
-// The acoustic sources and the time-domain pressure (MODEL.md §8), each checked against something
-// computed independently: elementary closed forms, low-ka limits, the outgoing phase, the power
-// balance between the body's surface and the far field, seed 000's printed terms, and analytic
-// tones through the filters.
+// The acoustic sources and the time-domain pressure (docs/model.md §8), each checked against
+// something computed independently: elementary closed forms, low-ka limits, the outgoing phase, the
+// power balance between the body's surface and the far field, seed 000's printed terms, and
+// analytic tones through the filters.
 
 #include <cmath>
 #include <complex>
@@ -72,7 +72,7 @@ TEST(RealFft, InverseOfOneBinIsACosine) {
 // --- transfer functions ------------------------------------------------------------------------
 
 TEST(Sources, PulsatingSphereEqualsItsElementaryClosedForm) {
-  // p = ρc u (a/r) ika/(1 + ika) e^{−ik(r−a)}, MODEL.md §8.
+  // p = ρc u (a/r) ika/(1 + ika) e^{−ik(r−a)}, docs/model.md §8.
   const double a = 1.9845e-3;
   const auto s = make_source("pulsating-sphere", a, kAir);
   for (double ka : {1e-4, 1e-2, 0.3, 1.0, 4.0, 30.0})

@@ -1,4 +1,4 @@
-// Hertz point contact (hertz.h) and the ball–race contact constants (contact.h), MODEL.md §3.
+// Hertz point contact (hertz.h) and the ball–race contact constants (contact.h), docs/model.md §3.
 
 #include <gtest/gtest.h>
 

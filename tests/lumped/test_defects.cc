@@ -168,7 +168,7 @@ std::vector<double> approach_change(const Case& with, double t, const std::vecto
   return da;
 }
 
-// Where each ball meets a race defect, from the ball angles θ_j = φ₀ + 2πj/Z + ω_c t (MODEL.md
+// Where each ball meets a race defect, from the ball angles θ_j = φ₀ + 2πj/Z + ω_c t (docs/model.md
 // §1) with ω_c from kinematics.h, and how much it drops there (the pivot geometry, tested on its
 // own in test_local_defect.cc): at every instant of a few ball passes, every ball.
 // The crowded variant (12 balls of 8 mm on a 33 mm pitch circle, a 7 mm defect) has a defect

@@ -238,7 +238,7 @@ TEST(ExcitationTable, Seed003InnerRacewayTable) {
   const auto h = read_waviness_table(
       std::string(BEARING_SOURCE_DIR) + "/examples/seed003_inner_waviness.csv", "table");
   ASSERT_EQ(h.size(), 97u);
-  EXPECT_EQ(h.front().order, 4);  // caption and MODEL.md: orders 4 ... 100
+  EXPECT_EQ(h.front().order, 4);  // caption and docs/model.md: orders 4 ... 100
   EXPECT_EQ(h.back().order, 100);
   for (std::size_t i = 0; i < h.size(); ++i) {
     EXPECT_EQ(h[i].order, h[0].order + static_cast<int>(i));  // consecutive orders

@@ -1,4 +1,4 @@
-// Bearing defect frequencies (kinematics.h, MODEL.md §2).
+// Bearing defect frequencies (kinematics.h, docs/model.md §2).
 
 #include <gtest/gtest.h>
 

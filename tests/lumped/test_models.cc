@@ -1,6 +1,6 @@
 // The 2-DOF, 3-DOF and ball-DOF models (models/two_dof.h, three_dof.h, ball_dofs.h) against
-// physics: static equilibrium, energy, Jacobians, the excitation conventions of MODEL.md §1/§5,
-// TVDS, and the reductions of the 3-DOF model to the 2-DOF one.
+// physics: static equilibrium, energy, Jacobians, the excitation conventions of docs/model.md
+// §1/§5, TVDS, and the reductions of the 3-DOF model to the 2-DOF one.
 
 #include <gtest/gtest.h>
 
@@ -386,7 +386,7 @@ TEST(TwoDof, TvdsWithZeroAmplitudeIsTvd) {
   }
 }
 
-// The first-order curvature of r(φ) = R + A sin Nφ, 1/R + A (N²−1) sin(Nφ)/R² (MODEL.md §3),
+// The first-order curvature of r(φ) = R + A sin Nφ, 1/R + A (N²−1) sin(Nφ)/R² (docs/model.md §3),
 // against the curvature of the polar curve itself: the circle through three nearby points
 // (step h: truncation O((N h)²), rounding O(ε R / (R h²)) relative to 1/R).
 double polar_curvature(const std::function<double(double)>& r, double phi, double h) {

@@ -27,7 +27,7 @@ enum class ReferenceKind {
   conservation,  ///< a conserved quantity (energy) that must not drift
   limit,         ///< a limit the model must reach (static limit, reduction of a model to another)
   cross_model,   ///< two independent models of the same physics
-  paper,         ///< a value printed in a source paper (../shared/seeds/)
+  paper,         ///< a value printed in a source paper (docs/model.md, Sources)
   measurement,   ///< a measured record and its known condition (the CWRU test rig)
 };
 
@@ -46,7 +46,7 @@ inline Tolerance absolute(double bound, std::string why) {
 }
 
 /// A paper check's printed number; when `disagreement` is set the check's reference is the
-/// corrected value (MODEL.md) and the paper's number is shown beside it, never used to pass.
+/// corrected value (docs/model.md) and the paper's number is shown beside it, never used to pass.
 struct PaperValue {
   double value = 0.0;        ///< the paper's number, in the check's unit
   std::string source;        ///< seed file and table/figure/equation, e.g. "seed000 Table 2"

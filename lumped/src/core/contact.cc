@@ -1,5 +1,5 @@
 // Hertz load–deflection constants of a ball on each race and of the ball between both races
-// (MODEL.md §3).
+// (docs/model.md §3).
 
 #include "bearing/contact.h"
 

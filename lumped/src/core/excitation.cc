@@ -1,4 +1,4 @@
-// Excitations shared by every model (MODEL.md §5): raceway waviness, its harmonic tables, and
+// Excitations shared by every model (docs/model.md §5): raceway waviness, its harmonic tables, and
 // ball-size errors drawn in a band.
 
 #include "bearing/excitation.h"

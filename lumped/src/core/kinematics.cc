@@ -1,4 +1,4 @@
-// Bearing defect frequencies from pure-rolling kinematics (MODEL.md §2).
+// Bearing defect frequencies from pure-rolling kinematics (docs/model.md §2).
 
 #include "bearing/kinematics.h"
 

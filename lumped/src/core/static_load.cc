@@ -1,4 +1,4 @@
-// Static load distribution of a radial ball bearing with clearance (MODEL.md §1 and §4).
+// Static load distribution of a radial ball bearing with clearance (docs/model.md §1 and §4).
 //
 // The equilibrium Σ_j K [δ_j]_+^n e_j = F, δ_j = u·e_j − γ, e_j = (cos θ_j, sin θ_j), is the
 // stationarity condition of the convex potential

@@ -3,7 +3,7 @@
 // its excitation e_j (waviness on both races and its size error) and its contact constant K_j —
 // evaluated without allocation and without one sin() per ball or per harmonic.
 //
-// Ball angles (MODEL.md §1): θ_j(t) = φ₀ + 2πj/Z + ω_c t, j = 0…Z−1. (cos θ_j, sin θ_j) is the
+// Ball angles (docs/model.md §1): θ_j(t) = φ₀ + 2πj/Z + ω_c t, j = 0…Z−1. (cos θ_j, sin θ_j) is the
 // precomputed (cos, sin) of φ₀ + 2πj/Z rotated by the one (cos, sin) of ω_c t per instant.
 //
 // Each race's waviness at the balls: race_excitation.h (folded by order mod Z, so no sin() per

@@ -1,4 +1,4 @@
-// The quasi-static model (MODEL.md §4, seed 000); see quasi_static.h for the equations, the
+// The quasi-static model (docs/model.md §4, seed 000); see quasi_static.h for the equations, the
 // solver and the minimum load.
 
 #include "bearing/models/quasi_static.h"

@@ -3,7 +3,7 @@
 // TVDS, Π + Π'' — for the hot loop folded by order mod Z (RaceExcitation), for the output
 // instants by direct sums with the derivatives (profile_derivatives).
 //
-// Waviness (MODEL.md §5): Π(φ) = Σ_s A_s sin(N_s φ + ψ_s) at the race-fixed contact angle,
+// Waviness (docs/model.md §5): Π(φ) = Σ_s A_s sin(N_s φ + ψ_s) at the race-fixed contact angle,
 // φ_j = θ_j on the outer race and θ_j − ω_i t on the inner race. Written per order n as
 //     Π(φ) = Σ_n a_n sin nφ + b_n cos nφ,   a_n = Σ_{N_s = n} A_s cos ψ_s,  b_n = Σ A_s sin ψ_s.
 // The balls are evenly spaced on each race, φ_j = φ_ref + 2πj/Z, so with β_nj = 2π n j / Z

@@ -2,7 +2,7 @@
 // Private to the lumped models (not installed): one race's contact constant under TVDS,
 // K^{−2/3} = K₀^{−2/3} · g(Δ) with Δ from the waviness at the contact.
 //
-// TVDS (seed 002, MODEL.md §3): the waviness also changes the raceway curvature in the rolling
+// TVDS (seed 002, docs/model.md §3): the waviness also changes the raceway curvature in the rolling
 // direction. For a race of radius R whose surface sits at R + ε(φ) from the race centre, the
 // curvature of the polar curve r(φ) = R + ε is
 //     κ = (r² + 2r'² − r r'') / (r² + r'²)^{3/2} = 1/R − (ε + ε'')/R² + O(ε²),

@@ -1,4 +1,4 @@
-// The 3-DOF model with axial load / preload (MODEL.md §4, seed 001); see three_dof.h for the
+// The 3-DOF model with axial load / preload (docs/model.md §4, seed 001); see three_dof.h for the
 // geometry, the equations and the reductions to the 2-DOF model.
 //
 // Numerics. δ_j = L_j − A₀ subtracts two lengths of order A₀ (≈ 0.6 mm for the 6308) to get a
@@ -225,7 +225,7 @@ class ThreeDofModel final
   std::vector<double> initial_displacement() const override;
 
  private:
-  // δ_j of the 3-DOF geometry (MODEL.md §4), r_j = x cos θ_j + y sin θ_j + e_j.
+  // δ_j of the 3-DOF geometry (docs/model.md §4), r_j = x cos θ_j + y sin θ_j + e_j.
   double ball_approach(const double* q, const detail::BallFrame& fr, int j) const {
     const double r = q[0] * fr.cos_theta[j] + q[1] * fr.sin_theta[j] + fr.excitation[j];
     double L;

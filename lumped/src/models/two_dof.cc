@@ -1,4 +1,4 @@
-// The 2-DOF inner-ring model (MODEL.md §4, seeds 001–003); see two_dof.h for the equations.
+// The 2-DOF inner-ring model (docs/model.md §4, seeds 001–003); see two_dof.h for the equations.
 
 #include "bearing/models/two_dof.h"
 
@@ -133,7 +133,7 @@ class TwoDofModel final : public detail::FrameForce<TwoDofModel, detail::BallFra
   }
 
  private:
-  // δ_j = x cos θ_j + y sin θ_j − γ + e_j (MODEL.md §1).
+  // δ_j = x cos θ_j + y sin θ_j − γ + e_j (docs/model.md §1).
   double approach(const double* q, const detail::BallFrame& fr, int j) const {
     return q[0] * fr.cos_theta[j] + q[1] * fr.sin_theta[j] - gap_ + fr.excitation[j];
   }

@@ -1,5 +1,5 @@
 // The names of a bearing's spectral lines: its frequency families, their harmonics, sidebands and
-// the subharmonics of the ball pass (MODEL.md §7).
+// the subharmonics of the ball pass (docs/model.md §7).
 
 #include "bearing/signal/line_names.h"
 

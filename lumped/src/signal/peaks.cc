@@ -1,4 +1,5 @@
-// Spectral peaks, refined in frequency and named after the nearest bearing frequency (MODEL.md §7).
+// Spectral peaks, refined in frequency and named after the nearest bearing frequency (docs/model.md
+// §7).
 
 #include "bearing/signal/peaks.h"
 

@@ -1,4 +1,4 @@
-// Amplitude spectrum through the real FFT of fft.h (MODEL.md §7).
+// Amplitude spectrum through the real FFT of fft.h (docs/model.md §7).
 
 #include "bearing/signal/spectrum.h"
 

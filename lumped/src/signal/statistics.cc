@@ -1,4 +1,4 @@
-// Mean, RMS, peak-to-peak, kurtosis and crest factor of one channel (MODEL.md §7).
+// Mean, RMS, peak-to-peak, kurtosis and crest factor of one channel (docs/model.md §7).
 
 #include "bearing/signal/statistics.h"
 

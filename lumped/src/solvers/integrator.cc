@@ -1,5 +1,5 @@
 // The integrator factory and what every method shares: validation of settings and of an
-// integrate() call, and the blow-up check after each accepted step (MODEL.md §6).
+// integrate() call, and the blow-up check after each accepted step (docs/model.md §6).
 //
 // Conventions every method follows:
 // - Output: the observer is called at each requested time exactly (fixed steps are shortened to

@@ -1,4 +1,4 @@
-// Acoustics, lumped side (MODEL.md §8): every source model of acoustics/sources.h against its
+// Acoustics, lumped side (docs/model.md §8): every source model of acoustics/sources.h against its
 // closed form written in acoustics_reference.cc, the low-ka limits, seed 000's forms (their
 // agreement at low ka), the time-domain filter on a tone. The toolkit's sources are built in the
 // Context's air and evaluated at the Context's microphone distances, so a wrong sound speed or

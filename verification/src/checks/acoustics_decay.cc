@@ -1,4 +1,4 @@
-// Decay with distance in the far field (MODEL.md §8): a ball's field as 1/r from the ball (not
+// Decay with distance in the far field (docs/model.md §8): a ball's field as 1/r from the ball (not
 // from the bearing centre: microphones are placed from the centre, distances are taken from each
 // source), the ring's as 1/√r towards the large-argument asymptote of H₁⁽²⁾. The 6308's ring and
 // ball at 20 kHz, microphones 0.2–2 m from the centre.

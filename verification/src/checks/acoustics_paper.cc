@@ -1,7 +1,7 @@
-// Seed 000's source forms (MODEL.md §8, sources.h): the ring's eq. (19) as derived and the ball's
-// eq. (23), against the forms written in acoustics_reference.cc. Their agreement with the exact
-// fields at low ka is checked in acoustics.cc (acoustics.low-ka.cylinder-dipole-paper); here their
-// departure at high ka is the checked value itself, so the report shows its size.
+// Seed 000's source forms (docs/model.md §8, sources.h): the ring's eq. (19) as derived and the
+// ball's eq. (23), against the forms written in acoustics_reference.cc. Their agreement with the
+// exact fields at low ka is checked in acoustics.cc (acoustics.low-ka.cylinder-dipole-paper); here
+// their departure at high ka is the checked value itself, so the report shows its size.
 
 #include <cmath>
 #include <complex>
@@ -93,7 +93,8 @@ Check ring_departure() {
                " dB at 10 mm and " + fmt(toolkit_departure(ctx, f, kFar)) +
                " dB at 1 m (20 kHz); at 1 m it is already " +
                fmt(toolkit_departure(ctx, 1000, kFar)) +
-               " dB at 1 kHz: its H₁(kr) ≈ kr/2 grows with distance (MODEL.md §8: it needs kr ≪ 1)";
+               " dB at 1 kHz: its H₁(kr) ≈ kr/2 grows with distance (docs/model.md §8: it needs "
+               "kr ≪ 1)";
     o.figures.push_back(departure_figure(ctx));
     return o;
   };

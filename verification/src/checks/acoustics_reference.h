@@ -1,7 +1,7 @@
 #pragma once
-// The acoustics checks' references (MODEL.md §8), written independently of lumped/src/acoustics:
-// the cylinders' Hankel functions from Bessel's and Schläfli's integrals (GSL quadrature, not
-// GSL's Bessel routines the toolkit calls), their derivatives by the recurrence
+// The acoustics checks' references (docs/model.md §8), written independently of
+// lumped/src/acoustics: the cylinders' Hankel functions from Bessel's and Schläfli's integrals (GSL
+// quadrature, not GSL's Bessel routines the toolkit calls), their derivatives by the recurrence
 // H_n' = (H_{n−1} − H_{n+1})/2 (the toolkit uses H₁' = H₀ − H₁/x), the spheres' fields from the
 // elementary spherical Hankel functions, and seed 000's forms as printed in the check. Time
 // dependence e^{iωt}; every field is per unit surface velocity [Pa/(m/s)].
@@ -44,7 +44,7 @@ cd sphere_field(int order, double ka, double kr, double cos_angle);
 cd cylinder_dipole_low_ka(double ka, double kr, double cos_angle);
 cd sphere_dipole_low_ka(double ka, double kr, double r_over_a, double cos_angle);
 
-/// Seed 000 eq. (19) as derived (MODEL.md §8): the cylinder dipole with H₁(x) ≈ x/2 + 2i/(πx)
+/// Seed 000 eq. (19) as derived (docs/model.md §8): the cylinder dipole with H₁(x) ≈ x/2 + 2i/(πx)
 /// and H₁'(x) ≈ 1/2 − 2i/(πx²) for both ka and kr.
 cd paper_cylinder_dipole(double ka, double kr, double cos_angle);
 /// Seed 000 eq. (23): p = ρ₀c₀ k a² /(r √(1 + (ka)²)) e^{iθ}, θ = arctan(1/(ka)).

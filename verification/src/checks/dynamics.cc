@@ -415,7 +415,7 @@ std::vector<Check> conservation_and_limit_checks() {
        "value: y of the 6308 after 0.3 s of a damped 2-DOF run at rest with TVDS and an outer "
        "waviness of order 33 (2 um); reference: the static equilibrium of the closed-form "
        "contacts whose K_j are recomputed from the race curvature 1/R - A(N^2-1) sin/R^2 "
-       "(MODEL.md 3), Newton written here",
+       "(docs/model.md §3), Newton written here",
        "y",
        "m",
        relative(1e-8,

@@ -1,8 +1,8 @@
 #pragma once
 // The references of the dynamics checks, written here from the textbook formulas and never taken
-// from the toolkit: Hertz's exact point contact (MODEL.md §3, the ellipticity by root finding on
-// GSL's complete elliptic integrals), the series law of a ball between two races, TVDS's
-// first-order raceway curvature change, pure-rolling kinematics (MODEL.md §2), the static
+// from the toolkit: Hertz's exact point contact (docs/model.md §3, the ellipticity by root finding
+// on GSL's complete elliptic integrals), the series law of a ball between two races, TVDS's
+// first-order raceway curvature change, pure-rolling kinematics (docs/model.md §2), the static
 // equilibrium of the ring on its Hertz contacts (Newton on the convex contact potential), and the
 // free vibration of a linear damped oscillator.
 
@@ -66,8 +66,8 @@ inline double ball_constant(const Bearing& b, double drho_inner = 0.0, double dr
 
 /// TVDS's first-order change of the rolling-direction curvature of a race carrying the harmonic
 /// A sin(Nφ + ψ) at the contact angle φ: Δρ_II1 = A (N² − 1) sin(Nφ + ψ)/R², R the raceway
-/// radius (d_m ∓ D)/2 (MODEL.md §3; crests make the inner race more convex, the outer race less
-/// concave) [1/m].
+/// radius (d_m ∓ D)/2 (docs/model.md §3; crests make the inner race more convex, the outer race
+/// less concave) [1/m].
 inline double tvds_curvature_change(const Bearing& b, bool inner, int order, double amplitude,
                                     double phase, double phi) {
   const double R =
@@ -75,7 +75,7 @@ inline double tvds_curvature_change(const Bearing& b, bool inner, int order, dou
   return amplitude * (double(order) * order - 1.0) * std::sin(order * phi + phase) / (R * R);
 }
 
-/// Pure-rolling kinematics, outer ring fixed (MODEL.md §2) [Hz].
+/// Pure-rolling kinematics, outer ring fixed (docs/model.md §2) [Hz].
 struct Kinematics {
   double shaft = 0, cage = 0, bpfo = 0, bpfi = 0;
 };

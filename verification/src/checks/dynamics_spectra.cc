@@ -1,6 +1,6 @@
 // Dynamics checks of the running bearing: spectral lines at the classical frequencies, written
-// from the textbook kinematics of the true preset geometry (MODEL.md §2), and the reductions of
-// the 3-DOF and ball-DOF models to the 2-DOF model.
+// from the textbook kinematics of the true preset geometry (docs/model.md §2), and the reductions
+// of the 3-DOF and ball-DOF models to the 2-DOF model.
 //
 // Where the lines are. The system is periodic in the ball passage and, with inner waviness, in
 // the shaft rotation. A fixed-frame load zone weights ball j by Σ_m c_m e^{imθ_j}; the excitation

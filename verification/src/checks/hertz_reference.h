@@ -1,6 +1,6 @@
 #pragma once
 // The checks' own exact Hertz solution of a ball on a raceway, written from the geometry without
-// any of the toolkit's contact code (MODEL.md §3; Hamrock's form of Hertz's equations, not the
+// any of the toolkit's contact code (docs/model.md §3; Hamrock's form of Hertz's equations, not the
 // toolkit's δ* form, so the two share nothing but the physics). Used as the reference of the
 // hertz, hertz-fe and static-load families.
 
@@ -28,7 +28,7 @@ struct HertzContact {
   double load_at_peak_pressure(double p0) const;
 };
 
-/// Exact Hertz for one race of `b`: curvatures as in MODEL.md §3, κ by Brent root finding on
+/// Exact Hertz for one race of `b`: curvatures as in docs/model.md §3, κ by Brent root finding on
 /// Hertz's F(κ) with GSL's complete elliptic integrals, relative tolerance 1e-14 on κ.
 HertzContact exact_hertz(const Bearing& b, Race race);
 

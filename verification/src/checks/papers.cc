@@ -1,10 +1,10 @@
 // Family "paper", part 1: the seed papers' frequencies and levels that examples/README.md
 // reproduces — seed 003 Table 2 and its simulated BPFO line, seed 001's ball-passage frequency,
 // seed 004's BPFO under the ball-DOF model, seed 000's sound at point A. Each check carries the
-// paper's number (PaperValue); where MODEL.md or examples/README.md documents that the paper is
-// wrong, the reference is the corrected value (a closed form written here) and the paper's number
-// is shown beside it. Seed 000's sound and the contact-law checks (TVDS, ball approach) are in
-// papers_contact.cc.
+// paper's number (PaperValue); where docs/model.md or examples/README.md documents that the paper
+// is wrong, the reference is the corrected value (a closed form written here) and the paper's
+// number is shown beside it. Seed 000's sound and the contact-law checks (TVDS, ball approach) are
+// in papers_contact.cc.
 
 #include <algorithm>
 #include <cmath>
@@ -122,7 +122,7 @@ Check table2_bsf() {
   c.catches = {"pitch-diameter-x1.01"};
   c.paper = PaperValue{70.0, "seed003 Table 2 (6308, 2000 rpm)",
                        "the paper's 70.0 Hz is 3 % above the standard ball spin frequency "
-                       "(d_m/2D) f_i (1 − (D/d_m)²) = 67.97 Hz (MODEL.md §2); no usual form "
+                       "(d_m/2D) f_i (1 − (D/d_m)²) = 67.97 Hz (docs/model.md §2); no usual form "
                        "gives 70.0 (without the (1 − (D/d_m)²) factor: 71.8 Hz), and its FTF, "
                        "BPFO and BPFI agree with ours to 0.1 Hz (examples/README.md §3e)"};
   c.measure = [](const Context& ctx) {

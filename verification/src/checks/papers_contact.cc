@@ -30,7 +30,7 @@ namespace bearing::verify {
 
 namespace {
 
-// --- exact Hertz point contact (Harris; MODEL.md §3), independent of lumped/hertz ----------
+// --- exact Hertz point contact (Harris; docs/model.md §3), independent of lumped/hertz ----------
 
 /// F(κ) = [(κ²+1) E(e) − 2 K(e)] / [(κ²−1) E(e)], e² = 1 − 1/κ².
 double curvature_difference(double kappa) {
@@ -74,7 +74,7 @@ double dimensionless_approach(double F) {
 
 /// K of one race contact of a radial ball bearing (α = 0) [N/m^1.5], Q = K δ^{3/2}:
 /// K = 2^{5/2} / (3 η δ*^{3/2} Σρ^{1/2}), with the race's rolling-direction curvature changed by
-/// `delta` [1/m] (TVDS, MODEL.md §3).
+/// `delta` [1/m] (TVDS, docs/model.md §3).
 double race_constant(const Bearing& b, bool inner, double delta = 0.0) {
   const double D = b.ball_diameter;
   const double race_1 = inner ? 2.0 / (b.pitch_diameter - D) : -2.0 / (b.pitch_diameter + D);
@@ -158,7 +158,7 @@ Check tvds_check(bool inner, int order, double paper) {
           percent(paper) +
           "), which it attributes to the time-varying stiffness; shown beside the stiffness "
           "variation itself, which is only the reference's ± fraction (first-order curvature "
-          "change against Σρ, MODEL.md §3). Where the response is periodic our TVD/TVDS RMS "
+          "change against Σρ, docs/model.md §3). Where the response is periodic our TVD/TVDS RMS "
           "difference stays of that size (detail; examples/README.md §2b); differences of "
           "several % occur only where the response is chaotic"};
   c.measure = [inner, order, race](const Context& ctx) {
@@ -209,8 +209,8 @@ Bearing seed001_bearing() {
 }
 
 /// The 3-DOF contact stiffness −∂f/∂q at q = (x, y, z) and the residual of the force balance
-/// (MODEL.md §4): δ_j = |(w₀ + z, u₀ + x cos θ_j + y sin θ_j)| − A₀, Q_j = K δ_j^{3/2} along the
-/// unit vector n_j; d(Q n)/d(u, w) = Q' n nᵀ + (Q/L)(I − n nᵀ).
+/// (docs/model.md §4): δ_j = |(w₀ + z, u₀ + x cos θ_j + y sin θ_j)| − A₀, Q_j = K δ_j^{3/2} along
+/// the unit vector n_j; d(Q n)/d(u, w) = Q' n nᵀ + (Q/L)(I − n nᵀ).
 struct Linearised {
   Eigen::Matrix3d stiffness = Eigen::Matrix3d::Zero();
   Eigen::Vector3d residual = Eigen::Vector3d::Zero();  ///< applied + contact force [N]

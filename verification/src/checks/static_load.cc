@@ -1,8 +1,8 @@
 // Static-load family: the rolling kinematics and the static load distribution of every preset
-// against textbook closed forms written here — the defect frequencies (MODEL.md §2), Stribeck's
-// Q_max·Z/F_r and the radial deflection at zero clearance (Harris, ISO 16281), and with clearance
-// the load-zone extent ε and Sjövall's J_r(ε). The contact constant of the references is the
-// checks' own exact Hertz solution (hertz_reference.h).
+// against textbook closed forms written here — the defect frequencies (docs/model.md §2),
+// Stribeck's Q_max·Z/F_r and the radial deflection at zero clearance (Harris, ISO 16281), and with
+// clearance the load-zone extent ε and Sjövall's J_r(ε). The contact constant of the references is
+// the checks' own exact Hertz solution (hertz_reference.h).
 
 #include <algorithm>
 #include <cmath>

@@ -1,5 +1,5 @@
 #pragma once
-// Case files: TOML with units (DESIGN.md "Case file"), resolved into SI values.
+// Case files: TOML with units (docs/case-files.md), resolved into SI values.
 //
 // Precedence, lowest first: built-in defaults, the `bearing.preset` catalogue entry, the keys in
 // the file, then `--set table.key=value` overrides. Unknown tables and keys are errors that suggest

@@ -1,7 +1,7 @@
 #pragma once
-// The FE-calibrated contact law (`[model] contact = "calibrated"`, DESIGN.md "ContactLaw"): the
+// The FE-calibrated contact law (`[model] contact = "calibrated"`, docs/case-files.md): the
 // load–deflection law Q = K δ^n of each race, fitted by `bearing-fem calibrate` to a finite-element
-// force–approach curve (MODEL.md §9), written by it as calibration.json (calibration_text) and
+// force–approach curve (docs/model.md §9), written by it as calibration.json (calibration_text) and
 // read back from it (read_calibration): the file's keys live in calibration.cc alone.
 //
 // The file (SI units; numbers in their shortest exact form):

@@ -24,7 +24,7 @@ struct Curvatures {
   double difference() const { return ((ball_1 - ball_2) + (race_1 - race_2)) / sum(); }
 };
 
-/// Curvatures of the ball on the given race of `b` (MODEL.md §3).
+/// Curvatures of the ball on the given race of `b` (docs/model.md §3).
 Curvatures race_curvatures(const Bearing& b, Race race);
 
 /// Contact constants of one ball on one race.

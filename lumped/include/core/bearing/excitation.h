@@ -1,7 +1,7 @@
 #pragma once
-// Excitations shared by every model (MODEL.md §5): raceway waviness, ball-size errors.
-// Sign convention (MODEL.md §1): a deviation is radial, positive toward the ball (more material,
-// more approach), on either race; a smaller ball reduces the approach by ΔD_j = D − D_j.
+// Excitations shared by every model (docs/model.md §5): raceway waviness, ball-size errors.
+// Sign convention (docs/model.md §1): a deviation is radial, positive toward the ball (more
+// material, more approach), on either race; a smaller ball reduces the approach by ΔD_j = D − D_j.
 
 #include <cstdint>
 #include <string>

@@ -1,5 +1,6 @@
 #pragma once
-// Bearing defect frequencies from rolling kinematics (MODEL.md §2), outer ring fixed by default.
+// Bearing defect frequencies from rolling kinematics (docs/model.md §2), outer ring fixed by
+// default.
 
 #include "bearing/bearing.h"
 

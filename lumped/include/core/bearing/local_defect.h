@@ -1,7 +1,7 @@
 #pragma once
 // Local defects (spalls): a slot of width w, along the rolling direction, and depth h in a
 // raceway or on a ball, and the extra clearance (the "drop") a rolling contact gains over it
-// (MODEL.md §5; case table [[defects]]).
+// (docs/model.md §5; case table [[defects]]).
 //
 // Model: the other body's curvature bounds the drop (the ball path over a spall of Sawalhi &
 // Randall, "Simulating gear and bearing interactions in the presence of faults, Part I", Mech.

@@ -1,6 +1,6 @@
 #pragma once
 // Static load distribution of a radial ball bearing: the inner-ring displacement (x, y) that puts
-// the ball set in equilibrium with a radial load, with clearance (MODEL.md §1 and §4).
+// the ball set in equilibrium with a radial load, with clearance (docs/model.md §1 and §4).
 //
 // Ball j sits at θ_j = φ₀ + 2π j / Z (j = 0…Z−1), its approach is δ_j = x cos θ_j + y sin θ_j − γ,
 // and its load Q_j = K [δ_j]_+^n. Equilibrium of the inner ring: Σ_j Q_j (cos θ_j, sin θ_j) = F.

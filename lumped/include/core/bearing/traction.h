@@ -1,6 +1,6 @@
 #pragma once
-// Sliding and traction at the ball–race contacts when the cage slips (seed 004 §2; MODEL.md §4,
-// "ball DOFs + cage slip"). The ball-DOF model (issue 7) is built on this.
+// Sliding and traction at the ball–race contacts when the cage slips (seed 004 §2; docs/model.md
+// §4, "Ball DOFs, cage slip and friction"). The ball-DOF model (issue 7) is built on this.
 //
 // Kinematics, outer ring fixed, inner ring turning at ω_i, cage at ω_ca (seed 004 eq. 3:
 // ω_ca = (1 − s_c) ω_c with ω_c the pure-rolling cage speed), each ball spinning at ω_b relative

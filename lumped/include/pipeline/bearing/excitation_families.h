@@ -1,6 +1,6 @@
 #pragma once
 // Which families of spectral lines a simulated bearing can show, from what its case contains
-// (MODEL.md §7), so a run's peaks are named only after lines its excitations make.
+// (docs/model.md §7), so a run's peaks are named only after lines its excitations make.
 //
 // Identical balls evenly spaced in the cage make every force a function of the ball set's angle
 // that repeats each ball pass: lines at k·BPFO, and, when the response repeats only every m ball

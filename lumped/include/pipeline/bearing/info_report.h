@@ -57,7 +57,7 @@ std::string elastic_limit_warning(const InfoReport& report);
 /// Computes everything `info` shows. Throws InputError / SolverError.
 InfoReport compute_info(const Case& c);
 
-/// JSON with the keys of DESIGN.md: kinematics.{shaft,ftf,bpfo,bpfi,bsf} [Hz],
+/// JSON with the keys docs/bearing-sim.md documents: kinematics.{shaft,ftf,bpfo,bpfi,bsf} [Hz],
 /// contact.{inner,outer}.{sum_rho [1/m], f_rho, ellipticity, delta_star, K [N/m^n], exponent n},
 /// contact.K, contact.exponent, static.{deflection [m, m], ball_loads [N], q_max [N],
 /// peak_load [N], peak_pressure.{inner, outer} [Pa], pressure_limit [Pa], elastic (bool), and

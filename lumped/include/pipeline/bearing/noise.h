@@ -1,7 +1,7 @@
 #pragma once
-// The bearing's sound at its microphones (MODEL.md §8, seed 000): the inner ring as an infinite
-// cylinder translating with the ring centre's velocity (vx, vy), each ball as a sphere driven by
-// its centre's radial velocity vr_j, their pressures filtered in the time domain
+// The bearing's sound at its microphones (docs/model.md §8, seed 000): the inner ring as an
+// infinite cylinder translating with the ring centre's velocity (vx, vy), each ball as a sphere
+// driven by its centre's radial velocity vr_j, their pressures filtered in the time domain
 // (acoustics/pressure.h) and summed per microphone.
 //
 // What moves and what does not:

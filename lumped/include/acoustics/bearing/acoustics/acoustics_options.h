@@ -1,5 +1,5 @@
 #pragma once
-// What the acoustics of a run is asked for (the case file's [acoustics] table, MODEL.md §8):
+// What the acoustics of a run is asked for (the case file's [acoustics] table, docs/model.md §8):
 // microphones, which source model stands for the inner ring and for each ball, how their
 // pressures add up, and the air.
 

@@ -1,5 +1,5 @@
 #pragma once
-// Where the microphones are, and where each source is as seen from one (MODEL.md §8: distances
+// Where the microphones are, and where each source is as seen from one (docs/model.md §8: distances
 // and angles from each source, not from the bearing centre).
 
 #include <vector>

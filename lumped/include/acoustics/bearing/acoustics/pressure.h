@@ -1,5 +1,5 @@
 #pragma once
-// Sound pressure in the time domain (MODEL.md §8): a source's velocity record → FFT → transfer
+// Sound pressure in the time domain (docs/model.md §8): a source's velocity record → FFT → transfer
 // function → inverse FFT → p(t) at a point; RMS and summation over sources.
 //
 // The record u_0 … u_{N−1} (N samples at rate f_s, T = N/f_s) is filtered as one period of a

@@ -1,6 +1,7 @@
 #pragma once
-// Sound sources of a bearing (MODEL.md §8): transfer functions from a body's surface velocity to
-// the sound pressure at a point, exact in ka, and seed 000's approximate forms as labelled options.
+// Sound sources of a bearing (docs/model.md §8): transfer functions from a body's surface velocity
+// to the sound pressure at a point, exact in ka, and seed 000's approximate forms as labelled
+// options.
 //
 // Time dependence e^{iωt}, k = ω/c₀. A body of radius a whose surface moves with normal velocity
 // u·Θ(angle) (Θ = 1 for a breathing body, cos ψ for a rigid body translating with velocity u,
@@ -29,7 +30,7 @@
 //   H₁(x) ≈ x/2 + 2i/(πx) and H₁'(x) ≈ 1/2 − 2i/(πx²) for both ka and kr. Expanded, its real part
 //   carries kr/4 − 4/(π²k³a²r), the paper's first bracket exactly; the imaginary part is
 //   r/(πka²) + 1/(πkr), where the paper prints 4/(π²k³a²r) + r/(πka²) (a garbled copy of the
-//   first bracket's term, MODEL.md §8). This is the form as derived, not as printed. It needs
+//   first bracket's term, docs/model.md §8). This is the form as derived, not as printed. It needs
 //   kr ≪ 1 as well as ka ≪ 1 (at 10 mm, kr = 1 at 5.5 kHz).
 // - Ball, its eq. (23): p = ρ₀c₀ k a² u / (r √(1 + (ka)²)) · e^{iθ}, θ = arctan(1/(ka)). That is
 //   the pulsating sphere's exact modulus and phase factor ika/(1 + ika), without the propagation

@@ -1,6 +1,7 @@
 #pragma once
-// The ball-DOF model with cage slip and traction friction (seed 004; MODEL.md §4, "ball DOFs + cage
-// slip"): model.kind = "balls". DOFs (2Z + 2; with an axial load 2Z + 3, below), in this order:
+// The ball-DOF model with cage slip and traction friction (seed 004; docs/model.md §4, "Ball DOFs,
+// cage slip and friction"): model.kind = "balls". DOFs (2Z + 2; with an axial load 2Z + 3,
+// below), in this order:
 //   q = [x, y, r_1 … r_Z, φ_1 … φ_Z]
 // x, y the inner-ring centre [m]; r_j ball j's centre, radially outward from the position where a
 // nominal ball touches the perfect outer race [m] (the r_j of bearing_model.h's ball_motion);
@@ -11,12 +12,13 @@
 //     δ_o,j = r_j + Π_o(θ_j) − ΔD_j/2,
 //     δ_i,j = x cos θ_j + y sin θ_j − r_j − γ + Π_i(θ_j − ω_i t) − ΔD_j/2,
 //     Q_o,j = K_o [δ_o,j]_+^{n_o},   Q_i,j = K_i [δ_i,j]_+^{n_i}   (TVDS: K per race and ball).
-// Their sum is the 2-DOF model's approach (MODEL.md §1). Clearance split: all of the per-ball gap
-// γ = P_d/2 (bearing.clearance, the ISO diametral clearance) sits on the inner side, the convention
-// every model of the toolkit uses (outer raceway diameter d_m + D). Any other split g_in + g_out =
-// γ is the shift r_j → r_j − g_out of the ball coordinate: the equations, and so the motion, are
-// the same, with or without ball mass. Seed 004 subtracts its P_d/2 at each contact (eqs. 13–14),
-// so its per-ball gap is its whole P_d: clearance = 2 P_d maps it (examples/seed004_6304.toml).
+// Their sum is the 2-DOF model's approach (docs/model.md §1). Clearance split: all of the per-ball
+// gap γ = P_d/2 (bearing.clearance, the ISO diametral clearance) sits on the inner side, the
+// convention every model of the toolkit uses (outer raceway diameter d_m + D). Any other split
+// g_in + g_out = γ is the shift r_j → r_j − g_out of the ball coordinate: the equations, and so the
+// motion, are the same, with or without ball mass. Seed 004 subtracts its P_d/2 at each contact
+// (eqs. 13–14), so its per-ball gap is its whole P_d: clearance = 2 P_d maps it
+// (examples/seed004_6304.toml).
 //
 // Kinematics. θ_j = φ₀ + 2πj/Z + ω_ca t with ω_ca = (1 − s_c) ω_c (seed 004 eq. 3). Sliding speeds
 // (traction.h, seed 004 eqs. 7–8), with g = D cos α / d_m and the lever arm L = (D/2) cos α:

@@ -1,6 +1,6 @@
 #pragma once
-// The quasi-static model of seed 000 (MODEL.md §4): no inertia and no damping; at each instant the
-// inner-ring centre p = (x, y) is where the ball set balances the load,
+// The quasi-static model of seed 000 (docs/model.md §4): no inertia and no damping; at each instant
+// the inner-ring centre p = (x, y) is where the ball set balances the load,
 //
 //   g(p, t) = Σ_j Q_j(p, t) (cos θ_j, sin θ_j) − F(t) = 0,   Q_j = K_j [δ_j]_+^n,
 //   δ_j = x cos θ_j + y sin θ_j − γ + Π_i(θ_j − ω_i t) + Π_o(θ_j) − ΔD_j,

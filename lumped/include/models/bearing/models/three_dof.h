@@ -1,5 +1,5 @@
 #pragma once
-// The 3-DOF model with axial load / preload (seed 001, MODEL.md §4): the inner-ring centre
+// The 3-DOF model with axial load / preload (seed 001, docs/model.md §4): the inner-ring centre
 // (x, y) and its axial position z on Z Hertzian balls, outer ring fixed.
 //
 // Geometry. The groove curvature centres of one ball are A₀ = (f_i + f_o − 1) D apart. With the
@@ -8,7 +8,7 @@
 // u₀ = A₀ cos α₀ = A₀ − P_d/2, axial offset w₀ = A₀ sin α₀ = sqrt((P_d/2)(2A₀ − P_d/2)).
 // z = 0 is that touching position (shifted axially by w₀ from the centred one). Moving the inner
 // ring by (x, y, z) moves ball j's inner-groove centre by r_j = x cos θ_j + y sin θ_j + e_j
-// radially (e_j: waviness on both races and the size error, MODEL.md §1) and by z axially, so
+// radially (e_j: waviness on both races and the size error, docs/model.md §1) and by z axially, so
 //     L_j = sqrt((w₀ + z)² + (u₀ + r_j)²),   δ_j = L_j − A₀,   Q_j = K_j [δ_j]_+^n,
 // (n the exponent of the contact law: 3/2 for Hertz, the fitted one for an FE-calibrated law)
 // and the loaded contact angle follows from the same triangle:

@@ -1,5 +1,5 @@
 #pragma once
-// The 2-DOF model of seeds 001–003 (MODEL.md §4): the inner-ring centre (x, y) on Z Hertzian
+// The 2-DOF model of seeds 001–003 (docs/model.md §4): the inner-ring centre (x, y) on Z Hertzian
 // balls, outer ring fixed, inner ring turning at ω_i.
 //
 //   m ẍ + c ẋ + Σ_j Q_j cos θ_j = F_x + F_u cos ω_i t

@@ -14,7 +14,7 @@ namespace bearing {
 ///   inverse  x_n = (1/N) Σ_{k=0}^{N−1} X_k e^{+2πi kn/N}, from X_0 … X_{⌊N/2⌋} of a Hermitian
 ///            spectrum (Im X_0 and, for even N, Im X_{N/2} are ignored: they are zero for real x).
 /// With these signs bin k holds the e^{+iω_k t} part of x, ω_k = 2πk f_s/N: the time convention
-/// e^{iωt} of the acoustics (MODEL.md §8).
+/// e^{iωt} of the acoustics (docs/model.md §8).
 ///
 /// GSL's mixed-radix real FFT when every prime factor of N is at most 64; otherwise (e.g. a prime
 /// N, where GSL's generic pass is O(N²): 0.55 s at N = 24001) Bluestein's algorithm on GSL's

@@ -1,5 +1,5 @@
 #pragma once
-// The names of a bearing's spectral lines (MODEL.md §7): the families of frequencies its
+// The names of a bearing's spectral lines (docs/model.md §7): the families of frequencies its
 // excitations make — shaft rate, cage, outer- and inner-race ball pass, ball spin — with their
 // harmonics, the inner race's shaft-rate sidebands and the subharmonics of the ball pass, and the
 // sidebands of local faults for envelope spectra. find_peaks() (peaks.h) names a peak after the

@@ -1,5 +1,5 @@
 #pragma once
-// Spectral peaks and the bearing frequency each one is nearest to (MODEL.md §7), so a spectrum
+// Spectral peaks and the bearing frequency each one is nearest to (docs/model.md §7), so a spectrum
 // reads "BPFO 0.31 um, 2xBPFO 0.12 um, …". The names: line_names.h.
 
 #include <string>

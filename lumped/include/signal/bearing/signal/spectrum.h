@@ -1,6 +1,6 @@
 #pragma once
-// One-sided amplitude spectrum of a sampled channel (MODEL.md §7), scaled so that a sinusoid of
-// amplitude A shows as A, whatever the window.
+// One-sided amplitude spectrum of a sampled channel (docs/model.md §7), scaled so that a sinusoid
+// of amplitude A shows as A, whatever the window.
 
 #include <cstddef>
 #include <memory>

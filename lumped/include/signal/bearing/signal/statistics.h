@@ -1,6 +1,6 @@
 #pragma once
-// Scalar condition indicators of one channel (MODEL.md §7): mean, RMS, peak-to-peak, kurtosis and
-// crest factor, computed over whatever window the caller passes (the post-transient part of a
+// Scalar condition indicators of one channel (docs/model.md §7): mean, RMS, peak-to-peak, kurtosis
+// and crest factor, computed over whatever window the caller passes (the post-transient part of a
 // response; this layer does not know where the transient ends).
 
 #include <vector>
