@@ -79,12 +79,14 @@ TEST(RunCheck, NaNAndErrorsFailAndSkipsAreSkips) {
   EXPECT_EQ(run_check(skip, plain()).status, Status::skipped);
 }
 
-TEST(RunCheck, PaperVerdictsSayAgreeOrDisagreeExplained) {
+TEST(RunCheck, PaperVerdictsSayAgreeOrDisagreeTestedOrNot) {
   Check c = synthetic([](const Context&) { return Outcome{10.0, 10.0}; }, absolute(0.1, "t"));
   c.paper = PaperValue{10.0, "seed", ""};
   EXPECT_EQ(run_check(c, plain()).verdict, "agree");
   c.paper = PaperValue{20.0, "seed", "the paper halves it"};
-  EXPECT_EQ(run_check(c, plain()).verdict, "disagree-explained");
+  EXPECT_EQ(run_check(c, plain()).verdict, "disagree-untested");
+  c.paper->explanation_tested = true;
+  EXPECT_EQ(run_check(c, plain()).verdict, "disagree-tested");
   c.measure = [](const Context&) { return Outcome{20.0, 10.0}; };  // ours took the paper's value
   EXPECT_EQ(run_check(c, plain()).verdict, "fail");
 }

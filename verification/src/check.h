@@ -47,10 +47,16 @@ inline Tolerance absolute(double bound, std::string why) {
 
 /// A paper check's printed number; when `disagreement` is set the check's reference is the
 /// corrected value (docs/model.md) and the paper's number is shown beside it, never used to pass.
+/// The verdict is "agree", "disagree-tested" (`explanation_tested` and the check passed) or
+/// "disagree-untested" (the explanation is a reading of the paper that no comparison in the
+/// report tests), counted apart in the summary.
 struct PaperValue {
   double value = 0.0;        ///< the paper's number, in the check's unit
   std::string source;        ///< seed file and table/figure/equation, e.g. "seed000 Table 2"
   std::string disagreement;  ///< empty: we agree; else why our (correct) value differs
+  /// true only when this check's own comparison tests the explanation: its reference is the
+  /// physics the explanation appeals to (an FE field, an exact stiffness), so a pass confirms it.
+  bool explanation_tested = false;
 };
 
 /// What one measurement produced.

@@ -20,8 +20,8 @@ struct CheckResult {
   double value = 0.0;
   double reference = 0.0;
   double deviation = 0.0;  ///< |value/reference − 1| (relative) or |value − reference| (absolute)
-  std::string
-      verdict;  ///< "pass", "fail", "skipped", "reported"; papers: "agree", "disagree-explained"
+  std::string verdict;     ///< "pass", "fail", "skipped", "reported"; papers: "agree",
+                        ///< "disagree-tested", "disagree-untested" (PaperValue)
   std::string detail;      ///< the check's detail, or the error / skip reason
   double wall_time = 0.0;  ///< [s]
   std::vector<Figure> figures;

@@ -38,10 +38,31 @@ std::string deviation_text(const CheckResult& r) {
 std::string verdict_text(const Report& r) {
   const std::string n = std::to_string(r.results.size());
   if (r.failed() > 0) return std::to_string(r.failed()) + " of " + n + " checks FAILED.";
+  const std::string reported =
+      r.reported() > 0 ? ", " + std::to_string(r.reported()) + " reported without a verdict" : "";
   if (r.skipped() > 0)
     return "No check failed: " + std::to_string(r.passed()) + " passed, " +
-           std::to_string(r.skipped()) + " skipped (each skipped row says why).";
+           std::to_string(r.skipped()) + " skipped (each skipped row says why)" + reported + ".";
+  if (r.reported() > 0)
+    return "Every judged check passed (" + std::to_string(r.passed()) + " checks" + reported + ").";
   return "Every check passed (" + n + " checks).";
+}
+
+PaperVerdicts paper_verdicts(const Report& r) {
+  PaperVerdicts v;
+  for (const auto& c : r.results) {
+    if (c.verdict == "agree") ++v.agree;
+    if (c.verdict == "disagree-tested") ++v.disagree_tested;
+    if (c.verdict == "disagree-untested") ++v.disagree_untested;
+  }
+  return v;
+}
+
+std::string paper_verdicts_text(const Report& r) {
+  const PaperVerdicts v = paper_verdicts(r);
+  return "Source papers: " + std::to_string(v.agree) + " agree, " +
+         std::to_string(v.disagree_tested) + " disagree (explained and tested), " +
+         std::to_string(v.disagree_untested) + " disagree (explanation not tested).";
 }
 
 std::string level_text(const RunInfo& info) {

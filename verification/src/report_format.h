@@ -20,6 +20,16 @@ std::string level_text(const RunInfo& info);
 /// "1.2 s", "85 ms".
 std::string seconds_text(double s);
 /// Passed/total per family and in all.
+/// The paper checks' verdicts, counted apart: a disagreement whose explanation no comparison tests
+/// is a claim, not a verification.
+struct PaperVerdicts {
+  int agree = 0, disagree_tested = 0, disagree_untested = 0;
+};
+PaperVerdicts paper_verdicts(const Report& report);
+/// "Source papers: 2 agree, 5 disagree (explained and tested), 4 disagree (explanation not
+/// tested)."
+std::string paper_verdicts_text(const Report& report);
+
 struct FamilyCount {
   std::string id, title;
   int passed = 0, failed = 0, skipped = 0, reported = 0;

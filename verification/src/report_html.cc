@@ -48,7 +48,8 @@ void summary(std::ostringstream& h, const Report& report) {
       << "</td><td class=\"num\">" << f.skipped << "</td><td class=\"num\">" << f.reported
       << "</td></tr>\n";
   h << "<tr><th>all</th><th>" << report.passed() << "</th><th>" << report.failed() << "</th><th>"
-    << report.skipped() << "</th><th>" << report.reported() << "</th></tr></tbody></table></div>\n";
+    << report.skipped() << "</th><th>" << report.reported() << "</th></tr></tbody></table></div>\n"
+    << "<p>" << escape_html(paper_verdicts_text(report)) << "</p>\n";
 }
 
 void mutations(std::ostringstream& h, const Report& report) {

@@ -87,6 +87,10 @@ nlohmann::json report_json(const Report& report) {
                        {"reported", reported}});
   }
   j["summary"] = summary;
+  const PaperVerdicts pv = paper_verdicts(report);
+  j["paper_verdicts"] = {{"agree", pv.agree},
+                         {"disagree_tested", pv.disagree_tested},
+                         {"disagree_untested", pv.disagree_untested}};
   j["totals"] = {{"checks", report.results.size()},
                  {"passed", report.passed()},
                  {"failed", report.failed()},

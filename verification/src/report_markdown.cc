@@ -40,7 +40,7 @@ void summary(std::ostringstream& md, const Report& report) {
        << f.reported << " |\n";
   md << "| **all** | **" << report.passed() << "** | **" << report.failed() << "** | **"
      << report.skipped() << "** | **" << report.reported() << "** |\n\n";
-  md << "**Verdict: " << verdict_text(report) << "**\n\n";
+  md << "**Verdict: " << verdict_text(report) << "**\n\n" << paper_verdicts_text(report) << "\n\n";
 }
 
 void mutations(std::ostringstream& md, const Report& report) {

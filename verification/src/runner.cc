@@ -48,7 +48,9 @@ CheckResult run_check(const Check& check, const Context& context) {
     if (!check.judged)
       r.verdict = "reported";
     else if (check.paper && within)
-      r.verdict = check.paper->disagreement.empty() ? "agree" : "disagree-explained";
+      r.verdict = check.paper->disagreement.empty() ? "agree"
+                  : check.paper->explanation_tested ? "disagree-tested"
+                                                    : "disagree-untested";
     else
       r.verdict = to_string(r.status);
   } catch (const Skipped& e) {
