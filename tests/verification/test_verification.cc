@@ -41,6 +41,46 @@ TEST(CheckTable, IsWellFormedAndCoversEveryFamilyAndMutation) {
   for (const auto& m : mutations()) EXPECT_TRUE(named.count(m.id)) << "no check names " << m.id;
 }
 
+TEST(CheckTable, AToleranceTakenFromTheErrorItJudgesIsOnlyAPin) {
+  // The phrasings the FE rows used before they became pins; a derived bound merely rounded up
+  // is not one of them.
+  for (const char* why : {"the FE K at this mesh is +1.14 % off Hertz, rounded up to 1.5 %",
+                          "fem/README.md's measured largest |FE - exact| error: 8.98e-8 dB, "
+                          "rounded up to one significant digit",
+                          "the block's error at level 1, measured +0.80 %; rounded up to 1.2 %"}) {
+    EXPECT_TRUE(judged_by_its_own_error(why)) << why;
+    const Check derived = synthetic(
+        [](const Context&) {
+          return Outcome{1, 1};
+        },
+        relative(0.015, why));
+    EXPECT_THROW(validate_checks({derived}), std::logic_error) << why;
+    Check pinned = derived;
+    pinned.tolerance = pin(pinned.tolerance);
+    EXPECT_NO_THROW(validate_checks({pinned})) << why;
+    EXPECT_EQ(pinned.tolerance.why.rfind("regression pin: ", 0), 0u);
+  }
+  EXPECT_FALSE(judged_by_its_own_error("<= 1e-8 dB on a difference, rounded up to 1e-7 dB"));
+  // Every row of the real table: a derived bound never reads as the judged error.
+  for (const auto& c : all_checks())
+    if (c.tolerance.basis == Tolerance::Basis::derived)
+      EXPECT_FALSE(judged_by_its_own_error(c.tolerance.why)) << c.id;
+}
+
+TEST(Report, PinsAndReportedRowsAreCountedApart) {
+  Report report;
+  Check pinned = synthetic([](const Context&) { return Outcome{1, 1}; }, pin(relative(0.1, "t")));
+  Check derived = synthetic([](const Context&) { return Outcome{1, 1}; }, relative(0.1, "t"));
+  Check reported = derived;
+  reported.judged = false;
+  for (const Check* c : {&pinned, &derived, &reported})
+    report.results.push_back(run_check(*c, plain()));
+  EXPECT_EQ(report.passed(), 1);
+  EXPECT_EQ(report.pinned(), 1);
+  EXPECT_EQ(report.reported(), 1);
+  EXPECT_EQ(report.results[2].status, Status::reported);
+}
+
 TEST(CheckTable, QuickLevelHasAtLeastSixtyChecks) {
   const auto all = all_checks();
   EXPECT_GE(select_checks(all, Level::quick, "").size(), 60u);

@@ -92,11 +92,13 @@ def main():
     checks = report["checks"]
     totals = report["totals"]
     assert totals["checks"] == len(checks), "totals.checks != number of checks"
-    assert totals["passed"] == sum(c["status"] == "pass" for c in checks)
+    pinned = [c["tolerance"]["basis"] == "pin" for c in checks]
+    assert totals["passed"] == sum(c["status"] == "pass" and not p for c, p in zip(checks, pinned))
+    assert totals["pinned"] == sum(c["status"] == "pass" and p for c, p in zip(checks, pinned))
     assert totals["failed"] == sum(c["status"] == "fail" for c in checks)
     assert totals["skipped"] == sum(c["status"] == "skipped" for c in checks)
     assert totals["reported"] == sum(c["status"] == "reported" for c in checks)
-    assert sum(s["passed"] + s["failed"] + s["skipped"] + s["reported"]
+    assert sum(s["passed"] + s["pinned"] + s["failed"] + s["skipped"] + s["reported"]
                for s in report["summary"]) == len(checks)
     for c in checks:
         # Only a reported (not judged) check names no mutation it must catch.

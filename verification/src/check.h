@@ -32,17 +32,29 @@ enum class ReferenceKind {
 };
 
 /// |value − reference| ≤ bound (absolute) or |value / reference − 1| ≤ bound (relative).
+/// A bound is `derived` (a truncation or discretisation bound, a root tolerance, a published
+/// accuracy: it bounds the error) or a `pin` (the error measured once, rounded up: it holds past
+/// output and bounds nothing; counted apart from the verified checks). A derived bound that is
+/// justified by the error it judges is refused when the table is built (validate_checks()).
 struct Tolerance {
   enum class Kind { absolute, relative };
+  enum class Basis { derived, pin };
   Kind kind = Kind::relative;
   double bound = 0.0;  ///< in the check's unit (absolute) or as a fraction (relative)
   std::string why;     ///< the justification: where the bound comes from
+  Basis basis = Basis::derived;
 };
 inline Tolerance relative(double bound, std::string why) {
   return {Tolerance::Kind::relative, bound, std::move(why)};
 }
 inline Tolerance absolute(double bound, std::string why) {
   return {Tolerance::Kind::absolute, bound, std::move(why)};
+}
+/// `t` as a regression pin: its `why` then starts "regression pin: ".
+inline Tolerance pin(Tolerance t) {
+  t.basis = Tolerance::Basis::pin;
+  t.why = "regression pin: " + t.why;
+  return t;
 }
 
 /// A paper check's printed number; when `disagreement` is set the check's reference is the

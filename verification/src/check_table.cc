@@ -1,3 +1,4 @@
+#include <regex>
 #include <set>
 #include <stdexcept>
 
@@ -18,8 +19,16 @@ bool known_family(const std::string& id) {
   return false;
 }
 
-// The table's own rules, checked once when it is built (and by tests/verification).
-void validate(const std::vector<Check>& all) {
+}  // namespace
+
+bool judged_by_its_own_error(const std::string& why) {
+  // A bound that admits it is the judged error: measured (or "is x % off" the reference) and then
+  // rounded up. A derived bound rounded up ("<= 1e-8 dB, rounded up to 1e-7") is not one.
+  static const std::regex own_error("(measured|\\boff\\b).{0,200}round(ed)? up", std::regex::icase);
+  return std::regex_search(why, own_error);
+}
+
+void validate_checks(const std::vector<Check>& all) {
   std::set<std::string> ids;
   for (const auto& c : all) {
     const std::string where = "check \"" + c.id + "\": ";
@@ -33,14 +42,17 @@ void validate(const std::vector<Check>& all) {
     if (!c.measure) throw std::logic_error(where + "no measurement");
     if (c.tolerance.why.empty() || !(c.tolerance.bound >= 0))
       throw std::logic_error(where + "tolerance without a bound or a justification");
+    if (c.tolerance.basis == Tolerance::Basis::derived && judged_by_its_own_error(c.tolerance.why))
+      throw std::logic_error(where +
+                             "a tolerance taken from the error it judges is a regression pin "
+                             "(pin()), not a derived bound: " +
+                             c.tolerance.why);
     if (c.compares.empty() || c.unit.empty())
       throw std::logic_error(where + "no description or unit");
     if ((c.reference == ReferenceKind::paper) != c.paper.has_value())
       throw std::logic_error(where + "paper checks, and only they, carry the paper's value");
   }
 }
-
-}  // namespace
 
 std::vector<Check> all_checks() {
   std::vector<Check> all;
@@ -59,7 +71,7 @@ std::vector<Check> all_checks() {
   append(all, paper_checks());
   append(all, paper_contact_checks());
   append(all, measured_checks());
-  validate(all);
+  validate_checks(all);
   return all;
 }
 

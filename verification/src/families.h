@@ -39,7 +39,16 @@ inline constexpr Family kFamilies[] = {
 };
 
 /// Every check, in report order (families as above). Throws std::logic_error on a malformed
-/// table: a duplicate id, an unknown family or mutation, a check that names no mutation.
+/// table (validate_checks()).
 std::vector<Check> all_checks();
+
+/// The table's rules: unique ids, known families and mutations, a mutation named by every judged
+/// check, a measurement, a justified bound, paper values on paper checks only, and no derived
+/// tolerance justified by the error it judges (judged_by_its_own_error(): that is a pin()).
+/// Throws std::logic_error naming the check.
+void validate_checks(const std::vector<Check>& all);
+
+/// True when a tolerance's justification says it is the judged error, measured and rounded up.
+bool judged_by_its_own_error(const std::string& why);
 
 }  // namespace bearing::verify

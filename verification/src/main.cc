@@ -133,9 +133,10 @@ int run_command(const Options& o) {
   report.info.wall_time =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   write_report(report, o.out, BEARING_VERIFY_PLOT_SCRIPT);
-  std::printf("%d passed, %d failed, %d skipped, %d reported of %zu checks; report: %s\n",
-              report.passed(), report.failed(), report.skipped(), report.reported(),
-              report.results.size(), (fs::path(o.out) / "report.html").c_str());
+  std::printf(
+      "%d passed, %d pinned, %d failed, %d skipped, %d reported of %zu checks; report: %s\n",
+      report.passed(), report.pinned(), report.failed(), report.skipped(), report.reported(),
+      report.results.size(), (fs::path(o.out) / "report.html").c_str());
   return report.failed() > 0 ? 4 : 0;
 }
 

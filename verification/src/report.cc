@@ -60,9 +60,14 @@ const char* to_string(Level l) {
 
 namespace {
 
-int count(const Report& r, Status s) {
+// Checks with status `s`; a pass counts as passed (derived bound) or pinned (regression pin).
+int count(const Report& r, Status s, bool pinned = false) {
   int n = 0;
-  for (const auto& c : r.results) n += c.status == s ? 1 : 0;
+  for (const auto& c : r.results)
+    n += c.status == s && (s != Status::pass ||
+                           (c.check->tolerance.basis == Tolerance::Basis::pin) == pinned)
+             ? 1
+             : 0;
   return n;
 }
 
@@ -90,6 +95,9 @@ int Report::skipped() const {
 }
 int Report::reported() const {
   return count(*this, Status::reported);
+}
+int Report::pinned() const {
+  return count(*this, Status::pass, true);
 }
 
 void write_report(const Report& report, const std::string& dir, const std::string& plot_script) {

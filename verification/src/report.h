@@ -21,7 +21,7 @@ struct CheckResult {
   double reference = 0.0;
   double deviation = 0.0;  ///< |value/reference − 1| (relative) or |value − reference| (absolute)
   std::string verdict;     ///< "pass", "fail", "skipped", "reported"; papers: "agree",
-                        ///< "disagree-tested", "disagree-untested" (PaperValue)
+                           ///< "disagree-tested", "disagree-untested" (PaperValue)
   std::string detail;      ///< the check's detail, or the error / skip reason
   double wall_time = 0.0;  ///< [s]
   std::vector<Figure> figures;
@@ -65,6 +65,8 @@ struct Report {
   int passed() const;
   int skipped() const;
   int reported() const;
+  /// Passed checks whose tolerance is a regression pin (counted apart from passed()).
+  int pinned() const;
 };
 
 /// Writes DIR/report.json, DIR/report.md, DIR/report.html and DIR/figures/ (PNG through

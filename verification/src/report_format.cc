@@ -38,13 +38,15 @@ std::string deviation_text(const CheckResult& r) {
 std::string verdict_text(const Report& r) {
   const std::string n = std::to_string(r.results.size());
   if (r.failed() > 0) return std::to_string(r.failed()) + " of " + n + " checks FAILED.";
-  const std::string reported =
-      r.reported() > 0 ? ", " + std::to_string(r.reported()) + " reported without a verdict" : "";
+  const std::string apart =
+      (r.pinned() > 0 ? ", " + std::to_string(r.pinned()) + " regression pins held" : "") +
+      (r.reported() > 0 ? ", " + std::to_string(r.reported()) + " reported without a verdict"
+                        : std::string());
   if (r.skipped() > 0)
-    return "No check failed: " + std::to_string(r.passed()) + " passed, " +
-           std::to_string(r.skipped()) + " skipped (each skipped row says why)" + reported + ".";
-  if (r.reported() > 0)
-    return "Every judged check passed (" + std::to_string(r.passed()) + " checks" + reported + ").";
+    return "No check failed: " + std::to_string(r.passed()) + " passed" + apart + ", " +
+           std::to_string(r.skipped()) + " skipped (each skipped row says why).";
+  if (!apart.empty())
+    return "No check failed: " + std::to_string(r.passed()) + " passed" + apart + ".";
   return "Every check passed (" + n + " checks).";
 }
 
@@ -86,7 +88,8 @@ std::vector<FamilyCount> family_counts(const Report& report) {
     FamilyCount c{f.id, f.title};
     for (const auto& r : report.results) {
       if (r.check->family != f.id) continue;
-      (r.status == Status::pass       ? c.passed
+      const bool pinned = r.check->tolerance.basis == Tolerance::Basis::pin;
+      (r.status == Status::pass       ? (pinned ? c.pinned : c.passed)
        : r.status == Status::fail     ? c.failed
        : r.status == Status::reported ? c.reported
                                       : c.skipped)++;

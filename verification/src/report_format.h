@@ -32,7 +32,7 @@ std::string paper_verdicts_text(const Report& report);
 
 struct FamilyCount {
   std::string id, title;
-  int passed = 0, failed = 0, skipped = 0, reported = 0;
+  int passed = 0, failed = 0, skipped = 0, reported = 0, pinned = 0;
 };
 std::vector<FamilyCount> family_counts(const Report& report);
 /// Mutations caught / total.

@@ -41,14 +41,16 @@ void title_page(std::ostringstream& h, const Report& report) {
 
 void summary(std::ostringstream& h, const Report& report) {
   h << "<h2>Summary</h2><div class=\"scroll\"><table><thead><tr><th>family</th><th>passed</th>"
-       "<th>failed</th><th>skipped</th><th>reported, not judged</th></tr></thead><tbody>\n";
+       "<th>pinned (regression pins held)</th><th>failed</th><th>skipped</th><th>reported, not "
+       "judged</th></tr></thead><tbody>\n";
   for (const auto& f : family_counts(report))
     h << "<tr" << (f.failed ? " class=\"fail\"" : "") << "><td>" << escape_html(f.title)
-      << "</td><td class=\"num\">" << f.passed << "</td><td class=\"num\">" << f.failed
-      << "</td><td class=\"num\">" << f.skipped << "</td><td class=\"num\">" << f.reported
-      << "</td></tr>\n";
-  h << "<tr><th>all</th><th>" << report.passed() << "</th><th>" << report.failed() << "</th><th>"
-    << report.skipped() << "</th><th>" << report.reported() << "</th></tr></tbody></table></div>\n"
+      << "</td><td class=\"num\">" << f.passed << "</td><td class=\"num\">" << f.pinned
+      << "</td><td class=\"num\">" << f.failed << "</td><td class=\"num\">" << f.skipped
+      << "</td><td class=\"num\">" << f.reported << "</td></tr>\n";
+  h << "<tr><th>all</th><th>" << report.passed() << "</th><th>" << report.pinned() << "</th><th>"
+    << report.failed() << "</th><th>" << report.skipped() << "</th><th>" << report.reported()
+    << "</th></tr></tbody></table></div>\n"
     << "<p>" << escape_html(paper_verdicts_text(report)) << "</p>\n";
 }
 

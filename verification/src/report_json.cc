@@ -28,7 +28,8 @@ nlohmann::json check_json(const CheckResult& r) {
       {"tolerance",
        {{"kind", c.tolerance.kind == Tolerance::Kind::relative ? "relative" : "absolute"},
         {"bound", c.tolerance.bound},
-        {"why", c.tolerance.why}}},
+        {"why", c.tolerance.why},
+        {"basis", c.tolerance.basis == Tolerance::Basis::pin ? "pin" : "derived"}}},
       {"status", to_string(r.status)},
       {"verdict", r.verdict},
       {"detail", r.detail},
@@ -71,10 +72,11 @@ nlohmann::json report_json(const Report& report) {
   };
   nlohmann::json summary = nlohmann::json::array();
   for (const auto& f : kFamilies) {
-    int pass = 0, fail = 0, skip = 0, reported = 0;
+    int pass = 0, fail = 0, skip = 0, reported = 0, pinned = 0;
     for (const auto& r : report.results) {
       if (r.check->family != f.id) continue;
-      (r.status == Status::pass       ? pass
+      const bool pin = r.check->tolerance.basis == Tolerance::Basis::pin;
+      (r.status == Status::pass       ? (pin ? pinned : pass)
        : r.status == Status::fail     ? fail
        : r.status == Status::reported ? reported
                                       : skip)++;
@@ -84,18 +86,17 @@ nlohmann::json report_json(const Report& report) {
                        {"passed", pass},
                        {"failed", fail},
                        {"skipped", skip},
-                       {"reported", reported}});
+                       {"reported", reported},
+                       {"pinned", pinned}});
   }
   j["summary"] = summary;
   const PaperVerdicts pv = paper_verdicts(report);
   j["paper_verdicts"] = {{"agree", pv.agree},
                          {"disagree_tested", pv.disagree_tested},
                          {"disagree_untested", pv.disagree_untested}};
-  j["totals"] = {{"checks", report.results.size()},
-                 {"passed", report.passed()},
-                 {"failed", report.failed()},
-                 {"skipped", report.skipped()},
-                 {"reported", report.reported()}};
+  j["totals"] = {{"checks", report.results.size()}, {"passed", report.passed()},
+                 {"failed", report.failed()},       {"skipped", report.skipped()},
+                 {"reported", report.reported()},   {"pinned", report.pinned()}};
   nlohmann::json checks = nlohmann::json::array();
   for (const auto& r : report.results) checks.push_back(check_json(r));
   j["checks"] = checks;

@@ -33,13 +33,14 @@ void title_page(std::ostringstream& md, const Report& report) {
 }
 
 void summary(std::ostringstream& md, const Report& report) {
-  md << "## Summary\n\n| family | passed | failed | skipped | reported, not judged |\n"
-        "|---|---|---|---|---|\n";
+  md << "## Summary\n\n| family | passed | pinned (regression pins held) | failed | skipped | "
+        "reported, not judged |\n|---|---|---|---|---|---|\n";
   for (const auto& f : family_counts(report))
-    md << "| " << f.title << " | " << f.passed << " | " << f.failed << " | " << f.skipped << " | "
-       << f.reported << " |\n";
-  md << "| **all** | **" << report.passed() << "** | **" << report.failed() << "** | **"
-     << report.skipped() << "** | **" << report.reported() << "** |\n\n";
+    md << "| " << f.title << " | " << f.passed << " | " << f.pinned << " | " << f.failed << " | "
+       << f.skipped << " | " << f.reported << " |\n";
+  md << "| **all** | **" << report.passed() << "** | **" << report.pinned() << "** | **"
+     << report.failed() << "** | **" << report.skipped() << "** | **" << report.reported()
+     << "** |\n\n";
   md << "**Verdict: " << verdict_text(report) << "**\n\n" << paper_verdicts_text(report) << "\n\n";
 }
 

@@ -4,7 +4,8 @@
 // the FE with lumped's source computed inside bearing-fem, which a mutation of this run does not
 // reach, so it is not used. The set-up is fem/README.md's accuracy table's: the 608's ring and
 // ball radii, microphones at (10 mm, 30°) and (1 m, 60°), frequencies spanning 100 Hz – 20 kHz
-// (the mesh follows the band's ends), degree 4; its measured errors are the tolerances.
+// (the mesh follows the band's ends), degree 4; its measured errors are the tolerances: regression
+// pins (pin()), counted apart in the report until a bound from the FE's order replaces them.
 
 #include <cmath>
 #include <complex>
@@ -193,11 +194,11 @@ Check fe_check(const FeSource& s, int level, bool phase) {
   c.quantity = phase ? "arg p" : "SPL";
   c.unit = phase ? "deg" : "dB";
   const double measured = phase ? s.level0_deg : (level ? s.level1_db : s.level0_db);
-  c.tolerance = absolute(round_up(measured),
-                         "fem/README.md's measured largest |FE − exact| " + what +
-                             " error over 100 Hz – 20 kHz and these microphones at level " +
-                             std::to_string(level) + ": " + fmt(measured) + (phase ? "°" : " dB") +
-                             ", rounded up to one significant digit");
+  c.tolerance = pin(absolute(
+      round_up(measured), "fem/README.md's measured largest |FE − exact| " + what +
+                              " error over 100 Hz – 20 kHz and these microphones at level " +
+                              std::to_string(level) + ": " + fmt(measured) + (phase ? "°" : " dB") +
+                              ", rounded up to one significant digit"));
   c.level = level ? Level::standard : Level::quick;
   c.cost = level ? 25.0 : 5.0;
   c.catches = {"sound-speed-x1.02", "microphone-distance-x1.05"};
@@ -223,9 +224,9 @@ Check ball_source_model() {
       "seed 000 eq. (23), a pulsating sphere of that surface speed";
   c.quantity = "SPL";
   c.unit = "dB";
-  c.tolerance = absolute(round_up(s.level0_db),
-                         "fem/README.md's measured largest |FE − exact| of sphere-dipole at "
-                         "level 0: 1.45e-4 dB, rounded up to one significant digit");
+  c.tolerance = pin(absolute(round_up(s.level0_db),
+                             "fem/README.md's measured largest |FE − exact| of sphere-dipole at "
+                             "level 0: 1.45e-4 dB, rounded up to one significant digit"));
   c.level = Level::quick;
   c.cost = 5.0;
   c.catches = {"sound-speed-x1.02", "microphone-distance-x1.05"};
