@@ -173,10 +173,10 @@ int mutate_command(const Options& o) {
   int caught = 0;
   for (const auto& m : report.mutations) caught += m.caught() ? 1 : 0;
   std::printf(
-      "mutation score %d/%zu; baseline %d passed, %d failed, %d skipped, %d reported; report: "
-      "%s\n",
-      caught, report.mutations.size(), report.passed(), report.failed(), report.skipped(),
-      report.reported(), (fs::path(o.out) / "report.html").c_str());
+      "mutation score %d/%zu; baseline %d passed, %d pinned, %d failed, %d skipped, %d reported; "
+      "report: %s\n",
+      caught, report.mutations.size(), report.passed(), report.pinned(), report.failed(),
+      report.skipped(), report.reported(), (fs::path(o.out) / "report.html").c_str());
   return caught == static_cast<int>(report.mutations.size()) && report.failed() == 0 ? 0 : 4;
 }
 
