@@ -29,6 +29,7 @@ enum class ReferenceKind {
   cross_model,   ///< two independent models of the same physics
   paper,         ///< a value printed in a source paper (docs/model.md, Sources)
   measurement,   ///< a measured record and its known condition (the CWRU test rig)
+  unit_test,     ///< a suite of the project's unit tests (each test derives its own bound)
 };
 
 /// |value − reference| ≤ bound (absolute) or |value / reference − 1| ≤ bound (relative).

@@ -21,7 +21,9 @@ std::vector<Check> acoustics_paper_checks();   ///< checks/acoustics_paper.cc: s
 std::vector<Check> acoustics_decay_checks();   ///< checks/acoustics_decay.cc: 1/r, 1/√r decay
 std::vector<Check> acoustics_fe_checks();      ///< checks/acoustics_fe.cc: FE radiation reference
 std::vector<Check> paper_checks();             ///< checks/papers.cc: examples/README.md's tables
-std::vector<Check> measured_checks();       ///< checks/measured.cc: the CWRU rig's records analysed
+std::vector<Check> measured_checks();
+std::vector<Check> unit_test_checks();  ///< checks/unit_tests.cc: the physics unit-test suites ///<
+                                        ///< checks/measured.cc: the CWRU rig's records analysed
 std::vector<Check> paper_contact_checks();  ///< checks/papers_contact.cc: TVDS, ball approach, SPL
 
 /// The families (Check::family), in report order, with the title the report gives each.
@@ -36,6 +38,7 @@ inline constexpr Family kFamilies[] = {
     {"acoustics", "Acoustics: sources, decay, finite-element radiation"},
     {"paper", "Source papers: reproduced tables and figures"},
     {"measured", "Measured records: the CWRU test rig and the fault-line threshold"},
+    {"unit", "Unit tests of the physics: closed forms, orders, conservation laws, reductions"},
 };
 
 /// Every check, in report order (families as above). Throws std::logic_error on a malformed

@@ -42,6 +42,8 @@ const char* to_string(ReferenceKind k) {
       return "paper";
     case ReferenceKind::measurement:
       return "measurement";
+    case ReferenceKind::unit_test:
+      return "unit-test";
   }
   return "?";
 }
