@@ -3,6 +3,7 @@
 
 #include <unistd.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
@@ -38,6 +39,7 @@ struct Options {
   std::string fem = BEARING_VERIFY_FEM;
   std::string plant;  ///< run --plant: a mutation planted in this run
   bool quiet = false;
+  bool fail_fast = false;  ///< run --fail-fast: cheapest checks first, stop at the first failure
 };
 
 // The perturbation `run --plant ID` asks for (identity without it).
@@ -113,12 +115,16 @@ Report run_report(const Options& o, const std::string& command, FemRunner& fem,
   report.info = run_info(command, o.level, o.only, o.jobs, o.mpi, fem.program());
   report.info.planted = o.plant;
   selected = select_checks(all, kLevels.at(o.level), command == "mutate" ? "" : o.only);
+  if (o.fail_fast) selected = cheapest_first(selected);
   const Context context(kLevels.at(o.level), planted(o.plant), &fem, BEARING_SOURCE_DIR);
   say(o, command + ": " + std::to_string(selected.size()) + " checks at level " + o.level);
-  report.results = run_checks(selected, context, o.jobs, [&](const CheckResult& r, int n) {
-    say(o, "[" + std::to_string(n) + "/" + std::to_string(selected.size()) + "] " +
-               to_string(r.status) + "  " + r.check->id);
-  });
+  report.results = run_checks(
+      selected, context, o.jobs,
+      [&](const CheckResult& r, int n) {
+        say(o, "[" + std::to_string(n) + "/" + std::to_string(selected.size()) + "] " +
+                   to_string(r.status) + "  " + r.check->id);
+      },
+      o.fail_fast);
   return report;
 }
 
@@ -136,6 +142,12 @@ int run_command(const Options& o) {
   std::printf("%d passed, %d failed, %d skipped, %d reported of %zu checks; report: %s\n",
               report.passed(), report.failed(), report.skipped(), report.reported(),
               report.results.size(), (fs::path(o.out) / "report.html").c_str());
+  if (o.fail_fast && report.failed() > 0) {
+    const auto first = std::find_if(report.results.begin(), report.results.end(),
+                                    [](const CheckResult& r) { return r.status == Status::fail; });
+    std::printf("fail-fast: stopped after %s failed (%zu of %zu checks ran)\n",
+                first->check->id.c_str(), report.results.size(), selected.size());
+  }
   return report.failed() > 0 ? 4 : 0;
 }
 
@@ -221,6 +233,9 @@ int main(int argc, char** argv) {
   run->add_option("--plant", o.plant,
                   "plant one mutation (bearing-verify list --mutations) to see a caught bug: the "
                   "report says so on its first line");
+  run->add_flag("--fail-fast", o.fail_fast,
+                "run the cheapest checks first and stop at the first failure (exit 4); the "
+                "report holds the checks that ran");
   auto* mutate = app.add_subcommand(
       "mutate",
       "plant each mutation, rerun the checks, report which caught it; exit 4 if one is not caught");
