@@ -428,7 +428,12 @@ def write_outputs(out, meta, mutants):
 def run(args):
     say = (lambda s: None) if args.quiet else (lambda s: print(s, file=sys.stderr, flush=True))
     out = os.path.abspath(args.out)
-    os.makedirs(out, exist_ok=True)
+    try:
+        os.makedirs(out, exist_ok=True)
+    except OSError as e:
+        print("source_mutants: --out = \"%s\": cannot create it (%s); allowed: a folder"
+              % (args.out, e.strerror), file=sys.stderr)
+        return 2
     scratch = os.path.abspath(args.scratch or os.path.join(out, "scratch"))
     start = time.monotonic()
     rev, src, build_dir = prepare_scratch(args.repo, args.commit, scratch, say)
