@@ -455,8 +455,10 @@ def run(args):
     previous = {}
     done_file = os.path.join(out, "source_mutants.json")
     if args.resume and os.path.exists(done_file):
+        keep = ("killed", "did not build") + (() if args.rerun_survivors else
+                                              ("survived", "equivalent"))
         previous = {m["id"]: m for m in json.load(open(done_file))["mutants"]
-                    if m.get("status") in ("killed", "survived", "equivalent", "did not build")}
+                    if m.get("status") in keep}
     meta = {"format": "bearing-verify source mutants 1", "commit": rev, "seed": args.seed,
             "level": args.level, "sites": total, "files": stats,
             "baseline": {"build_s": t_build, "run_s": t_run}, "run_timeout_s": timeout}
@@ -466,6 +468,8 @@ def run(args):
             r = previous[m["id"]]
         else:
             r = apply_and_judge(m, src, build_dir, args, logs, scratch, timeout)
+        if r["status"] == "equivalent":
+            r["status"] = "survived"  # judged again below, from the current list
         if r["status"] == "survived" and r["id"] in equivalent:
             r["status"], r["detail"] = "equivalent", equivalent[r["id"]]
         results.append(r)
@@ -530,6 +534,9 @@ def main():
     r.add_argument("--min-score", type=float, default=0.9)
     r.add_argument("--resume", action="store_true",
                    help="keep the verdicts of OUT/source_mutants.json, run the rest")
+    r.add_argument("--rerun-survivors", action="store_true",
+                   help="with --resume: run the survivors (and equivalents) again, e.g. after "
+                        "new checks")
     r.add_argument("--quiet", action="store_true")
     a = p.parse_args()
     if a.mutants < len(PHYSICS_FILES):

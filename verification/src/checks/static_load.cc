@@ -72,6 +72,44 @@ Check kinematics(const std::string& name) {
   return c;
 }
 
+// With the outer ring turning too (the library's bearing_frequencies(b, ω_i, ω_o)): the rates
+// relative to each ring depend on f_i − f_o only. Catches a cage speed that mistreats ω_o (code
+// mutant kinematics-eeb13c2a: ω_o / (1 + g) for ω_o (1 + g)), which no fixed-outer row can see.
+Check kinematics_outer_ring() {
+  Check c = row("static-load.kinematics-outer-ring", ReferenceKind::closed_form,
+                "value: the lumped FTF, BPFO, BPFI, BSF of every preset with the inner ring at "
+                "2000 rpm and the outer ring at -500 rpm (the one farthest from its formula); "
+                "reference: FTF = |f_i (1-g) + f_o (1+g)| / 2, BPFO = Z (f_i - f_o)(1-g)/2, "
+                "BPFI = Z (f_i - f_o)(1+g)/2, BSF = d_m/(2D) (f_i - f_o)(1-g^2)",
+                "frequency", "Hz",
+                relative(1e-12, "the same arithmetic in a different order: round-off only"),
+                {"pitch-diameter-x1.01"});
+  c.measure = [](const Context& ctx) {
+    const double fi = kShaftRpm / 60.0, fo = -500.0 / 60.0;
+    Outcome o{0, 1, "", {}};
+    double worst = -1;
+    const char* names[4] = {"FTF", "BPFO", "BPFI", "BSF"};
+    for (const auto& name : preset_names()) {
+      const BearingFrequencies v =
+          bearing_frequencies(ctx.bearing(name), 2.0 * M_PI * fi, 2.0 * M_PI * fo);
+      const Bearing b = preset(name);
+      const double g = b.ball_diameter * std::cos(b.contact_angle) / b.pitch_diameter;
+      const double ref[4] = {std::abs(0.5 * fi * (1 - g) + 0.5 * fo * (1 + g)),
+                             0.5 * b.balls * (fi - fo) * (1 - g),
+                             0.5 * b.balls * (fi - fo) * (1 + g),
+                             b.pitch_diameter / (2 * b.ball_diameter) * (fi - fo) * (1 - g * g)};
+      const double val[4] = {v.ftf, v.bpfo, v.bpfi, v.bsf};
+      for (int i = 0; i < 4; ++i)
+        if (std::abs(val[i] / ref[i] - 1) > worst) {
+          worst = std::abs(val[i] / ref[i] - 1);
+          o = {val[i], ref[i], name + " " + names[i] + " is the farthest", {}};
+        }
+    }
+    return o;
+  };
+  return c;
+}
+
 // ---- zero clearance ------------------------------------------------------------------------
 
 // Σ_j [cos ψ_j]_+^{n+1} over the balls at ψ_j = 2πj/Z + phase (the load along ψ = 0): at zero
@@ -145,7 +183,8 @@ Check stribeck(const std::string& name) {
         on.x.push_back(k);
         on.y.push_back(k / cos_sum(k, 0.0, 1.5));
         between.x.push_back(k);
-        between.y.push_back(k / cos_sum(k, M_PI / k, 1.5));
+        // The most loaded balls sit π/k off the load: Q_max = F cos^{3/2}(π/k) / Σ cos^{5/2}.
+        between.y.push_back(k * std::pow(std::cos(M_PI / k), 1.5) / cos_sum(k, M_PI / k, 1.5));
         lim.x.push_back(k);
         lim.y.push_back(limit);
       }
@@ -161,6 +200,41 @@ Check stribeck(const std::string& name) {
       o.figures.push_back(f);
     }
     return o;
+  };
+  return c;
+}
+
+// The load turned off the x axis, midway between balls 1 and 2 (φ = 3π/Z): by symmetry the
+// deflection follows the load, and Q_max Z / F_r = Z cos^{3/2}(π/Z) / Σ cos^{5/2}(ψ_j − φ). The
+// other rows load along x only, where the solver's y equations (their gradient and Hessian terms)
+// are idle: this row catches dropping the load's y component (code mutant static_load-58bd1f92).
+Check stribeck_turned(const std::string& name) {
+  Check c = row(
+      "static-load.stribeck-turned." + name, ReferenceKind::closed_form,
+      "value: Q_max Z / F_r of the lumped static solution of the " + name +
+          " at zero clearance with F_r = 500 N at 3 pi / Z from the x axis (midway between balls "
+          "1 and 2); reference: Z cos^1.5(pi/Z) / sum_j cos^2.5(psi_j - 3 pi / Z) over the loaded "
+          "balls (Q_j = Q_max (cos psi_j / cos(pi/Z))^1.5: the two most loaded balls sit pi/Z "
+          "off the load)",
+      "Q_max Z / F_r", "-",
+      relative(1e-9,
+               "the toolkit's Newton stops at a force residual of 1e-12 relative; the reference "
+               "is a finite sum"),
+      {"contact-exponent+0.05"});
+  c.measure = [name](const Context& ctx) {
+    const Bearing b = ctx.bearing(name);
+    const int z = b.balls;
+    const double phi = 3.0 * M_PI / z;
+    const StaticLoadResult s =
+        ctx.static_load(z, ctx.contact(b, HertzMethod::exact), 0.0,
+                        {kRadialLoad * std::cos(phi), kRadialLoad * std::sin(phi)}, 0.0);
+    const double angle = std::atan2(s.deflection.y(), s.deflection.x());
+    // The two most loaded balls sit π/Z off the load: Q_j = Q_max (cos ψ_j / cos(π/Z))^{3/2}.
+    const double ref = z * std::pow(std::cos(M_PI / z), 1.5) / cos_sum(z, -phi, 1.5);
+    return Outcome{s.q_max * z / kRadialLoad,
+                   ref,
+                   fmt("deflection at %.6f rad, the load at %.6f rad", angle, phi),
+                   {}};
   };
   return c;
 }
@@ -350,7 +424,9 @@ Check sjovall(const std::string& name) {
 std::vector<Check> static_load_checks() {
   std::vector<Check> all;
   for (const auto& name : preset_names()) all.push_back(kinematics(name));
+  all.push_back(kinematics_outer_ring());
   for (const auto& name : {"608", "6308", "6205"}) all.push_back(stribeck(name));
+  for (const auto& name : {"6308", "6205"}) all.push_back(stribeck_turned(name));
   for (const auto& name : preset_names()) all.push_back(deflection(name));
   for (const auto& name : preset_names()) all.push_back(load_zone(name));
   for (const auto& name : {"6304", "6308", "209"}) all.push_back(sjovall(name));
