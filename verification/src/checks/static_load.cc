@@ -147,7 +147,9 @@ double sjovall_jr(double eps, double n) {
 Check stribeck(const std::string& name) {
   Check c = row(
       "static-load.stribeck." + name, ReferenceKind::closed_form,
-      "value: Q_max Z / F_r of the lumped static solution of the " + name +
+      "value: min(Q_1, Q_2) Z / F_r (balls 1 and 2 carry Q_max) of the lumped static solution "
+      "of the " +
+          name +
           " at zero clearance (F_r = 500 N toward ball 0; the ratio depends on Z only: 608 and "
           "6304 have Z = 7, 6308 Z = 8, 6205 and 209 Z = 9); reference: Z / sum_j cos^2.5(psi_j) "
           "over the loaded balls, the exact finite-Z form of Stribeck's constant (4.37 = "
@@ -205,18 +207,21 @@ Check stribeck(const std::string& name) {
 }
 
 // The load turned off the x axis, midway between balls 1 and 2 (φ = 3π/Z): by symmetry the
-// deflection follows the load, and Q_max Z / F_r = Z cos^{3/2}(π/Z) / Σ cos^{5/2}(ψ_j − φ). The
-// other rows load along x only, where the solver's y equations (their gradient and Hessian terms)
-// are idle: this row catches dropping the load's y component (code mutant static_load-58bd1f92).
+// deflection follows the load, balls 1 and 2 carry Q_max and
+// Q_max Z / F_r = Z cos^{3/2}(π/Z) / Σ cos^{5/2}(ψ_j − φ). The other rows load along x only,
+// where the solver's turn into the load's frame is idle: this row catches a frame turned the wrong
+// way (sin Δ → −sin Δ loads the mirror-image pair with the same Q_max), which they pass.
 Check stribeck_turned(const std::string& name) {
   Check c = row(
       "static-load.stribeck-turned." + name, ReferenceKind::closed_form,
-      "value: Q_max Z / F_r of the lumped static solution of the " + name +
+      "value: min(Q_1, Q_2) Z / F_r (balls 1 and 2 carry Q_max) of the lumped static solution "
+      "of the " +
+          name +
           " at zero clearance with F_r = 500 N at 3 pi / Z from the x axis (midway between balls "
           "1 and 2); reference: Z cos^1.5(pi/Z) / sum_j cos^2.5(psi_j - 3 pi / Z) over the loaded "
           "balls (Q_j = Q_max (cos psi_j / cos(pi/Z))^1.5: the two most loaded balls sit pi/Z "
           "off the load)",
-      "Q_max Z / F_r", "-",
+      "Q_1 Z / F_r", "-",
       relative(1e-9,
                "the toolkit's Newton stops at a force residual of 1e-12 relative; the reference "
                "is a finite sum"),
@@ -231,7 +236,9 @@ Check stribeck_turned(const std::string& name) {
     const double angle = std::atan2(s.deflection.y(), s.deflection.x());
     // The two most loaded balls sit π/Z off the load: Q_j = Q_max (cos ψ_j / cos(π/Z))^{3/2}.
     const double ref = z * std::pow(std::cos(M_PI / z), 1.5) / cos_sum(z, -phi, 1.5);
-    return Outcome{s.q_max * z / kRadialLoad,
+    // Balls 1 and 2 must be the most loaded, equally: the smaller of their loads, so that a
+    // solver loading the mirror-image pair (the same Q_max) fails too.
+    return Outcome{std::min(s.ball_loads[1], s.ball_loads[2]) * z / kRadialLoad,
                    ref,
                    fmt("deflection at %.6f rad, the load at %.6f rad", angle, phi),
                    {}};
