@@ -12,8 +12,10 @@ scratch folder once (git archive), configures it once (Release, FE off), and for
 writes the mutated line, rebuilds bearing-verify (only the mutated file recompiles; ccache serves
 the rest), runs `bearing-verify run --level quick --fail-fast` and classifies it: killed (a check
 failed, or bearing-verify crashed, exited with an error, or timed out — each said in `detail`),
-survived, did not build; the file is restored after each. Survivors judged equivalent are listed,
-with the argument, in source_mutants_equivalent.json beside this script (by mutant id).
+survived, did not build; the file is restored after each. Survivors are judged by hand in
+source_mutants_judged.json beside this script (by mutant id): "equivalent" (with the argument; then
+counted apart from the score), "gap" (a real gap: the check that would kill it) or "limit" (a
+stated limit); the judgement is shown beside each survivor.
 
 Writes DIR/source_mutants.json (every mutant, its status, the check that killed it, times) and
 DIR/source_mutants.md (the table and the score killed / (total − did not build − equivalent)).
@@ -83,7 +85,7 @@ PHYSICS_FILES = [
 DEFAULT_SEED = 30  # issue 30
 DEFAULT_COUNT = 200
 HERE = os.path.dirname(os.path.abspath(__file__))
-EQUIVALENT_FILE = os.path.join(HERE, "source_mutants_equivalent.json")
+JUDGED_FILE = os.path.join(HERE, "source_mutants_judged.json")
 
 
 # --- finding the code lines ------------------------------------------------------------------
@@ -375,11 +377,12 @@ def classify(rc, out):
     return "killed", "", "exit %d (counted as killed): %s" % (rc, tail[:200])
 
 
-def load_equivalent():
-    if not os.path.exists(EQUIVALENT_FILE):
+def load_judgements():
+    """{id: (judgement, argument)} of the survivors judged by hand."""
+    if not os.path.exists(JUDGED_FILE):
         return {}
-    with open(EQUIVALENT_FILE, encoding="utf-8") as h:
-        return {e["id"]: e["argument"] for e in json.load(h)["equivalent"]}
+    with open(JUDGED_FILE, encoding="utf-8") as h:
+        return {e["id"]: (e["judgement"], e["argument"]) for e in json.load(h)["survivors"]}
 
 
 def score(mutants):
@@ -415,8 +418,6 @@ def write_outputs(out, meta, mutants):
              "|---|---|---|---|---|---|"]
     for m in mutants:
         by = m.get("killed_by") or m.get("detail", "")
-        if m["status"] == "equivalent":
-            by = "equivalent: " + m.get("detail", "")
         lines.append("| %s | %s:%d | `%s` | `%s` → `%s` | %s | %s |" % (
             m["id"], m["file"].replace("lumped/src/", ""), m["line"], m["operator"],
             m["original"].strip().replace("|", "\\|"), m["mutated"].strip().replace("|", "\\|"),
@@ -451,7 +452,7 @@ def run(args):
     timeout = max(90.0, 5.0 * t_run)
     say("baseline: built in %.0f s, %s checks pass in %.1f s; run timeout %.0f s"
         % (t_build, args.level, t_run, timeout))
-    equivalent = load_equivalent()
+    judged = load_judgements()
     previous = {}
     done_file = os.path.join(out, "source_mutants.json")
     if args.resume and os.path.exists(done_file):
@@ -470,8 +471,11 @@ def run(args):
             r = apply_and_judge(m, src, build_dir, args, logs, scratch, timeout)
         if r["status"] == "equivalent":
             r["status"] = "survived"  # judged again below, from the current list
-        if r["status"] == "survived" and r["id"] in equivalent:
-            r["status"], r["detail"] = "equivalent", equivalent[r["id"]]
+        if r["status"] == "survived" and r["id"] in judged:
+            judgement, argument = judged[r["id"]]
+            r["detail"] = judgement + ": " + argument
+            if judgement == "equivalent":
+                r["status"] = "equivalent"
         results.append(r)
         say("[%d/%d] %-13s %s %s:%d %s (%.0f s)" % (
             k, len(mutants), r["status"], r["id"], r["file"], r["line"], r.get("killed_by", ""),
@@ -483,6 +487,30 @@ def run(args):
           "score %.1f %%; %s" % (s["killed"], s["survived"], s["equivalent"], s["did not build"],
                                  s["total"], 100 * s["score"],
                                  os.path.join(out, "source_mutants.md")))
+    return 0 if s["score"] >= args.min_score else 4
+
+
+def rescore(args):
+    """The judgements of source_mutants_judged.json applied again to OUT/source_mutants.json
+    (after judging the survivors by hand), without running anything."""
+    path = os.path.join(args.out, "source_mutants.json")
+    with open(path, encoding="utf-8") as h:
+        doc = json.load(h)
+    judged = load_judgements()
+    for m in doc["mutants"]:
+        if m["status"] in ("survived", "equivalent"):
+            m["status"], m["detail"] = "survived", ""
+            if m["id"] in judged:
+                judgement, argument = judged[m["id"]]
+                m["detail"] = judgement + ": " + argument
+                if judgement == "equivalent":
+                    m["status"] = "equivalent"
+    meta = {k: v for k, v in doc.items() if k not in ("mutants", "score")}
+    write_outputs(args.out, meta, doc["mutants"])
+    s = score(doc["mutants"])
+    print("score %.1f %% (%d killed, %d survived, %d equivalent, %d did not build of %d)" % (
+        100 * s["score"], s["killed"], s["survived"], s["equivalent"], s["did not build"],
+        s["total"]))
     return 0 if s["score"] >= args.min_score else 4
 
 
@@ -538,7 +566,12 @@ def main():
                    help="with --resume: run the survivors (and equivalents) again, e.g. after "
                         "new checks")
     r.add_argument("--quiet", action="store_true")
+    sc = sub.add_parser("score", help="apply the hand judgements to OUT/source_mutants.json")
+    sc.add_argument("--out", required=True)
+    sc.add_argument("--min-score", type=float, default=0.9)
     a = p.parse_args()
+    if a.command == "score":
+        return rescore(a)
     if a.mutants < len(PHYSICS_FILES):
         print("source_mutants: --mutants = %d: too few; allowed: at least %d (the number of "
               "physics files)" % (a.mutants, len(PHYSICS_FILES)), file=sys.stderr)

@@ -16,7 +16,9 @@
 
 #include "../context.h"
 #include "../families.h"
+#include "bearing/local_defect.h"
 #include "bearing/presets.h"
+#include "bearing/traction.h"
 #include "check_util.h"
 #include "hertz_reference.h"
 
@@ -104,6 +106,76 @@ Check kinematics_outer_ring() {
           worst = std::abs(val[i] / ref[i] - 1);
           o = {val[i], ref[i], name + " " + names[i] + " is the farthest", {}};
         }
+    }
+    return o;
+  };
+  return c;
+}
+
+// Pure rolling has no sliding: seed 004's sliding speeds (bearing/traction.h, the ball-DOF
+// model's traction law) at the check's own pure-rolling cage speed and ball spin, and at the
+// library's rolling_ball_spin, for contact angles 0 and 20 deg. No quick run reaches this code
+// otherwise (code mutants traction-84c77b1b, traction-297e717e survived).
+Check pure_rolling_sliding() {
+  Check c = row("static-load.pure-rolling-sliding", ReferenceKind::closed_form,
+                "value: the largest |sliding speed| (inner, outer contact) of every preset at "
+                "2000 rpm, contact angle 0 and 20 deg, with the cage at w_i (1-g)/2 and the ball "
+                "spin w_i d_m (1-g^2) / (2 D cos a) (the check's, then the library's "
+                "rolling_ball_spin); reference: 0 (pure rolling)",
+                "sliding speed", "m/s",
+                absolute(1e-12,
+                         "surface speeds ~6 m/s cancel: a few ulps (1e-15 m/s) of round-off, "
+                         "with a wide margin"),
+                {"pitch-diameter-x1.01"});
+  c.measure = [](const Context& ctx) {
+    const double wi = 2.0 * M_PI * kShaftRpm / 60.0;
+    Outcome o{0, 0, "", {}};
+    for (const auto& name : preset_names())
+      for (double alpha : {0.0, 20.0 * M_PI / 180.0}) {
+        Bearing b = ctx.bearing(name), ref = preset(name);
+        b.contact_angle = ref.contact_angle = alpha;
+        const double g = ref.ball_diameter * std::cos(alpha) / ref.pitch_diameter;
+        const double cage = 0.5 * wi * (1 - g);
+        const double spin =
+            wi * ref.pitch_diameter * (1 - g * g) / (2 * ref.ball_diameter * std::cos(alpha));
+        for (double w_b : {spin, rolling_ball_spin(b, wi)}) {
+          const SlidingSpeeds v = sliding_speeds(b, wi, cage, w_b);
+          for (double x : {v.inner, v.outer})
+            if (std::abs(x) > std::abs(o.value)) {
+              o.value = x;
+              o.detail = name + fmt(" at %.0f deg is the farthest", alpha * 180 / M_PI);
+            }
+        }
+      }
+    return o;
+  };
+  return c;
+}
+
+// The ball's spin relative to the cage (local_defect.h, what a ball defect turns at) under a
+// contact angle: every other run has α = 0, where cos α is 1 (code mutant local_defect-37e43c8e,
+// D / cos α for D cos α, survived).
+Check ball_spin_angular() {
+  Check c = row("static-load.ball-spin-angular", ReferenceKind::closed_form,
+                "value: the ball spin relative to the cage (ball_spin_speed) of every preset at "
+                "contact angle 20 deg, cage at w_i (1-g)/2, 2000 rpm (the one farthest from its "
+                "formula); reference: 2 pi BSF = w_i d_m/(2D) (1-g^2), g = D cos a / d_m",
+                "ball spin", "rad/s",
+                relative(1e-12, "the same arithmetic in a different order: round-off only"),
+                {"pitch-diameter-x1.01"});
+  c.measure = [](const Context& ctx) {
+    const double wi = 2.0 * M_PI * kShaftRpm / 60.0, alpha = 20.0 * M_PI / 180.0;
+    Outcome o{0, 1, "", {}};
+    double worst = -1;
+    for (const auto& name : preset_names()) {
+      const Bearing ref = preset(name);
+      const double g = ref.ball_diameter * std::cos(alpha) / ref.pitch_diameter;
+      const double v = ball_spin_speed(ctx.bearing(name), 0.5 * wi * (1 - g), alpha);
+      const double r = wi * ref.pitch_diameter / (2 * ref.ball_diameter) * (1 - g * g);
+      if (std::abs(v / r - 1) > worst) {
+        worst = std::abs(v / r - 1);
+        o = {v, r, name + " is the farthest", {}};
+      }
     }
     return o;
   };
@@ -432,6 +504,8 @@ std::vector<Check> static_load_checks() {
   std::vector<Check> all;
   for (const auto& name : preset_names()) all.push_back(kinematics(name));
   all.push_back(kinematics_outer_ring());
+  all.push_back(pure_rolling_sliding());
+  all.push_back(ball_spin_angular());
   for (const auto& name : {"608", "6308", "6205"}) all.push_back(stribeck(name));
   for (const auto& name : {"6308", "6205"}) all.push_back(stribeck_turned(name));
   for (const auto& name : preset_names()) all.push_back(deflection(name));
