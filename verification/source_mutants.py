@@ -305,6 +305,28 @@ def generate(repo, count, seed, files=PHYSICS_FILES):
     return chosen, total, stats
 
 
+HAND_FILE = os.path.join(HERE, "source_mutants_hand.json")
+
+
+def hand_mutants(repo, path=HAND_FILE):
+    """The hand-written physics mutants (source_mutants_hand.json), located in `repo`."""
+    with open(path, encoding="utf-8") as h:
+        table = json.load(h)["mutants"]
+    out = []
+    for e in table:
+        with open(os.path.join(repo, e["file"]), encoding="utf-8") as h:
+            lines = h.read().split("\n")
+        at = [n for n, l in enumerate(lines, start=1) if e["find"] in l]
+        if len(at) != 1:
+            raise RuntimeError("hand mutant %s: \"%s\" is on %d lines of %s, not 1" % (
+                e["name"], e["find"], len(at), e["file"]))
+        line = lines[at[0] - 1]
+        out.append({"file": e["file"], "line": at[0], "column": line.index(e["find"]) + 1,
+                    "operator": "hand:" + e["what"], "original": line,
+                    "mutated": line.replace(e["find"], e["replace"]), "id": "hand-" + e["name"]})
+    return out
+
+
 # --- running --------------------------------------------------------------------------------
 
 
@@ -439,6 +461,10 @@ def run(args):
     start = time.monotonic()
     rev, src, build_dir = prepare_scratch(args.repo, args.commit, scratch, say)
     mutants, total, stats = generate(src, args.mutants, args.seed)
+    if args.only_hand:
+        mutants = []
+    if not args.no_hand:
+        mutants += hand_mutants(src)
     logs = os.path.join(out, "logs")
     os.makedirs(logs, exist_ok=True)
     say("baseline: building bearing-verify")
@@ -565,6 +591,9 @@ def main():
     r.add_argument("--rerun-survivors", action="store_true",
                    help="with --resume: run the survivors (and equivalents) again, e.g. after "
                         "new checks")
+    r.add_argument("--no-hand", action="store_true",
+                   help="leave out the hand-written mutants of source_mutants_hand.json")
+    r.add_argument("--only-hand", action="store_true", help="only the hand-written mutants")
     r.add_argument("--quiet", action="store_true")
     sc = sub.add_parser("score", help="apply the hand judgements to OUT/source_mutants.json")
     sc.add_argument("--out", required=True)
