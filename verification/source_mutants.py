@@ -553,7 +553,8 @@ def apply_and_judge(m, src, build_dir, args, logs, scratch, timeout):
     try:
         with open(path, "w", encoding="utf-8") as h:
             h.write("\n".join(lines))
-        rc, text, r["build_s"] = build(build_dir, os.path.join(logs, m["id"] + ".build.log"), 900)
+        log = os.path.join(logs, re.sub(r"[^\w.+-]", "_", m["id"]) + ".build.log")
+        rc, text, r["build_s"] = build(build_dir, log, 900)
         if rc != 0:
             r["status"], r["killed_by"] = "did not build", ""
             err = [l for l in text.splitlines() if "error" in l]
