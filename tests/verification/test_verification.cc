@@ -168,5 +168,33 @@ TEST(Mutations, OnlyChecksThatReadATurnedKnobAreRerunAndCaught) {
   EXPECT_EQ(results[1].rerun, 0);
 }
 
+TEST(RunChecks, FailFastRunsCheapestFirstAndStopsAtTheFirstFailure) {
+  std::vector<int> order;  // which checks ran, in order (jobs = 1)
+  auto make = [&order](int n, double cost, double value) {
+    Check c = synthetic(
+        [&order, n, value](const Context&) {
+          order.push_back(n);
+          return Outcome{value, 1.0};
+        },
+        relative(1e-9, "t"));
+    c.id = "test.c" + std::to_string(n);
+    c.cost = cost;
+    return c;
+  };
+  const Check expensive = make(0, 9.0, 1.0), failing = make(1, 0.5, 2.0), cheap = make(2, 0.1, 1.0);
+  const auto sorted = cheapest_first({&expensive, &failing, &cheap});
+  ASSERT_EQ(sorted.size(), 3u);
+  EXPECT_EQ(sorted[0], &cheap);
+  EXPECT_EQ(sorted[2], &expensive);
+  const auto fast = run_checks(sorted, plain(), 1, {}, true);
+  EXPECT_EQ(order, (std::vector<int>{2, 1}));  // the expensive check never started
+  ASSERT_EQ(fast.size(), 2u);
+  EXPECT_EQ(fast[1].status, Status::fail);
+  order.clear();
+  const auto all = run_checks(sorted, plain(), 1, {});  // without fail-fast every check runs
+  EXPECT_EQ(all.size(), 3u);
+  EXPECT_EQ(order.size(), 3u);
+}
+
 }  // namespace
 }  // namespace bearing::verify

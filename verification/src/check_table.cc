@@ -64,6 +64,7 @@ std::vector<Check> all_checks() {
   append(all, static_load_checks());
   append(all, dynamics_checks());
   append(all, dynamics_spectra_checks());
+  append(all, dynamics_jacobian_checks());
   append(all, fault_checks());
   append(all, acoustics_checks());
   append(all, acoustics_paper_checks());

@@ -14,16 +14,16 @@ std::vector<Check> hertz_fe_convergence_checks();  ///< checks/hertz_fe_converge
 std::vector<Check> hertz_groove_checks();          ///< checks/hertz_groove.cc: FE groove vs Hertz
 std::vector<Check> static_load_checks();  ///< checks/static_load.cc: kinematics, load distribution
 std::vector<Check> dynamics_checks();     ///< checks/dynamics.cc: conservation, limits, orders
-std::vector<Check> dynamics_spectra_checks();  ///< checks/dynamics_spectra.cc: lines, reductions
-std::vector<Check> fault_checks();             ///< checks/faults.cc: spalls, envelope lines
-std::vector<Check> acoustics_checks();         ///< checks/acoustics.cc: sources vs closed forms
-std::vector<Check> acoustics_paper_checks();   ///< checks/acoustics_paper.cc: seed 000's forms
-std::vector<Check> acoustics_decay_checks();   ///< checks/acoustics_decay.cc: 1/r, 1/√r decay
-std::vector<Check> acoustics_fe_checks();      ///< checks/acoustics_fe.cc: FE radiation reference
-std::vector<Check> paper_checks();             ///< checks/papers.cc: examples/README.md's tables
-std::vector<Check> measured_checks();
-std::vector<Check> unit_test_checks();  ///< checks/unit_tests.cc: the physics unit-test suites ///<
-                                        ///< checks/measured.cc: the CWRU rig's records analysed
+std::vector<Check> dynamics_spectra_checks();   ///< checks/dynamics_spectra.cc: lines, reductions
+std::vector<Check> dynamics_jacobian_checks();  ///< checks/dynamics_jacobian.cc: 2-DOF Jacobian
+std::vector<Check> fault_checks();              ///< checks/faults.cc: spalls, envelope lines
+std::vector<Check> acoustics_checks();          ///< checks/acoustics.cc: sources vs closed forms
+std::vector<Check> acoustics_paper_checks();    ///< checks/acoustics_paper.cc: seed 000's forms
+std::vector<Check> acoustics_decay_checks();    ///< checks/acoustics_decay.cc: 1/r, 1/√r decay
+std::vector<Check> acoustics_fe_checks();       ///< checks/acoustics_fe.cc: FE radiation reference
+std::vector<Check> paper_checks();              ///< checks/papers.cc: examples/README.md's tables
+std::vector<Check> measured_checks();       ///< checks/measured.cc: the CWRU rig's records analysed
+std::vector<Check> unit_test_checks();      ///< checks/unit_tests.cc: the physics unit-test suites
 std::vector<Check> paper_contact_checks();  ///< checks/papers_contact.cc: TVDS, ball approach, SPL
 
 /// The families (Check::family), in report order, with the title the report gives each.

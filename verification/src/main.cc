@@ -3,6 +3,7 @@
 
 #include <unistd.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
@@ -38,6 +39,10 @@ struct Options {
   std::string fem = BEARING_VERIFY_FEM;
   std::string plant;  ///< run --plant: a mutation planted in this run
   bool quiet = false;
+  bool fail_fast = false;  ///< run --fail-fast: cheapest checks first, stop at the first failure
+  bool source = false;     ///< mutate --source: code mutants of the physics sources
+  int mutants = 200;       ///< mutate --source: how many are drawn
+  int seed = 30;           ///< mutate --source: the draw's seed
 };
 
 // The perturbation `run --plant ID` asks for (identity without it).
@@ -113,12 +118,16 @@ Report run_report(const Options& o, const std::string& command, FemRunner& fem,
   report.info = run_info(command, o.level, o.only, o.jobs, o.mpi, fem.program());
   report.info.planted = o.plant;
   selected = select_checks(all, kLevels.at(o.level), command == "mutate" ? "" : o.only);
+  if (o.fail_fast) selected = cheapest_first(selected);
   const Context context(kLevels.at(o.level), planted(o.plant), &fem, BEARING_SOURCE_DIR);
   say(o, command + ": " + std::to_string(selected.size()) + " checks at level " + o.level);
-  report.results = run_checks(selected, context, o.jobs, [&](const CheckResult& r, int n) {
-    say(o, "[" + std::to_string(n) + "/" + std::to_string(selected.size()) + "] " +
-               to_string(r.status) + "  " + r.check->id);
-  });
+  report.results = run_checks(
+      selected, context, o.jobs,
+      [&](const CheckResult& r, int n) {
+        say(o, "[" + std::to_string(n) + "/" + std::to_string(selected.size()) + "] " +
+                   to_string(r.status) + "  " + r.check->id);
+      },
+      o.fail_fast);
   return report;
 }
 
@@ -137,6 +146,12 @@ int run_command(const Options& o) {
       "%d passed, %d pinned, %d failed, %d skipped, %d reported of %zu checks; report: %s\n",
       report.passed(), report.pinned(), report.failed(), report.skipped(), report.reported(),
       report.results.size(), (fs::path(o.out) / "report.html").c_str());
+  if (o.fail_fast && report.failed() > 0) {
+    const auto first = std::find_if(report.results.begin(), report.results.end(),
+                                    [](const CheckResult& r) { return r.status == Status::fail; });
+    std::printf("fail-fast: stopped after %s failed (%zu of %zu checks ran)\n",
+                first->check->id.c_str(), report.results.size(), selected.size());
+  }
   return report.failed() > 0 ? 4 : 0;
 }
 
@@ -178,6 +193,37 @@ int mutate_command(const Options& o) {
       caught, report.mutations.size(), report.passed(), report.pinned(), report.failed(),
       report.skipped(), report.reported(), (fs::path(o.out) / "report.html").c_str());
   return caught == static_cast<int>(report.mutations.size()) && report.failed() == 0 ? 0 : 4;
+}
+
+// mutate --source: the code mutants are drawn, built and judged by source_mutants.py (it copies
+// the commit, rebuilds this program per mutant and runs `run --fail-fast`); this hands over to it.
+int source_mutants_command(const Options& o) {
+  if (!o.only.empty())
+    throw bearing::InputError("--only = \"" + o.only +
+                              "\": not used with --source; allowed: --mutants N and --seed S");
+  const std::string script = BEARING_VERIFY_SOURCE_MUTANTS;
+  std::vector<std::string> args = {"/usr/bin/python3",
+                                   script,
+                                   "run",
+                                   "--repo",
+                                   BEARING_SOURCE_DIR,
+                                   "--out",
+                                   o.out,
+                                   "--level",
+                                   o.level,
+                                   "--jobs",
+                                   std::to_string(o.jobs),
+                                   "--mutants",
+                                   std::to_string(o.mutants),
+                                   "--seed",
+                                   std::to_string(o.seed)};
+  if (o.quiet) args.push_back("--quiet");
+  std::vector<char*> argv;
+  for (auto& a : args) argv.push_back(a.data());
+  argv.push_back(nullptr);
+  std::fflush(nullptr);
+  execv(argv[0], argv.data());
+  throw std::runtime_error("cannot start /usr/bin/python3 " + script);
 }
 
 void add_common(CLI::App* cmd, Options& o) {
@@ -222,20 +268,31 @@ int main(int argc, char** argv) {
   run->add_option("--plant", o.plant,
                   "plant one mutation (bearing-verify list --mutations) to see a caught bug: the "
                   "report says so on its first line");
+  run->add_flag("--fail-fast", o.fail_fast,
+                "run the cheapest checks first and stop at the first failure (exit 4); the "
+                "report holds the checks that ran");
   auto* mutate = app.add_subcommand(
       "mutate",
       "plant each mutation, rerun the checks, report which caught it; exit 4 if one is not caught");
   add_common(mutate, o);
   add_running(mutate, o);
   mutate->add_option("--out", o.out, "report folder (default mutate-report)");
+  mutate->add_flag("--source", o.source,
+                   "code mutants: mutate the physics sources themselves, rebuild, run the quick "
+                   "checks (--fail-fast); writes DIR/source_mutants.{json,md}; exit 4 when fewer "
+                   "than 90 % of the non-equivalent mutants are killed");
+  mutate->add_option("--mutants", o.mutants, "--source: how many code mutants [64, 100000]")
+      ->check(CLI::Range(64, 100000));
+  mutate->add_option("--seed", o.seed, "--source: the seed of the draw (default 30)");
   CalibrateOptions co;
   auto* calibrate = add_calibrate_command(app, co);
   try {
     app.parse(argc, argv);
     if (o.out.empty()) o.out = "mutate-report";
+    if (o.source && mutate->count("--level") == 0) o.level = "quick";
     if (*list) return list_mutations ? mutations_command() : list_command(o);
     if (*run) return run_command(o);
-    if (*mutate) return mutate_command(o);
+    if (*mutate) return o.source ? source_mutants_command(o) : mutate_command(o);
     if (*calibrate) return calibrate_command(co);
   } catch (const CLI::ParseError& e) {
     return app.exit(e) == 0 ? 0 : 2;

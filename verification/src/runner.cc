@@ -69,14 +69,20 @@ CheckResult run_check(const Check& check, const Context& context) {
 
 std::vector<CheckResult> run_checks(const std::vector<const Check*>& checks, const Context& context,
                                     int jobs,
-                                    const std::function<void(const CheckResult&, int)>& progress) {
+                                    const std::function<void(const CheckResult&, int)>& progress,
+                                    bool fail_fast) {
   std::vector<CheckResult> results(checks.size());
+  std::vector<char> ran(checks.size(), 0);
   std::atomic<std::size_t> next{0};
   std::atomic<int> done{0};
+  std::atomic<bool> failed{false};
   std::mutex report;
   auto worker = [&] {
     for (std::size_t i = next++; i < checks.size(); i = next++) {
+      if (fail_fast && failed) break;
       results[i] = run_check(*checks[i], context);
+      ran[i] = 1;
+      if (results[i].status == Status::fail) failed = true;
       const int n = ++done;
       if (progress) {
         std::lock_guard<std::mutex> lock(report);
@@ -88,7 +94,17 @@ std::vector<CheckResult> run_checks(const std::vector<const Check*>& checks, con
   for (int t = 1; t < std::max(1, jobs); ++t) threads.emplace_back(worker);
   worker();
   for (auto& t : threads) t.join();
-  return results;
+  if (!fail_fast) return results;
+  std::vector<CheckResult> out;
+  for (std::size_t i = 0; i < checks.size(); ++i)
+    if (ran[i]) out.push_back(std::move(results[i]));
+  return out;
+}
+
+std::vector<const Check*> cheapest_first(std::vector<const Check*> checks) {
+  std::stable_sort(checks.begin(), checks.end(),
+                   [](const Check* a, const Check* b) { return a->cost < b->cost; });
+  return checks;
 }
 
 std::vector<MutationResult> run_mutations(

@@ -183,9 +183,11 @@ Outcome ball_energy_conservation(const Context& ctx) {
 // Static limit: 0.3 s with the case's damping (ζω_n = c/2m = 167 1/s, the transient decays by
 // e^-50) under a waviness harmonic, against the equilibrium of the closed-form contacts.
 
-Outcome static_limit(const Context& ctx, int order, bool tvds) {
+Outcome static_limit(const Context& ctx, int order, bool tvds,
+                     ContactLoop loop = ContactLoop::simd) {
   const double amplitude = 2e-6, phase = 0.3;
   ModelInputs in = at_rest(ctx, 200.0);
+  in.contact_loop = loop;
   add_waviness(in, false, order, amplitude, phase);
   in.waviness_stiffness = tvds;
   RunSpec s;
@@ -409,6 +411,21 @@ std::vector<Check> conservation_and_limit_checks() {
        {"contact-constant-x1.03", "contact-exponent+0.05", "waviness-sign-swapped",
         "pitch-diameter-x1.01"},
        [](const Context& ctx) { return static_limit(ctx, 3, false); }},
+      {"dynamics.static-limit.scalar-loop.6308",
+       "dynamics",
+       ReferenceKind::limit,
+       "value: as dynamics.static-limit.6308 with solver.contact_loop = scalar, the scalar "
+       "reference kernels (ball angles, contact forces), which every other run leaves to the "
+       "SIMD ones; reference: the same closed-form equilibrium",
+       "y",
+       "m",
+       relative(1e-8,
+                "as dynamics.static-limit.6308: the scalar and SIMD loops give the same bits"),
+       Level::quick,
+       0.2,
+       {"contact-constant-x1.03", "contact-exponent+0.05", "waviness-sign-swapped",
+        "pitch-diameter-x1.01"},
+       [](const Context& ctx) { return static_limit(ctx, 3, false, ContactLoop::scalar); }},
       {"dynamics.static-limit.tvds.6308",
        "dynamics",
        ReferenceKind::limit,

@@ -276,6 +276,42 @@ Check exponent() {
   return c;
 }
 
+// The approach itself, δ(Q) = (Q/K)^{1/n} at one load: the exponent row fits only its slope in
+// ln Q, which a law computing (Q·K)^{1/n} (code mutant contact-c3dcbe9f) or any constant factor
+// leaves unchanged. One row over every preset and both races (the worst ratio is the value).
+Check approach() {
+  Check c;
+  c.id = "hertz.approach";
+  c.family = "hertz";
+  c.reference = ReferenceKind::closed_form;
+  c.compares =
+      "value: the approach delta(1 kN) of the lumped exact law of every preset and both races "
+      "(the one farthest from its reference); reference: Hertz's delta(1 kN) from the check's "
+      "own solution";
+  c.quantity = "delta";
+  c.unit = "m";
+  c.tolerance = relative(1e-9,
+                         "delta = (Q/K)^(2/3) on both sides with K equal to < 1e-13 (the exact-K "
+                         "rows' round-off): round-off");
+  c.catches = {"contact-constant-x1.03", "contact-exponent+0.05", "pitch-diameter-x1.01"};
+  c.measure = [](const Context& ctx) {
+    const double q = 1000.0;
+    Outcome o{0, 1, "", {}};
+    double worst = -1;
+    for (const auto& name : preset_names())
+      for (Race race : {Race::inner, Race::outer}) {
+        const double v = ctx.race_contact(ctx.bearing(name), race, HertzMethod::exact).approach(q);
+        const double ref = exact_hertz(preset(name), race).approach(q);
+        if (std::abs(v / ref - 1) > worst) {
+          worst = std::abs(v / ref - 1);
+          o = {v, ref, name + " " + to_string(race) + " race is the farthest", {}};
+        }
+      }
+    return o;
+  };
+  return c;
+}
+
 }  // namespace
 
 std::vector<Check> hertz_checks() {
@@ -295,6 +331,7 @@ std::vector<Check> hertz_checks() {
   for (const auto& name : preset_names()) all.push_back(hamrock_brewe(name));
   for (const auto& name : preset_names()) all.push_back(harris_table(name));
   all.push_back(exponent());
+  all.push_back(approach());
   return all;
 }
 

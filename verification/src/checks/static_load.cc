@@ -16,7 +16,9 @@
 
 #include "../context.h"
 #include "../families.h"
+#include "bearing/local_defect.h"
 #include "bearing/presets.h"
+#include "bearing/traction.h"
 #include "check_util.h"
 #include "hertz_reference.h"
 
@@ -72,6 +74,114 @@ Check kinematics(const std::string& name) {
   return c;
 }
 
+// With the outer ring turning too (the library's bearing_frequencies(b, ω_i, ω_o)): the rates
+// relative to each ring depend on f_i − f_o only. Catches a cage speed that mistreats ω_o (code
+// mutant kinematics-eeb13c2a: ω_o / (1 + g) for ω_o (1 + g)), which no fixed-outer row can see.
+Check kinematics_outer_ring() {
+  Check c = row("static-load.kinematics-outer-ring", ReferenceKind::closed_form,
+                "value: the lumped FTF, BPFO, BPFI, BSF of every preset with the inner ring at "
+                "2000 rpm and the outer ring at -500 rpm (the one farthest from its formula); "
+                "reference: FTF = |f_i (1-g) + f_o (1+g)| / 2, BPFO = Z (f_i - f_o)(1-g)/2, "
+                "BPFI = Z (f_i - f_o)(1+g)/2, BSF = d_m/(2D) (f_i - f_o)(1-g^2)",
+                "frequency", "Hz",
+                relative(1e-12, "the same arithmetic in a different order: round-off only"),
+                {"pitch-diameter-x1.01"});
+  c.measure = [](const Context& ctx) {
+    const double fi = kShaftRpm / 60.0, fo = -500.0 / 60.0;
+    Outcome o{0, 1, "", {}};
+    double worst = -1;
+    const char* names[4] = {"FTF", "BPFO", "BPFI", "BSF"};
+    for (const auto& name : preset_names()) {
+      const BearingFrequencies v =
+          bearing_frequencies(ctx.bearing(name), 2.0 * M_PI * fi, 2.0 * M_PI * fo);
+      const Bearing b = preset(name);
+      const double g = b.ball_diameter * std::cos(b.contact_angle) / b.pitch_diameter;
+      const double ref[4] = {std::abs(0.5 * fi * (1 - g) + 0.5 * fo * (1 + g)),
+                             0.5 * b.balls * (fi - fo) * (1 - g),
+                             0.5 * b.balls * (fi - fo) * (1 + g),
+                             b.pitch_diameter / (2 * b.ball_diameter) * (fi - fo) * (1 - g * g)};
+      const double val[4] = {v.ftf, v.bpfo, v.bpfi, v.bsf};
+      for (int i = 0; i < 4; ++i)
+        if (std::abs(val[i] / ref[i] - 1) > worst) {
+          worst = std::abs(val[i] / ref[i] - 1);
+          o = {val[i], ref[i], name + " " + names[i] + " is the farthest", {}};
+        }
+    }
+    return o;
+  };
+  return c;
+}
+
+// Pure rolling has no sliding: seed 004's sliding speeds (bearing/traction.h, the ball-DOF
+// model's traction law) at the check's own pure-rolling cage speed and ball spin, and at the
+// library's rolling_ball_spin, for contact angles 0 and 20 deg. No quick run reaches this code
+// otherwise (code mutants traction-84c77b1b, traction-297e717e survived).
+Check pure_rolling_sliding() {
+  Check c = row("static-load.pure-rolling-sliding", ReferenceKind::closed_form,
+                "value: the largest |sliding speed| (inner, outer contact) of every preset at "
+                "2000 rpm, contact angle 0 and 20 deg, with the cage at w_i (1-g)/2 and the ball "
+                "spin w_i d_m (1-g^2) / (2 D cos a) (the check's, then the library's "
+                "rolling_ball_spin); reference: 0 (pure rolling)",
+                "sliding speed", "m/s",
+                absolute(1e-12,
+                         "surface speeds ~6 m/s cancel: a few ulps (1e-15 m/s) of round-off, "
+                         "with a wide margin"),
+                {"pitch-diameter-x1.01"});
+  c.measure = [](const Context& ctx) {
+    const double wi = 2.0 * M_PI * kShaftRpm / 60.0;
+    Outcome o{0, 0, "", {}};
+    for (const auto& name : preset_names())
+      for (double alpha : {0.0, 20.0 * M_PI / 180.0}) {
+        Bearing b = ctx.bearing(name), ref = preset(name);
+        b.contact_angle = ref.contact_angle = alpha;
+        const double g = ref.ball_diameter * std::cos(alpha) / ref.pitch_diameter;
+        const double cage = 0.5 * wi * (1 - g);
+        const double spin =
+            wi * ref.pitch_diameter * (1 - g * g) / (2 * ref.ball_diameter * std::cos(alpha));
+        for (double w_b : {spin, rolling_ball_spin(b, wi)}) {
+          const SlidingSpeeds v = sliding_speeds(b, wi, cage, w_b);
+          for (double x : {v.inner, v.outer})
+            if (std::abs(x) > std::abs(o.value)) {
+              o.value = x;
+              o.detail = name + fmt(" at %.0f deg is the farthest", alpha * 180 / M_PI);
+            }
+        }
+      }
+    return o;
+  };
+  return c;
+}
+
+// The ball's spin relative to the cage (local_defect.h, what a ball defect turns at) under a
+// contact angle: every other run has α = 0, where cos α is 1 (code mutant local_defect-37e43c8e,
+// D / cos α for D cos α, survived).
+Check ball_spin_angular() {
+  Check c = row("static-load.ball-spin-angular", ReferenceKind::closed_form,
+                "value: the ball spin relative to the cage (ball_spin_speed) of every preset at "
+                "contact angle 20 deg, cage at w_i (1-g)/2, 2000 rpm (the one farthest from its "
+                "formula); reference: 2 pi BSF = w_i d_m/(2D) (1-g^2), g = D cos a / d_m",
+                "ball spin", "rad/s",
+                relative(1e-12, "the same arithmetic in a different order: round-off only"),
+                {"pitch-diameter-x1.01"});
+  c.measure = [](const Context& ctx) {
+    const double wi = 2.0 * M_PI * kShaftRpm / 60.0, alpha = 20.0 * M_PI / 180.0;
+    Outcome o{0, 1, "", {}};
+    double worst = -1;
+    for (const auto& name : preset_names()) {
+      const Bearing ref = preset(name);
+      const double g = ref.ball_diameter * std::cos(alpha) / ref.pitch_diameter;
+      const double v = ball_spin_speed(ctx.bearing(name), 0.5 * wi * (1 - g), alpha);
+      const double r = wi * ref.pitch_diameter / (2 * ref.ball_diameter) * (1 - g * g);
+      if (std::abs(v / r - 1) > worst) {
+        worst = std::abs(v / r - 1);
+        o = {v, r, name + " is the farthest", {}};
+      }
+    }
+    return o;
+  };
+  return c;
+}
+
 // ---- zero clearance ------------------------------------------------------------------------
 
 // Σ_j [cos ψ_j]_+^{n+1} over the balls at ψ_j = 2πj/Z + phase (the load along ψ = 0): at zero
@@ -109,7 +219,9 @@ double sjovall_jr(double eps, double n) {
 Check stribeck(const std::string& name) {
   Check c = row(
       "static-load.stribeck." + name, ReferenceKind::closed_form,
-      "value: Q_max Z / F_r of the lumped static solution of the " + name +
+      "value: min(Q_1, Q_2) Z / F_r (balls 1 and 2 carry Q_max) of the lumped static solution "
+      "of the " +
+          name +
           " at zero clearance (F_r = 500 N toward ball 0; the ratio depends on Z only: 608 and "
           "6304 have Z = 7, 6308 Z = 8, 6205 and 209 Z = 9); reference: Z / sum_j cos^2.5(psi_j) "
           "over the loaded balls, the exact finite-Z form of Stribeck's constant (4.37 = "
@@ -145,7 +257,8 @@ Check stribeck(const std::string& name) {
         on.x.push_back(k);
         on.y.push_back(k / cos_sum(k, 0.0, 1.5));
         between.x.push_back(k);
-        between.y.push_back(k / cos_sum(k, M_PI / k, 1.5));
+        // The most loaded balls sit π/k off the load: Q_max = F cos^{3/2}(π/k) / Σ cos^{5/2}.
+        between.y.push_back(k * std::pow(std::cos(M_PI / k), 1.5) / cos_sum(k, M_PI / k, 1.5));
         lim.x.push_back(k);
         lim.y.push_back(limit);
       }
@@ -161,6 +274,46 @@ Check stribeck(const std::string& name) {
       o.figures.push_back(f);
     }
     return o;
+  };
+  return c;
+}
+
+// The load turned off the x axis, midway between balls 1 and 2 (φ = 3π/Z): by symmetry the
+// deflection follows the load, balls 1 and 2 carry Q_max and
+// Q_max Z / F_r = Z cos^{3/2}(π/Z) / Σ cos^{5/2}(ψ_j − φ). The other rows load along x only,
+// where the solver's turn into the load's frame is idle: this row catches a frame turned the wrong
+// way (sin Δ → −sin Δ loads the mirror-image pair with the same Q_max), which they pass.
+Check stribeck_turned(const std::string& name) {
+  Check c = row(
+      "static-load.stribeck-turned." + name, ReferenceKind::closed_form,
+      "value: min(Q_1, Q_2) Z / F_r (balls 1 and 2 carry Q_max) of the lumped static solution "
+      "of the " +
+          name +
+          " at zero clearance with F_r = 500 N at 3 pi / Z from the x axis (midway between balls "
+          "1 and 2); reference: Z cos^1.5(pi/Z) / sum_j cos^2.5(psi_j - 3 pi / Z) over the loaded "
+          "balls (Q_j = Q_max (cos psi_j / cos(pi/Z))^1.5: the two most loaded balls sit pi/Z "
+          "off the load)",
+      "Q_1 Z / F_r", "-",
+      relative(1e-9,
+               "the toolkit's Newton stops at a force residual of 1e-12 relative; the reference "
+               "is a finite sum"),
+      {"contact-exponent+0.05"});
+  c.measure = [name](const Context& ctx) {
+    const Bearing b = ctx.bearing(name);
+    const int z = b.balls;
+    const double phi = 3.0 * M_PI / z;
+    const StaticLoadResult s =
+        ctx.static_load(z, ctx.contact(b, HertzMethod::exact), 0.0,
+                        {kRadialLoad * std::cos(phi), kRadialLoad * std::sin(phi)}, 0.0);
+    const double angle = std::atan2(s.deflection.y(), s.deflection.x());
+    // The two most loaded balls sit π/Z off the load: Q_j = Q_max (cos ψ_j / cos(π/Z))^{3/2}.
+    const double ref = z * std::pow(std::cos(M_PI / z), 1.5) / cos_sum(z, -phi, 1.5);
+    // Balls 1 and 2 must be the most loaded, equally: the smaller of their loads, so that a
+    // solver loading the mirror-image pair (the same Q_max) fails too.
+    return Outcome{std::min(s.ball_loads[1], s.ball_loads[2]) * z / kRadialLoad,
+                   ref,
+                   fmt("deflection at %.6f rad, the load at %.6f rad", angle, phi),
+                   {}};
   };
   return c;
 }
@@ -350,7 +503,11 @@ Check sjovall(const std::string& name) {
 std::vector<Check> static_load_checks() {
   std::vector<Check> all;
   for (const auto& name : preset_names()) all.push_back(kinematics(name));
+  all.push_back(kinematics_outer_ring());
+  all.push_back(pure_rolling_sliding());
+  all.push_back(ball_spin_angular());
   for (const auto& name : {"608", "6308", "6205"}) all.push_back(stribeck(name));
+  for (const auto& name : {"6308", "6205"}) all.push_back(stribeck_turned(name));
   for (const auto& name : preset_names()) all.push_back(deflection(name));
   for (const auto& name : preset_names()) all.push_back(load_zone(name));
   for (const auto& name : {"6304", "6308", "209"}) all.push_back(sjovall(name));
