@@ -9,6 +9,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <cctype>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -68,6 +69,16 @@ const std::vector<TestProgram>& programs() {
   return table;
 }
 
+// "HertzExact" → "hertz-exact": check ids are lower case.
+std::string kebab(const std::string& name) {
+  std::string out;
+  for (char c : name) {
+    if (std::isupper(static_cast<unsigned char>(c)) && !out.empty()) out += '-';
+    out += static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  }
+  return out;
+}
+
 std::string quoted(const std::string& s) {
   std::string out = "'";
   for (char c : s) out += c == '\'' ? std::string("'\\''") : std::string(1, c);
@@ -119,7 +130,7 @@ std::vector<Check> unit_test_checks() {
     for (const char* suite : p.suites) {
       Check c;
       const std::string program = p.program;
-      c.id = "unit." + program.substr(0, program.size() - 6) + "." + suite;
+      c.id = "unit." + program.substr(0, program.size() - 6) + "." + kebab(suite);
       c.family = "unit";
       c.reference = ReferenceKind::unit_test;
       c.compares = "value: failed tests of `" + program + " --gtest_filter=" + suite + ".*` (" +
