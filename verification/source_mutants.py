@@ -489,8 +489,23 @@ def run(args):
     meta = {"format": "bearing-verify source mutants 1", "commit": rev, "seed": args.seed,
             "level": args.level, "sites": total, "files": stats,
             "baseline": {"build_s": t_build, "run_s": t_run}, "run_timeout_s": timeout}
+    # Round robin over the files (a run cut short has still reached every file); the outputs
+    # stay in file order.
+    rank = {m["id"]: i for i, m in enumerate(mutants)}
+    by_file = {}
+    for m in mutants:
+        by_file.setdefault(m["file"], []).append(m)
+    order = []
+    while any(by_file.values()):
+        for f in list(by_file):
+            if by_file[f]:
+                order.append(by_file[f].pop(0))
+    order.sort(key=lambda m: m["id"] not in previous)  # the kept verdicts first (stable)
+    earlier = 0.0
+    if previous:
+        earlier = json.load(open(done_file)).get("wall_time", 0.0)
     results = []
-    for k, m in enumerate(mutants, start=1):
+    for k, m in enumerate(order, start=1):
         if m["id"] in previous:
             r = previous[m["id"]]
         else:
@@ -503,10 +518,11 @@ def run(args):
             if judgement == "equivalent":
                 r["status"] = "equivalent"
         results.append(r)
+        results.sort(key=lambda x: rank[x["id"]])
         say("[%d/%d] %-13s %s %s:%d %s (%.0f s)" % (
             k, len(mutants), r["status"], r["id"], r["file"], r["line"], r.get("killed_by", ""),
             r.get("build_s", 0) + r.get("run_s", 0)))
-        meta["wall_time"] = time.monotonic() - start
+        meta["wall_time"] = earlier + time.monotonic() - start
         write_outputs(out, meta, results)
     s = score(results)
     print("source mutants: %d killed, %d survived, %d equivalent, %d did not build of %d; "
