@@ -54,6 +54,7 @@ namespace {
 void perturb(RaceContact& r, const Perturbation& p) {
   r.K *= p.contact_constant;
   r.exponent += p.contact_exponent;
+  r.shape.b_star *= p.ellipse_minor;
 }
 
 void perturb(ContactConstants& k, const Perturbation& p) {

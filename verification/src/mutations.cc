@@ -19,6 +19,10 @@ const std::vector<Mutation>& mutations() {
        with([](Perturbation& p) { p.contact_constant = 1.03; })},
       {"contact-exponent+0.05", "the lumped load-deflection exponent 1.55 instead of Hertz's 1.5",
        with([](Perturbation& p) { p.contact_exponent = 0.05; })},
+      {"ellipse-minor-x1.01",
+       "the contact ellipse's minor semi-axis b* 1 % too large (a slip in the ellipticity "
+       "solution; K untouched)",
+       with([](Perturbation& p) { p.ellipse_minor = 1.01; })},
       {"tvds-dropped", "the time-varying deflection stiffness (waviness curvature) term left out",
        with([](Perturbation& p) { p.drop_tvds = true; })},
       {"waviness-sign-swapped", "every waviness harmonic turned over (a sign error in the profile)",

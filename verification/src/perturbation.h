@@ -9,7 +9,7 @@ namespace bearing::verify {
 
 /// The knobs as bits: which ones a check read (Context records it) and which a mutation turns.
 enum Knob : unsigned {
-  kContact = 1u << 0,     ///< contact_constant, contact_exponent
+  kContact = 1u << 0,     ///< contact_constant, contact_exponent, ellipse_minor
   kTvds = 1u << 1,        ///< drop_tvds
   kWaviness = 1u << 2,    ///< waviness_sign
   kCageSlip = 1u << 3,    ///< cage_slip
@@ -26,6 +26,7 @@ enum Knob : unsigned {
 struct Perturbation {
   double contact_constant = 1.0;     ///< × K of both races and of the ball's series law [-]
   double contact_exponent = 0.0;     ///< + load–deflection exponent n of every lumped law [-]
+  double ellipse_minor = 1.0;        ///< × b*, the contact ellipse's minor semi-axis [-]
   bool drop_tvds = false;            ///< TVDS (curvature-dependent stiffness) switched off
   bool waviness_sign = false;        ///< every waviness harmonic turned over (ψ + π)
   double cage_slip = 0.0;            ///< + s_c in the ball-DOF model (0.01: cage 1 % slower) [-]
@@ -43,7 +44,7 @@ struct Perturbation {
   /// The knobs this perturbation turns away from the identity.
   unsigned changed() const {
     unsigned k = 0;
-    if (contact_constant != 1.0 || contact_exponent != 0.0) k |= kContact;
+    if (contact_constant != 1.0 || contact_exponent != 0.0 || ellipse_minor != 1.0) k |= kContact;
     if (drop_tvds) k |= kTvds;
     if (waviness_sign) k |= kWaviness;
     if (cage_slip != 0.0) k |= kCageSlip;
