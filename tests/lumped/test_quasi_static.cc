@@ -163,10 +163,11 @@ TEST(QuasiStatic, RejectsLoadsBelowTheMinimumNamingTheKey) {
 // quasi-static one. Samples within 50 µs of any ball entering or leaving contact are skipped: there
 // the quasi-static orbit's acceleration has an integrable singularity (J ~ sqrt δ of the new ball),
 // which a centred difference cannot follow.
-void expect_ball_velocity_matches_difference(const std::string& kind) {
+void expect_ball_velocity_matches_difference(const std::string& kind, bool tvds = false) {
   const Case c = case_608({"model.kind=" + kind, "solver.duration=0.06", "solver.transient=0",
                            "solver.output_rate=400000", "solver.method=rkf45",
-                           "solver.tolerance=1e-10", "rotor.damping=2000"});
+                           "solver.tolerance=1e-10", "rotor.damping=2000",
+                           std::string("model.waviness_stiffness=") + (tvds ? "true" : "false")});
   const SimulationResult r = simulate(c);
   const auto& t = r.response.time;
   const double dt = t[1] - t[0];
@@ -199,6 +200,42 @@ TEST(BallMotion, VelocityAgreesWithCentredDifferenceTwoDof) {
 
 TEST(BallMotion, VelocityAgreesWithCentredDifferenceQuasiStatic) {
   expect_ball_velocity_matches_difference("quasistatic");
+}
+
+// With TVDS the races' stiffness varies along the waviness: the rates' dK/dt terms (the TVDS
+// table's slope, the outer race's dK_o/dt) enter vr_j and must agree with r_j's difference too.
+TEST(BallMotion, VelocityAgreesWithCentredDifferenceTvds) {
+  expect_ball_velocity_matches_difference("2dof", true);
+  expect_ball_velocity_matches_difference("quasistatic", true);
+}
+
+// A loaded ball sits at its outer contact's approach: r_j = (Q_j/K_o)^{1/n} − Π_o(θ_j) + ΔD_j/2,
+// with Q_j the run's own ball-load channel and K_o the outer race's Hertz constant (no TVDS).
+TEST(BallMotion, LoadedBallSitsAtItsOuterApproach) {
+  for (const char* kind : {"quasistatic", "2dof"}) {
+    const Case c =
+        case_608({std::string("model.kind=") + kind, "solver.duration=0.05", "solver.transient=0"});
+    const SimulationResult r = simulate(c);
+    const ContactConstants k = contact_constants(c);
+    const double wc = cage_speed(c.bearing, c.operation.speed);
+    Waviness outer;
+    outer.harmonics = c.excitation.outer_waviness;
+    int checked = 0;
+    for (int j = 0; j < c.bearing.balls; ++j) {
+      const auto& Q = r.response.channel("Q" + std::to_string(j + 1));
+      const auto& rr = r.response.channel("r" + std::to_string(j + 1));
+      for (std::size_t k_ = 0; k_ < Q.size(); k_ += 37) {
+        if (!(Q[k_] > 0)) continue;
+        const double th = two_pi * j / c.bearing.balls + wc * r.response.time[k_];
+        const double d_o = std::pow(Q[k_] / k.outer.K, 1.0 / k.outer.exponent);
+        EXPECT_NEAR(rr[k_], d_o - outer.profile(th) + 0.5 * c.excitation.ball_size_errors[j],
+                    1e-9 * d_o)
+            << kind << " ball " << j + 1;
+        ++checked;
+      }
+    }
+    EXPECT_GT(checked, 20) << kind;
+  }
 }
 
 // A ball out of the load zone rides on the outer race: r_j = −Π_o(θ_j) + ΔD_j/2, vr_j its rate.
