@@ -40,13 +40,16 @@ Case perfect_608(std::vector<std::string> sets = {}) {
       "perfect_608.toml", o);
 }
 
-// Independent force balance: Σ Q_j (cos θ_j, sin θ_j) − F with θ_j from the kinematics.
+// Independent force balance: Σ Q_j (cos θ_j, sin θ_j) − F with θ_j from the kinematics and F the
+// load plus the unbalance's m_u e ω² turning with the shaft (ω t from t = 0).
 double relative_residual(const Case& c, const QuasiStaticModel& m, const QuasiStaticPoint& p) {
   const int Z = c.bearing.balls;
   std::vector<double> Q(Z);
   m.ball_loads(p.t, p.position, Q.data());
   const double wc = cage_speed(c.bearing, c.operation.speed);
-  Eigen::Vector2d g = -c.operation.load;
+  const double w = c.operation.speed;
+  Eigen::Vector2d g = -c.operation.load - c.operation.unbalance * w * w *
+                                              Eigen::Vector2d(std::cos(w * p.t), std::sin(w * p.t));
   for (int j = 0; j < Z; ++j) {
     const double th = two_pi * j / Z + wc * p.t;
     g += Q[j] * Eigen::Vector2d(std::cos(th), std::sin(th));
@@ -69,6 +72,22 @@ TEST(QuasiStatic, ForceBalanceBelow1e9AtEveryInstantWithWavinessAndBallErrors) {
   EXPECT_DOUBLE_EQ(st.max_relative_residual, worst_reported);
   EXPECT_EQ(st.steps, 4001);
   EXPECT_GE(st.min_loaded_balls, 2);
+}
+
+// The unbalance's rotating force is part of the balance: 10 N turning at the shaft speed on 50 N.
+TEST(QuasiStatic, ForceBalanceIncludesTheRotatingUnbalance) {
+  const Case c0 = case_608();
+  const double w = c0.operation.speed;
+  const Case c = case_608({"operation.unbalance=" + std::to_string(10.0 / (w * w)) + " kg*m"});
+  ASSERT_NEAR(c.operation.unbalance * w * w, 10.0, 1e-3);  // to_string keeps 6 decimals
+  const auto m = make_quasi_static_model(model_inputs(c));
+  std::vector<double> times;
+  for (int k = 0; k <= 800; ++k) times.push_back(k * 1e-4);
+  double worst = 0;
+  follow_equilibrium(*m, times, [&](const QuasiStaticPoint& p) {
+    worst = std::max(worst, relative_residual(c, *m, p));
+  });
+  EXPECT_LT(worst, 1e-9);
 }
 
 // Without excitations the ball set repeats itself every ball pass: x(t + 1/BPFO) = x(t).

@@ -85,6 +85,9 @@ std::string quoted(const std::string& s) {
   return out + "'";
 }
 
+// Seconds a suite may run: the slowest takes ~3 s alone; a hundred times that is a hang.
+constexpr int kSuiteTimeout = 300;
+
 // Runs `program --gtest_filter=SUITE.*` and returns the failed test count; the detail names them.
 Outcome run_suite(const std::string& program, const std::string& suite) {
   const fs::path path = fs::path(BEARING_TEST_PROGRAM_DIR) / program;
@@ -92,15 +95,21 @@ Outcome run_suite(const std::string& program, const std::string& suite) {
     throw Skipped(path.string() + " was not built (BEARING_BUILD_TESTS=OFF or not yet built)");
   const fs::path json = fs::temp_directory_path() / ("bearing-verify-" + std::to_string(getpid()) +
                                                      "-" + program + "-" + suite + ".json");
-  const std::string command = quoted(path.string()) + " --gtest_filter=" + quoted(suite + ".*") +
+  // coreutils' timeout: a suite that hangs (an integrator that never reaches the end, say) fails
+  // its row after kSuiteTimeout instead of stopping the report.
+  const std::string command = "timeout --kill-after=10 " + std::to_string(kSuiteTimeout) + " " +
+                              quoted(path.string()) + " --gtest_filter=" + quoted(suite + ".*") +
                               " --gtest_output=json:" + quoted(json.string()) + " > /dev/null 2>&1";
   const int status = std::system(command.c_str());
+  const int code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
   nlohmann::json report;
   {
     std::ifstream in(json);
+    if (!in && (code == 124 || code == 137))
+      throw std::runtime_error(program + " --gtest_filter=" + suite + ".*: timed out after " +
+                               std::to_string(kSuiteTimeout) + " s");
     if (!in)
-      throw std::runtime_error(program + " wrote no result (exit status " +
-                               std::to_string(WIFEXITED(status) ? WEXITSTATUS(status) : -1) +
+      throw std::runtime_error(program + " wrote no result (exit status " + std::to_string(code) +
                                "): it crashed or was killed");
     in >> report;
   }
