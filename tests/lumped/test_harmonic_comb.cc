@@ -83,6 +83,22 @@ TEST(LineFloor, MedianOfEverySecondBinOfBothFlanks) {
   EXPECT_THROW(floor_around(s, 205, 195, 0, 399), InputError);
 }
 
+// The same layout at 0.1 Hz bins: the flanks are counted in hertz, not in bins, and a window edge
+// on a bin centre (197 × 0.1 Hz / 0.1 Hz = 197.00000000000003) is that bin, not the next.
+TEST(LineFloor, FlanksScaleWithTheResolution) {
+  const double r = 0.1;
+  Spectrum s;
+  s.resolution = r;
+  for (int k = 0; k < 400; ++k) {
+    s.frequency.push_back(k * r);
+    s.amplitude.push_back(k >= 197 && k <= 207 ? 100.0 : 2.0);
+  }
+  const LineFloor f = floor_around(s, 197 * r, 207 * r, 0, 399 * r);
+  EXPECT_EQ(f.power, 4.0);
+  EXPECT_EQ(f.samples, 20);  // 196, 194, …, 178 and 208, …, 226
+  EXPECT_EQ(floor_around(s, 197 * r, 207 * r, 182 * r, 222 * r).samples, 8 + 8);
+}
+
 TEST(CombThreshold, OneLineIsTheExactQuantile) {
   // One term, one line: trials · P(level ≥ t) = p, solved here by bisection on the closed form;
   // the grid rounds values up, so the threshold lies at most 0.1 dB above.

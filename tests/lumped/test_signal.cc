@@ -68,6 +68,17 @@ TEST(SignalStatistics, SampledSineMatchesClosedForms) {
   EXPECT_GE(s.ptp, 2 * A * (1 - sampling));
 }
 
+// The overflow guard divides by a power of two, which is exact: the mean is bit for bit the plain
+// sum over n of the same values in the same order (any other scale would round each term).
+TEST(SignalStatistics, OverflowScalingAddsNoRounding) {
+  std::vector<double> x;
+  for (int k = 0; k < 1000; ++k) x.push_back(0.1 * k + 1.0 / 3.0 + std::sin(0.37 * k));
+  double sum = 0;
+  for (double v : x) sum += v;
+  const ChannelStatistics s = channel_statistics(x);
+  EXPECT_EQ(s.mean, sum / 1000.0);
+}
+
 TEST(SignalStatistics, SquareWaveHasKurtosisAndCrestOne) {
   // ±A about an offset, equal halves: every deviation has magnitude A, so all ratios are exact
   // but for summation rounding, bounded by N·ε ≈ 1e-13 relative for N = 1000.
