@@ -18,6 +18,7 @@
 #include "bearing/case_file.h"
 #include "bearing/constants.h"
 #include "bearing/errors.h"
+#include "bearing/fault_lines.h"
 #include "bearing/presets.h"
 #include "bearing/record_analysis.h"
 #include "bearing/record_output.h"
@@ -49,6 +50,34 @@ void expect_same_peaks(const std::vector<Peak>& a, const std::vector<Peak>& b) {
     EXPECT_EQ(a[i].label, b[i].label) << i;
     EXPECT_EQ(a[i].label_error, b[i].label_error) << i;
   }
+}
+
+// Shaft harmonics are not fault lines: with BPFO = 3 f_r every outer-race line lies on a shaft
+// harmonic, and a record whose envelope is modulated by the shaft alone (lines at every n·f_r)
+// must not read as an outer-race fault; the zones around n·f_r keep those lines out.
+TEST(RecordAnalysis, ShaftHarmonicsAreNotFaultLines) {
+  Spectrum ses;
+  ses.resolution = 0.1;
+  for (int k = 0; k <= 5000; ++k) {
+    ses.frequency.push_back(k * ses.resolution);
+    ses.amplitude.push_back(k % 100 == 0 && k > 0 ? 30.0 : 1.0);  // n·10 Hz over a flat floor
+  }
+  BearingFrequencies f;
+  f.shaft = 10.0;
+  f.bpfo = 30.0;
+  f.bpfi = 54.3;
+  f.bsf = 23.7;
+  f.ftf = 4.1;
+  const std::vector<FamilyLines> families = search_fault_lines(ses, 500.0, f, FaultLineSettings{});
+  ASSERT_EQ(families.size(), 3u);
+  for (const FamilyLines& fam : families)
+    EXPECT_LT(fam.comb.evidence, fam.comb.threshold) << name_of(kFaultFamilies, fam.family);
+  // The same lines off the shaft harmonics (BPFO = 31.7 Hz) are the outer race's: detected.
+  Spectrum off = ses;
+  for (int k = 1; k <= 3; ++k) off.amplitude[static_cast<std::size_t>(std::lround(317.0 * k))] = 30;
+  f.bpfo = 31.7;
+  const std::vector<FamilyLines> found = search_fault_lines(off, 500.0, f, FaultLineSettings{});
+  EXPECT_GE(found[0].comb.evidence, found[0].comb.threshold);
 }
 
 TEST(RecordAnalysis, OfARunsResponseIsTheRunsAnalysis) {
