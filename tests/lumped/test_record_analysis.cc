@@ -78,6 +78,9 @@ TEST(RecordAnalysis, ShaftHarmonicsAreNotFaultLines) {
   f.bpfo = 31.7;
   const std::vector<FamilyLines> found = search_fault_lines(off, 500.0, f, FaultLineSettings{});
   EXPECT_GE(found[0].comb.evidence, found[0].comb.threshold);
+  // An outer-race defect is fixed in the load zone: its lines have no sidebands.
+  EXPECT_EQ(found[0].modulation, 0.0);
+  EXPECT_EQ(found[0].labels, (std::vector<std::string>{"BPFO", "2xBPFO", "3xBPFO"}));
 }
 
 TEST(RecordAnalysis, OfARunsResponseIsTheRunsAnalysis) {
