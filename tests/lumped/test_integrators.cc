@@ -426,6 +426,21 @@ TEST(IntegratorOutput, FixedStepsKeepDtBetweenOutputs) {
   EXPECT_EQ(r.stats.force_evaluations, 4 * 400 + 1);
 }
 
+// max_step caps the adaptive methods' steps (what keeps them from stepping over a local defect):
+// at a loose tolerance they would take a few hundred steps over 4 ms, capped at 2 µs at least
+// 2000.
+TEST(IntegratorStepControl, AdaptiveStepsNeverExceedMaxStep) {
+  const std::vector<double> times = grid(0.0, 2e-4, 20);
+  for (const std::string method : {"rkf45", "rk8pd", "rk8pd-events", "bdf"}) {
+    IntegratorSettings s = settings(method, 1e-6, 1e-6, 1e-12);
+    const long free_steps = run(s, kLinear, 0.0, {kQ0}, {0.0}, times).stats.steps;
+    s.max_step = 2e-6;
+    const Trajectory r = run(s, kLinear, 0.0, {kQ0}, {0.0}, times);
+    EXPECT_LT(free_steps, 1000) << method;
+    EXPECT_GE(r.stats.steps, 2000) << method;
+  }
+}
+
 TEST(IntegratorOutput, NoOutputTimesNoWork) {
   for (const std::string& method : integrator_names()) {
     const Trajectory r = run(settings(method, 5e-6), kLinear, 0.0, {kQ0}, {0.0}, {});
