@@ -113,6 +113,23 @@ TEST(Diagnosis, ImpactsAtBpfoAreAnOuterRaceFault) {
       << d.reason;
 }
 
+// The diagnosis does not depend on the signal's scale (its unit): the same envelope lines 10^4
+// times smaller read the same, the families' shares of the fault lines included.
+TEST(Diagnosis, DoesNotDependOnTheSignalsScale) {
+  const BearingFrequencies f = default_frequencies();
+  EnvelopeSummary e;
+  e.channel = "ax";
+  e.unit = "m/s^2";
+  e.spectral_kurtosis = 8;
+  e.peaks = {{102.4, 1.0, "BPFO", 0}, {164.3, 0.9, "BPFI", 0}, {33.3, 5.0, "fr", 0}};
+  EnvelopeSummary small = e;
+  for (Peak& p : small.peaks) p.amplitude *= 1e-4;
+  const Diagnosis d = diagnose({e}, f), ds = diagnose({small}, f);
+  EXPECT_EQ(ds.family, d.family);
+  EXPECT_NE(d.reason.find("outer 53 %, inner 47 %, ball 0 %"), std::string::npos) << d.reason;
+  EXPECT_EQ(ds.reason, d.reason);
+}
+
 TEST(Diagnosis, ImpactsAtBpfiModulatedByTheShaftAreAnInnerRaceFault) {
   const BearingFrequencies f = default_frequencies();
   ImpactTrain train;  // the defect passes through the load zone once a shaft turn
