@@ -238,6 +238,39 @@ TEST(EnvelopeAnalysis, HealthyDefaultCaseIsNotDiagnosed) {
 }
 
 // A given band: its spectral kurtosis, no kurtogram; the default ("none") analyses nothing.
+// The energy fraction reported for the chosen band is that band's, not a neighbour's sharing
+// one edge; a given band the kurtogram did not compute has none.
+TEST(EnvelopeAnalysis, BandEnergyFractionIsTheChosenBands) {
+  EnvelopeSummary e;
+  e.band = {500, 1000};
+  KurtogramBand whole, lower, upper;
+  whole.band = {0, 1000};
+  whole.energy_fraction = 1.0;
+  lower.band = {0, 500};
+  lower.energy_fraction = 0.3;
+  upper.band = {500, 1000};
+  upper.energy_fraction = 0.7;
+  e.kurtogram = {whole, lower, upper};
+  ASSERT_TRUE(band_energy_fraction(e).has_value());
+  EXPECT_EQ(*band_energy_fraction(e), 0.7);
+  e.band = {250, 750};
+  EXPECT_FALSE(band_energy_fraction(e).has_value());
+}
+
+// A narrowest band asked for is honoured: the kurtogram then picks no band narrower.
+TEST(EnvelopeAnalysis, KurtogramKeepsTheNarrowestBandAskedFor) {
+  const BearingFrequencies f = default_frequencies();
+  ImpactTrain train;
+  train.rate = f.bpfo;
+  train.damping_ratio = 0.05;
+  const std::vector<double> x = faulty(train, f, 1);
+  const EnvelopeSummary free = auto_envelope(x, f);
+  const double wide = 2.5 * (free.band.high - free.band.low);
+  const EnvelopeSummary e = analyse_envelope(
+      "ay", "m/s^2", x, kFs, f, {EnvelopeBandSource::automatic, {}}, Window::hann, 10, wide);
+  EXPECT_GE(e.band.high - e.band.low, wide * (1 - 1e-12));
+}
+
 TEST(EnvelopeAnalysis, GivenBandAndNone) {
   const Case c = default_case({{"output.envelope_band", "[\"2 kHz\", \"8 kHz\"]"}});
   EXPECT_EQ(c.output.envelope_band.source, EnvelopeBandSource::given);
