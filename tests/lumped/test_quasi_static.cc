@@ -90,6 +90,33 @@ TEST(QuasiStatic, ForceBalanceIncludesTheRotatingUnbalance) {
   EXPECT_LT(worst, 1e-9);
 }
 
+// The run's statistics from what it observed: contact changes counted from the balls' loads at
+// consecutive instants, and the progress reaching 1 at the last instant.
+TEST(QuasiStatic, StatisticsCountWhatTheRunObserved) {
+  const Case c = case_608();
+  const auto m = make_quasi_static_model(model_inputs(c));
+  std::vector<double> times;
+  for (int k = 0; k <= 3000; ++k) times.push_back(k * 1e-4);
+  const int Z = c.bearing.balls;
+  std::vector<double> loads(Z), previous(Z);
+  long changes = 0, points = 0;
+  std::vector<double> fractions;
+  const QuasiStaticStats st = follow_equilibrium(
+      *m, times,
+      [&](const QuasiStaticPoint& p) {
+        m->ball_loads(p.t, p.position, loads.data());
+        if (points++ > 0)
+          for (int j = 0; j < Z; ++j) changes += (loads[j] > 0) != (previous[j] > 0);
+        previous = loads;
+      },
+      [&](double f) { fractions.push_back(f); });
+  EXPECT_GT(changes, 10);  // balls enter and leave the load zone
+  EXPECT_EQ(st.contact_changes, changes);
+  ASSERT_FALSE(fractions.empty());
+  EXPECT_EQ(fractions.back(), 1.0);
+  EXPECT_EQ(fractions.size(), 4u);  // k = 0, 1024, 2048 and the last
+}
+
 // Without excitations the ball set repeats itself every ball pass: x(t + 1/BPFO) = x(t).
 TEST(QuasiStatic, PerfectBearingOrbitIsPeriodicAtTheBallPassPeriod) {
   const Case c = perfect_608();
