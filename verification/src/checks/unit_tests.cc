@@ -45,7 +45,7 @@ const std::vector<TestProgram>& programs() {
        "tests/lumped/test_integrators.cc, test_events.cc",
        {"IntegratorLinear", "IntegratorHertz", "IntegratorEnergy", "IntegratorStiff",
         "IntegratorDense", "IntegratorCyclic", "IntegratorStability", "IntegratorStepControl",
-        "EventLocation"}},
+        "IntegratorOutput", "EventLocation"}},
       {"model_tests",
        "tests/lumped/test_models.cc, test_excitation.cc, …",
        {"ExcitationWaviness", "ExcitationTable", "ExcitationBallErrors", "TwoDof", "ThreeDof",
