@@ -6,6 +6,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -187,6 +188,9 @@ TEST(RecordAnalysis, EstimatesTheSpeedOfASyntheticRecord) {
   EXPECT_NEAR(a.speed.speed / two_pi, fr, 0.02 * kRate / 60000);
   for (const HarmonicLine& h : a.speed.estimate->harmonics) EXPECT_TRUE(h.used) << h.order;
   EXPECT_NEAR(a.frequencies.bpfi / a.frequencies.shaft, 5.4152, 1e-4);
+  // The kurtogram's narrowest band: (harmonics + 1) times the fastest fault rate, here BPFI
+  // (2·BSF = 4.71 f_r is below it, 3·BSF = 7.07 f_r would not be).
+  EXPECT_DOUBLE_EQ(a.settings.min_bandwidth, (a.settings.lines.harmonics + 1) * a.frequencies.bpfi);
 }
 
 // A local fault: impacts at `rate` ringing a 3 kHz resonance, each jittered by 1 % of the period,
