@@ -113,15 +113,25 @@ TEST(Diagnosis, ImpactsAtBpfoAreAnOuterRaceFault) {
       << d.reason;
 }
 
-// The diagnosis does not depend on the signal's scale (its unit): the same envelope lines 10^4
-// times smaller read the same, the families' shares of the fault lines included.
-TEST(Diagnosis, DoesNotDependOnTheSignalsScale) {
-  const BearingFrequencies f = default_frequencies();
+namespace {
+
+// An impulsive envelope (ax, SK 8) with an outer-race line, an inner-race line and the shaft's.
+EnvelopeSummary outer_and_inner_lines() {
   EnvelopeSummary e;
   e.channel = "ax";
   e.unit = "m/s^2";
   e.spectral_kurtosis = 8;
   e.peaks = {{102.4, 1.0, "BPFO", 0}, {164.3, 0.9, "BPFI", 0}, {33.3, 5.0, "fr", 0}};
+  return e;
+}
+
+}  // namespace
+
+// The diagnosis does not depend on the signal's scale (its unit): the same envelope lines 10^4
+// times smaller read the same, the families' shares of the fault lines included.
+TEST(Diagnosis, DoesNotDependOnTheSignalsScale) {
+  const BearingFrequencies f = default_frequencies();
+  const EnvelopeSummary e = outer_and_inner_lines();
   EnvelopeSummary small = e;
   for (Peak& p : small.peaks) p.amplitude *= 1e-4;
   const Diagnosis d = diagnose({e}, f), ds = diagnose({small}, f);
@@ -180,11 +190,7 @@ TEST(Diagnosis, SteadyBearingLinesAreNoFault) {
 
 TEST(Diagnosis, NeedsADominantFamilyAndPicksTheMostImpulsiveEnvelope) {
   const BearingFrequencies f = default_frequencies();
-  EnvelopeSummary e;
-  e.channel = "ax";
-  e.unit = "m/s^2";
-  e.spectral_kurtosis = 8;
-  e.peaks = {{102.4, 1.0, "BPFO", 0}, {164.3, 0.9, "BPFI", 0}, {33.3, 5.0, "fr", 0}};
+  const EnvelopeSummary e = outer_and_inner_lines();
   Diagnosis d = diagnose({e}, f);  // outer 53 %, inner 47 %: neither dominates
   EXPECT_EQ(d.family, FaultFamily::none);
   EXPECT_NE(d.reason.find("no fault family dominates"), std::string::npos) << d.reason;
