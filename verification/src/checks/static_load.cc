@@ -5,6 +5,7 @@
 // the checks' own exact Hertz solution (hertz_reference.h).
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdio>
 #include <string>
@@ -45,6 +46,27 @@ Check row(std::string id, ReferenceKind kind, std::string compares, std::string 
 
 // ---- kinematics --------------------------------------------------------------------------
 
+// The textbook FTF, BPFO, BPFI, BSF [Hz] of `b` with the inner ring at fi and the outer at fo [Hz]:
+// FTF = |f_i (1-g) + f_o (1+g)| / 2, BPFO = Z (f_i - f_o)(1-g)/2, BPFI = Z (f_i - f_o)(1+g)/2,
+// BSF = d_m/(2D) (f_i - f_o)(1-g^2), g = D cos(a)/d_m.
+std::array<double, 4> textbook_rates(const Bearing& b, double fi, double fo) {
+  const double g = b.ball_diameter * std::cos(b.contact_angle) / b.pitch_diameter;
+  return {std::abs(0.5 * fi * (1 - g) + 0.5 * fo * (1 + g)), 0.5 * b.balls * (fi - fo) * (1 - g),
+          0.5 * b.balls * (fi - fo) * (1 + g),
+          b.pitch_diameter / (2 * b.ball_diameter) * (fi - fo) * (1 - g * g)};
+}
+
+// Of the four rates, the one farthest (relatively) from its reference, as an Outcome.
+Outcome farthest_rate(const BearingFrequencies& v, const std::array<double, 4>& ref,
+                      const std::string& who) {
+  const double val[4] = {v.ftf, v.bpfo, v.bpfi, v.bsf};
+  const char* names[4] = {"FTF", "BPFO", "BPFI", "BSF"};
+  int worst = 0;
+  for (int i = 1; i < 4; ++i)
+    if (std::abs(val[i] / ref[i] - 1) > std::abs(val[worst] / ref[worst] - 1)) worst = i;
+  return {val[worst], ref[worst], who + names[worst] + " is the farthest", {}};
+}
+
 // The four frequencies; the value is the one farthest from its textbook formula.
 Check kinematics(const std::string& name) {
   Check c = row("static-load.kinematics." + name, ReferenceKind::closed_form,
@@ -57,18 +79,8 @@ Check kinematics(const std::string& name) {
   c.measure = [name](const Context& ctx) {
     const double f = kShaftRpm / 60.0;
     const BearingFrequencies v = ctx.frequencies(ctx.bearing(name), 2.0 * M_PI * f);
-    const Bearing b = preset(name);
-    const double g = b.ball_diameter * std::cos(b.contact_angle) / b.pitch_diameter;
-    const double ftf = 0.5 * f * (1 - g);
-    const double ref[4] = {ftf, b.balls * ftf, 0.5 * b.balls * f * (1 + g),
-                           b.pitch_diameter / (2 * b.ball_diameter) * f * (1 - g * g)};
-    const double val[4] = {v.ftf, v.bpfo, v.bpfi, v.bsf};
-    const char* names[4] = {"FTF", "BPFO", "BPFI", "BSF"};
-    int worst = 0;
-    for (int i = 1; i < 4; ++i)
-      if (std::abs(val[i] / ref[i] - 1) > std::abs(val[worst] / ref[worst] - 1)) worst = i;
-    Outcome o{val[worst], ref[worst], std::string(names[worst]) + " is the farthest; ", {}};
-    o.detail += fmt("FTF %.4f, BPFO %.4f, BPFI %.4f, BSF %.4f Hz", val[0], val[1], val[2], val[3]);
+    Outcome o = farthest_rate(v, textbook_rates(preset(name), f, 0.0), "");
+    o.detail += fmt("; FTF %.4f, BPFO %.4f, BPFI %.4f, BSF %.4f Hz", v.ftf, v.bpfo, v.bpfi, v.bsf);
     return o;
   };
   return c;
@@ -88,24 +100,16 @@ Check kinematics_outer_ring() {
                 {"pitch-diameter-x1.01"});
   c.measure = [](const Context& ctx) {
     const double fi = kShaftRpm / 60.0, fo = -500.0 / 60.0;
-    Outcome o{0, 1, "", {}};
+    Outcome o;
     double worst = -1;
-    const char* names[4] = {"FTF", "BPFO", "BPFI", "BSF"};
     for (const auto& name : preset_names()) {
       const BearingFrequencies v =
           bearing_frequencies(ctx.bearing(name), 2.0 * M_PI * fi, 2.0 * M_PI * fo);
-      const Bearing b = preset(name);
-      const double g = b.ball_diameter * std::cos(b.contact_angle) / b.pitch_diameter;
-      const double ref[4] = {std::abs(0.5 * fi * (1 - g) + 0.5 * fo * (1 + g)),
-                             0.5 * b.balls * (fi - fo) * (1 - g),
-                             0.5 * b.balls * (fi - fo) * (1 + g),
-                             b.pitch_diameter / (2 * b.ball_diameter) * (fi - fo) * (1 - g * g)};
-      const double val[4] = {v.ftf, v.bpfo, v.bpfi, v.bsf};
-      for (int i = 0; i < 4; ++i)
-        if (std::abs(val[i] / ref[i] - 1) > worst) {
-          worst = std::abs(val[i] / ref[i] - 1);
-          o = {val[i], ref[i], name + " " + names[i] + " is the farthest", {}};
-        }
+      const Outcome w = farthest_rate(v, textbook_rates(preset(name), fi, fo), name + " ");
+      if (std::abs(w.value / w.reference - 1) > worst) {
+        worst = std::abs(w.value / w.reference - 1);
+        o = w;
+      }
     }
     return o;
   };
