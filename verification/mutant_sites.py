@@ -14,8 +14,7 @@ HERE = os.path.dirname(os.path.abspath(__file__))
 
 # The physics: what the verification checks are meant to cover. Left out: input parsing (case/),
 # records/ (file formats), sweep/, output writing, presets.cc (the preset data is also the
-# checks' reference geometry), calibration.cc (the FE calibration, only with bearing-fem) and
-# fem/ (its checks are FE-level and are skipped in a build without deal.II).
+# checks' reference geometry) and calibration.cc (the FE calibration, only with bearing-fem).
 PHYSICS_FILES = [
     # contact / Hertz, kinematics, static load, excitation and defects, traction, material
     "lumped/src/core/contact.cc", "lumped/src/core/hertz_exact.cc",
@@ -58,7 +57,19 @@ PHYSICS_FILES = [
     "lumped/src/pipeline/noise.cc",
 ]
 
+# The FE library: the Hertz contact block and raceway segment, their gap and boundaries, and the
+# Helmholtz radiation solver. Its mutants are judged in a build with deal.II, by the checks that
+# run bearing-fem. Left out: fem/app/ (bearing-fem's command line, its input checks and output
+# files, as case/ and the output writers are on the lumped side).
+FEM_FILES = [
+    "fem/contact/hertz_contact.cc", "fem/contact/raceway_segment.cc",
+    "fem/contact/contact_geometry.h", "fem/radiation/helmholtz_radiation.cc",
+]
 
+
+def is_fem(path):
+    """Whether a mutant of this file is judged in the FE build."""
+    return path.startswith("fem/")
 
 
 # --- finding the code lines ------------------------------------------------------------------

@@ -1,18 +1,23 @@
 #!/usr/bin/python3
 """Code mutants of the physics sources (issue 30): `bearing-verify mutate --source` runs this.
 
-    source_mutants.py generate [--mutants N] [--seed S] [--repo DIR] [--json FILE]
-    source_mutants.py run --out DIR [--mutants N] [--seed S] [--level quick] [--jobs J]
-                          [--repo DIR] [--commit REV] [--scratch DIR] [--min-score F]
+    source_mutants.py generate [--mutants N] [--fem-mutants M] [--seed S] [--repo DIR]
+                               [--json FILE]
+    source_mutants.py run --out DIR [--mutants N] [--fem-mutants M] [--seed S] [--level quick]
+                          [--jobs J] [--repo DIR] [--commit REV] [--scratch DIR] [--min-score F]
 
-`generate` finds mutation sites on the code lines of PHYSICS_FILES (arithmetic and comparison
-operators, numeric literals, cos/sin, min/max, floor/ceil, a dropped term, swapped arguments,
-&&/||) and draws a fixed-seed sample covering every file. `run` copies the commit under test to a
-scratch folder once (git archive), configures it once (Release, FE off), and for each mutant
-writes the mutated line, rebuilds bearing-verify (only the mutated file recompiles; ccache serves
-the rest), runs `bearing-verify run --level quick --fail-fast` and classifies it: killed (a check
-failed, or bearing-verify crashed, exited with an error, or timed out — each said in `detail`),
-survived, did not build; the file is restored after each. Survivors are judged by hand in
+`generate` finds mutation sites on the code lines of PHYSICS_FILES and FEM_FILES (arithmetic and
+comparison operators, numeric literals, cos/sin, min/max, floor/ceil, a dropped term, swapped
+arguments, &&/||) and draws a fixed-seed sample covering every file: N from lumped/src/, M from
+fem/. `run` copies the commit under test to a scratch folder once (git archive), configures it
+once (Release, FE off), and for each mutant writes the mutated line, rebuilds bearing-verify
+(only the mutated file recompiles; ccache serves the rest), runs `bearing-verify run --level
+quick --fail-fast` and classifies it: killed (a check failed, or bearing-verify crashed, exited
+with an error, or timed out — each said in `detail`), survived, did not build; the file is
+restored after each. The fem/ mutants are judged in a second copy configured with deal.II
+(FE on): each rebuilds bearing-fem and bearing-verify and runs only the checks that need
+bearing-fem (those the FE-off baseline reports as skipped), their FE runs under `mpirun -np J`.
+Without deal.II they are left out, and the run says so. Survivors are judged by hand in
 source_mutants_judged.json beside this script (by mutant id): "equivalent" (with the argument; then
 counted apart from the score), "gap" (a real gap: the check that would kill it) or "limit" (a
 stated limit); the judgement is shown beside each survivor.
@@ -36,10 +41,11 @@ import tarfile
 import time
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from mutant_sites import PHYSICS_FILES, generate, hand_mutants  # noqa: E402
+from mutant_sites import FEM_FILES, PHYSICS_FILES, generate, hand_mutants, is_fem  # noqa: E402
 
 DEFAULT_SEED = 30  # issue 30
-DEFAULT_COUNT = 200
+DEFAULT_COUNT = 150
+DEFAULT_FEM_COUNT = 10
 HERE = os.path.dirname(os.path.abspath(__file__))
 JUDGED_FILE = os.path.join(HERE, "source_mutants_judged.json")
 
@@ -65,8 +71,13 @@ def sh(cmd, cwd=None, timeout=None, log=None):
     return rc, out, time.monotonic() - start
 
 
-def prepare_scratch(repo, commit, scratch, say):
-    """The commit's files in scratch/src (git archive, once per commit) and its build folder."""
+class FemUnavailable(Exception):
+    """deal.II is absent: the fem/ mutants cannot be built."""
+
+
+def prepare_scratch(repo, commit, scratch, say, fem=False):
+    """The commit's files in scratch/src (git archive, once per commit) and its build folder,
+    configured with the FE module on (fem) or off."""
     rev = subprocess.run(["git", "-C", repo, "rev-parse", commit], stdout=subprocess.PIPE,
                          text=True, check=True).stdout.strip()
     src = os.path.join(scratch, "src")
@@ -85,24 +96,55 @@ def prepare_scratch(repo, commit, scratch, say):
     build = os.path.join(src, "build")
     if not os.path.exists(os.path.join(build, "build.ninja")):
         rc, out, _ = sh(["cmake", "-S", src, "-B", build, "-G", "Ninja",
-                         "-DCMAKE_BUILD_TYPE=Release", "-DBEARING_WITH_FEM=OFF"],
+                         "-DCMAKE_BUILD_TYPE=Release",
+                         "-DBEARING_WITH_FEM=" + ("ON" if fem else "OFF")],
                         log=os.path.join(scratch, "configure.log"))
         if rc != 0:
+            shutil.rmtree(build, ignore_errors=True)
+            if fem and "deal.II" in out and "not found" in out:
+                raise FemUnavailable("deal.II 9.4 was not found (Debian: libdeal.ii-dev)")
             raise RuntimeError("configuring the scratch copy failed: " + out[-2000:])
     return rev, src, build
 
 
-def build(build_dir, log, timeout):
-    return sh(["cmake", "--build", build_dir, "-j2", "--target", "bearing-verify"],
+def build(part, log, timeout):
+    return sh(["cmake", "--build", part["build"], "-j2", "--target"] + part["targets"],
               timeout=timeout, log=log)
 
 
-def run_checks(build_dir, level, jobs, out_dir, timeout, fail_fast=True):
-    cmd = [os.path.join(build_dir, "verification", "bearing-verify"), "run", "--level", level,
-           "--jobs", str(jobs), "--quiet", "--out", out_dir]
+def run_checks(part, level, jobs, timeout, fail_fast=True):
+    cmd = [os.path.join(part["build"], "verification", "bearing-verify"), "run", "--level",
+           level, "--jobs", str(jobs), "--quiet", "--out", part["run"]]
+    if part.get("only"):
+        cmd += ["--only", part["only"], "--mpi", str(jobs)]
     if fail_fast:
         cmd.append("--fail-fast")
     return sh(cmd, timeout=timeout)
+
+
+def fe_checks(report_file):
+    """The ids of the checks that need bearing-fem: those an FE-off run reports as skipped."""
+    with open(report_file, encoding="utf-8") as h:
+        return [c["id"] for c in json.load(h)["checks"] if c["status"] == "skipped"]
+
+
+def baseline(part, level, jobs, logs, say):
+    """Builds the unmutated commit in this part's copy and runs its checks; sets the run timeout
+    (5 times the baseline's run, at least 90 s)."""
+    name = part["name"]
+    say("baseline (%s): building %s" % (name, " and ".join(part["targets"])))
+    rc, text, t_build = build(part, os.path.join(logs, "baseline-%s-build.log" % name), None)
+    if rc != 0:
+        raise RuntimeError("the unmutated commit does not build (%s): see "
+                           "logs/baseline-%s-build.log" % (name, name))
+    rc, text, t_run = run_checks(part, level, jobs, None, fail_fast=False)
+    if rc != 0:
+        raise RuntimeError("the unmutated commit fails its %s checks (%s):\n%s" % (level, name,
+                                                                                   text))
+    part["timeout"] = max(90.0, 5.0 * t_run)
+    part["baseline"] = {"build_s": t_build, "run_s": t_run}
+    say("baseline (%s): built in %.0f s, %s checks pass in %.1f s; run timeout %.0f s"
+        % (name, t_build, level, t_run, part["timeout"]))
 
 
 def classify(rc, out):
@@ -155,7 +197,23 @@ def write_outputs(out, meta, mutants):
              "%d killed, %d survived, %d equivalent, %d did not build." % (
                  s["killed"], s["total"] - s["did not build"] - s["equivalent"],
                  100 * s["score"], s["killed"], s["survived"], s["equivalent"],
-                 s["did not build"]), "",
+                 s["did not build"]), ""]
+    for name, part in (("lumped (src/ and headers)", [m for m in mutants
+                                                        if not is_fem(m["file"])]),
+                       ("fem/", [m for m in mutants if is_fem(m["file"])])):
+        p = score(part)
+        if part:
+            lines.append("- %s: %d / %d killed (%.1f %%), %d mutants" % (
+                name, p["killed"], p["total"] - p["did not build"] - p["equivalent"],
+                100 * p["score"], p["total"]))
+    fem = meta.get("fem", {})
+    if "skipped" in fem:
+        lines.append("- " + fem["skipped"])
+    elif fem:
+        lines.append("- fem/ mutants judged in a build with deal.II by the %d checks that need "
+                     "bearing-fem, their FE runs under `mpirun -np %d`" % (
+                         len(fem["checks"]), fem["mpi_processes"]))
+    lines += ["",
              "| id | file:line | operator | original → mutated | status | killed by |",
              "|---|---|---|---|---|---|"]
     for m in mutants:
@@ -166,6 +224,59 @@ def write_outputs(out, meta, mutants):
             m["status"], by.replace("|", "\\|")))
     with open(os.path.join(out, "source_mutants.md"), "w", encoding="utf-8") as h:
         h.write("\n".join(lines) + "\n")
+
+
+def draw(src, args):
+    """The mutants of this run: the lumped draw, the hand-written ones and the fem/ draw."""
+    mutants, total, stats = generate(src, args.mutants, args.seed)
+    if args.only_hand:
+        mutants = []
+    if not args.no_hand:
+        mutants += hand_mutants(src)
+    if args.fem_mutants > 0:
+        fem, fem_total, fem_stats = generate(src, args.fem_mutants, args.seed, FEM_FILES)
+        mutants += fem
+        total += fem_total
+        stats.update(fem_stats)
+    return mutants, total, stats
+
+
+def prepare_fem(args, rev, scratch, lumped, mutants, meta, say):
+    """The FE-on copy where the fem/ mutants are judged (configured now, built before its first
+    mutant), or None when deal.II is absent: then the fem/ mutants are left out, said in meta."""
+    if not any(is_fem(m["file"]) for m in mutants):
+        return None
+    try:
+        _, src, build_dir = prepare_scratch(args.repo, rev, os.path.join(scratch, "fem"), say,
+                                            fem=True)
+    except FemUnavailable as e:
+        meta["fem"] = {"skipped": "fem/ mutants not run: " + str(e)}
+        say("source_mutants: the %d fem/ mutants are left out: %s" % (
+            sum(1 for m in mutants if is_fem(m["file"])), e))
+        mutants[:] = [m for m in mutants if not is_fem(m["file"])]
+        return None
+    checks = fe_checks(os.path.join(lumped["run"], "report.json"))
+    if not checks:
+        raise RuntimeError("the FE-off baseline skipped no check: no check needs bearing-fem?")
+    meta["fem"] = {"files": FEM_FILES, "checks": checks, "mpi_processes": args.jobs}
+    return {"name": "fem", "src": src, "build": build_dir,
+            "run": os.path.join(scratch, "fem", "run"), "targets": ["bearing-fem", "bearing-verify"],
+            "only": "^(" + "|".join(re.escape(c) for c in checks) + ")$"}
+
+
+def judging_order(mutants, previous):
+    """Round robin over the files (a run cut short has still reached every file), the fem/
+    mutants after the others (one switch of build folder), the kept verdicts first."""
+    by_file = {}
+    for m in mutants:
+        by_file.setdefault(m["file"], []).append(m)
+    order = []
+    while any(by_file.values()):
+        for f in list(by_file):
+            if by_file[f]:
+                order.append(by_file[f].pop(0))
+    order.sort(key=lambda m: (m["id"] not in previous, is_fem(m["file"])))  # stable
+    return order
 
 
 def run(args):
@@ -180,24 +291,16 @@ def run(args):
     scratch = os.path.abspath(args.scratch or os.path.join(out, "scratch"))
     start = time.monotonic()
     rev, src, build_dir = prepare_scratch(args.repo, args.commit, scratch, say)
-    mutants, total, stats = generate(src, args.mutants, args.seed)
-    if args.only_hand:
-        mutants = []
-    if not args.no_hand:
-        mutants += hand_mutants(src)
+    lumped = {"name": "lumped", "src": src, "build": build_dir,
+              "run": os.path.join(scratch, "run"), "targets": ["bearing-verify"]}
+    mutants, total, stats = draw(src, args)
     logs = os.path.join(out, "logs")
     os.makedirs(logs, exist_ok=True)
-    say("baseline: building bearing-verify")
-    rc, text, t_build = build(build_dir, os.path.join(logs, "baseline-build.log"), None)
-    if rc != 0:
-        raise RuntimeError("the unmutated commit does not build: see logs/baseline-build.log")
-    rc, text, t_run = run_checks(build_dir, args.level, args.jobs,
-                                 os.path.join(scratch, "run"), None, fail_fast=False)
-    if rc != 0:
-        raise RuntimeError("the unmutated commit fails its %s checks:\n%s" % (args.level, text))
-    timeout = max(90.0, 5.0 * t_run)
-    say("baseline: built in %.0f s, %s checks pass in %.1f s; run timeout %.0f s"
-        % (t_build, args.level, t_run, timeout))
+    baseline(lumped, args.level, args.jobs, logs, say)
+    meta = {"format": "bearing-verify source mutants 1", "commit": rev, "seed": args.seed,
+            "level": args.level, "sites": total, "files": stats,
+            "baseline": lumped["baseline"], "run_timeout_s": lumped["timeout"]}
+    fem = prepare_fem(args, rev, scratch, lumped, mutants, meta, say)
     judged = load_judgements()
     previous = {}
     done_file = os.path.join(out, "source_mutants.json")
@@ -206,30 +309,20 @@ def run(args):
                                               ("survived", "equivalent"))
         previous = {m["id"]: m for m in json.load(open(done_file))["mutants"]
                     if m.get("status") in keep}
-    meta = {"format": "bearing-verify source mutants 1", "commit": rev, "seed": args.seed,
-            "level": args.level, "sites": total, "files": stats,
-            "baseline": {"build_s": t_build, "run_s": t_run}, "run_timeout_s": timeout}
-    # Round robin over the files (a run cut short has still reached every file); the outputs
-    # stay in file order.
-    rank = {m["id"]: i for i, m in enumerate(mutants)}
-    by_file = {}
-    for m in mutants:
-        by_file.setdefault(m["file"], []).append(m)
-    order = []
-    while any(by_file.values()):
-        for f in list(by_file):
-            if by_file[f]:
-                order.append(by_file[f].pop(0))
-    order.sort(key=lambda m: m["id"] not in previous)  # the kept verdicts first (stable)
+    rank = {m["id"]: i for i, m in enumerate(mutants)}  # the outputs stay in file order
     earlier = 0.0
     if previous:
         earlier = json.load(open(done_file)).get("wall_time", 0.0)
     results = []
-    for k, m in enumerate(order, start=1):
+    for k, m in enumerate(judging_order(mutants, previous), start=1):
         if m["id"] in previous:
             r = previous[m["id"]]
         else:
-            r = apply_and_judge(m, src, build_dir, args, logs, scratch, timeout)
+            part = fem if is_fem(m["file"]) else lumped
+            if "baseline" not in part:
+                baseline(part, args.level, args.jobs, logs, say)
+                meta["fem"].update(baseline=part["baseline"], run_timeout_s=part["timeout"])
+            r = apply_and_judge(m, part, args, logs)
         if r["status"] == "equivalent":
             r["status"] = "survived"  # judged again below, from the current list
         if r["status"] == "survived" and r["id"] in judged:
@@ -276,9 +369,9 @@ def rescore(args):
     return 0 if s["score"] >= args.min_score else 4
 
 
-def apply_and_judge(m, src, build_dir, args, logs, scratch, timeout):
+def apply_and_judge(m, part, args, logs):
     r = dict(m)
-    path = os.path.join(src, m["file"])
+    path = os.path.join(part["src"], m["file"])
     with open(path, encoding="utf-8") as h:
         original = h.read()
     lines = original.split("\n")
@@ -290,15 +383,14 @@ def apply_and_judge(m, src, build_dir, args, logs, scratch, timeout):
         with open(path, "w", encoding="utf-8") as h:
             h.write("\n".join(lines))
         log = os.path.join(logs, re.sub(r"[^\w.+-]", "_", m["id"]) + ".build.log")
-        rc, text, r["build_s"] = build(build_dir, log, 900)
+        rc, text, r["build_s"] = build(part, log, 900)
         if rc != 0:
             r["status"], r["killed_by"] = "did not build", ""
             err = [l for l in text.splitlines() if "error" in l]
             r["detail"] = (err[0] if err else "build failed (rc %s)" % rc)[-200:]
             r["run_s"] = 0.0
             return r
-        rc, text, r["run_s"] = run_checks(build_dir, args.level, args.jobs,
-                                          os.path.join(scratch, "run"), timeout)
+        rc, text, r["run_s"] = run_checks(part, args.level, args.jobs, part["timeout"])
         r["status"], r["killed_by"], r["detail"] = classify(rc, text)
         return r
     finally:
@@ -313,6 +405,8 @@ def main():
         s = sub.add_parser(name)
         s.add_argument("--repo", default=os.path.dirname(HERE), help="the source tree")
         s.add_argument("--mutants", type=int, default=DEFAULT_COUNT)
+        s.add_argument("--fem-mutants", type=int, default=DEFAULT_FEM_COUNT,
+                       help="mutants of fem/ (0: none; judged only where deal.II is found)")
         s.add_argument("--seed", type=int, default=DEFAULT_SEED)
     g = sub.choices["generate"]
     g.add_argument("--json", help="write the drawn mutants here (default: stdout)")
@@ -342,8 +436,14 @@ def main():
         print("source_mutants: --mutants = %d: too few; allowed: at least %d (the number of "
               "physics files)" % (a.mutants, len(PHYSICS_FILES)), file=sys.stderr)
         return 2
+    if a.fem_mutants != 0 and a.fem_mutants < len(FEM_FILES):
+        print("source_mutants: --fem-mutants = %d: too few; allowed: 0 or at least %d (the "
+              "number of fem/ physics files)" % (a.fem_mutants, len(FEM_FILES)), file=sys.stderr)
+        return 2
     if a.command == "generate":
-        mutants, total, stats = generate(a.repo, a.mutants, a.seed)
+        mutants, total, stats = draw(a.repo, argparse.Namespace(
+            mutants=a.mutants, fem_mutants=a.fem_mutants, seed=a.seed, only_hand=False,
+            no_hand=True))
         doc = {"seed": a.seed, "sites": total, "files": stats, "mutants": mutants}
         text = json.dumps(doc, indent=1)
         if a.json:

@@ -41,7 +41,8 @@ struct Options {
   bool quiet = false;
   bool fail_fast = false;  ///< run --fail-fast: cheapest checks first, stop at the first failure
   bool source = false;     ///< mutate --source: code mutants of the physics sources
-  int mutants = 200;       ///< mutate --source: how many are drawn
+  int mutants = 150;       ///< mutate --source: how many are drawn from lumped/src/
+  int fem_mutants = 10;    ///< mutate --source: how many from fem/ (judged where deal.II is)
   int seed = 30;           ///< mutate --source: the draw's seed
 };
 
@@ -199,8 +200,9 @@ int mutate_command(const Options& o) {
 // the commit, rebuilds this program per mutant and runs `run --fail-fast`); this hands over to it.
 int source_mutants_command(const Options& o) {
   if (!o.only.empty())
-    throw bearing::InputError("--only = \"" + o.only +
-                              "\": not used with --source; allowed: --mutants N and --seed S");
+    throw bearing::InputError(
+        "--only = \"" + o.only +
+        "\": not used with --source; allowed: --mutants N, --fem-mutants M and --seed S");
   const std::string script = BEARING_VERIFY_SOURCE_MUTANTS;
   std::vector<std::string> args = {"/usr/bin/python3",
                                    script,
@@ -215,6 +217,8 @@ int source_mutants_command(const Options& o) {
                                    std::to_string(o.jobs),
                                    "--mutants",
                                    std::to_string(o.mutants),
+                                   "--fem-mutants",
+                                   std::to_string(o.fem_mutants),
                                    "--seed",
                                    std::to_string(o.seed)};
   if (o.quiet) args.push_back("--quiet");
@@ -281,8 +285,15 @@ int main(int argc, char** argv) {
                    "code mutants: mutate the physics sources themselves, rebuild, run the quick "
                    "checks (--fail-fast); writes DIR/source_mutants.{json,md}; exit 4 when fewer "
                    "than 90 % of the non-equivalent mutants are killed");
-  mutate->add_option("--mutants", o.mutants, "--source: how many code mutants [64, 100000]")
+  mutate
+      ->add_option("--mutants", o.mutants,
+                   "--source: how many code mutants of lumped/src/ (default 150) [64, 100000]")
       ->check(CLI::Range(64, 100000));
+  mutate
+      ->add_option("--fem-mutants", o.fem_mutants,
+                   "--source: how many of fem/, judged in a build with deal.II (default 10; 0 "
+                   "none) [0, 10000]")
+      ->check(CLI::Range(0, 10000));
   mutate->add_option("--seed", o.seed, "--source: the seed of the draw (default 30)");
   CalibrateOptions co;
   auto* calibrate = add_calibrate_command(app, co);
