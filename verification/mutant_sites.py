@@ -38,7 +38,8 @@ PHYSICS_FILES = [
     "lumped/src/solvers/rk4.cc", "lumped/src/solvers/rk4_wide.cc",
     "lumped/src/solvers/rk4_stages.h", "lumped/src/solvers/newmark.cc",
     "lumped/src/solvers/bdf.cc", "lumped/src/solvers/gsl_adaptive.cc",
-    "lumped/src/solvers/event_adaptive.cc", "lumped/src/solvers/integrator.cc",
+    "lumped/src/solvers/event_adaptive.cc", "lumped/src/solvers/step_control.h",
+    "lumped/src/solvers/integrator.cc",
     "lumped/src/solvers/integrator_detail.h", "lumped/src/solvers/mechanical_system.cc",
     # acoustics
     "lumped/src/acoustics/sources.cc", "lumped/src/acoustics/pressure.cc",

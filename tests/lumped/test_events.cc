@@ -8,12 +8,14 @@
 // (Hertz's impact time, 2.94 δ_max / v0). Without damping the mass leaves at −v0, so after
 // t_c + T it flies back: q(t) = w − v0 (t − t_c − T).
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 #include <vector>
 
 #include <gtest/gtest.h>
 
+#include "../../lumped/src/solvers/step_control.h"
 #include "bearing/solvers/integrator.h"
 
 namespace {
@@ -116,3 +118,47 @@ TEST(EventLocation, WithoutSwitchingFunctionsItIsAPlainAdaptiveMethod) {
 }
 
 }  // namespace
+
+// --- rk8pd-events' step-size control (step_control.h) ------------------------------------------
+// The acceptance rule is the tolerance's contract: a step is accepted exactly when every
+// component's error is within atol s_i + rtol |y_i|, i.e. for the error ratio r ≤ 1.
+
+TEST(StepControl, AcceptsExactlyTheStepsWithinTheTolerance) {
+  const double scale[2] = {2.0, 1.0};
+  const double y1[2] = {0.5, -4.0};
+  const double atol = 1e-6, rtol = 1e-3;
+  // The ratio of each component: |err_i| / (atol s_i + rtol |y_i|); component 1 sets r.
+  const double bound1 = atol * scale[1] + rtol * std::abs(y1[1]);
+  for (const double r : {0.3, 0.999, 1.0}) {
+    solvers_detail::StepControl control(2, atol, rtol, scale);
+    const double err[2] = {0.0, r * bound1};
+    double h = 1e-3;
+    EXPECT_TRUE(control.adjust(y1, err, h)) << "error ratio " << r;
+  }
+  for (const double r : {1.001, 1.05, 3.0}) {
+    solvers_detail::StepControl control(2, atol, rtol, scale);
+    const double err[2] = {0.0, -r * bound1};
+    double h = 1e-3;
+    EXPECT_FALSE(control.adjust(y1, err, h)) << "error ratio " << r;
+    // A rejected step shrinks by S r^(-1/8), never below 0.2 h.
+    EXPECT_NEAR(h, 1e-3 * std::max(0.2, 0.9 * std::pow(r, -1.0 / 8.0)), 1e-15) << r;
+  }
+}
+
+TEST(StepControl, TheNextStepFollowsThePiRule) {
+  const double scale[1] = {1.0};
+  const double y1[1] = {1.0};
+  const double atol = 1e-8, rtol = 1e-6, bound = atol + rtol;
+  solvers_detail::StepControl control(1, atol, rtol, scale);
+  double h = 1e-3;
+  const double e1[1] = {0.5 * bound};
+  ASSERT_TRUE(control.adjust(y1, e1, h));
+  // After an accepted step: h S r^(-0.7/8) r_prev^(0.4/8), r_prev = 1e-4 at the start, in [0.2, 5].
+  const double first = 0.9 * std::pow(0.5, -0.7 / 8) * std::pow(1e-4, 0.4 / 8);
+  EXPECT_NEAR(h, 1e-3 * std::clamp(first, 0.2, 5.0), 1e-15);
+  const double h1 = h;
+  const double e2[1] = {0.25 * bound};
+  ASSERT_TRUE(control.adjust(y1, e2, h));
+  const double second = 0.9 * std::pow(0.25, -0.7 / 8) * std::pow(0.5, 0.4 / 8);
+  EXPECT_NEAR(h, h1 * std::clamp(second, 0.2, 5.0), 1e-15);
+}

@@ -11,9 +11,9 @@
 // The loop, from (t, y = [q, v], y'(t)) with g = switching_functions(t, q):
 //   1. Attempt a step of h (rk8pd with dydt_in = y'(t): 12 stage evaluations + y'(t + h), 13 in
 //      all; y'(t + h) is the next step's dydt_in, so a step costs 13 rather than the 14 of
-//      gsl_odeiv2_evolve_apply, which evaluates dydt_in again). StepControl (below) accepts or
-//      rejects it on the error ratio of gsl_adaptive.cc (same atol, rtol and per-DOF scales) and
-//      proposes the next h'.
+//      gsl_odeiv2_evolve_apply, which evaluates dydt_in again). StepControl (step_control.h)
+//      accepts or rejects it on the error ratio of gsl_adaptive.cc (same atol, rtol and per-DOF
+//      scales) and proposes the next h'.
 //   2. If some g_k changes sign between t and t + h (the ends only: a contact that closes and
 //      opens again inside one step is not seen), the earliest crossing τ is found on the step's
 //      quintic Hermite interpolant (q, v, a at both ends; Illinois regula falsi on g_k(τ, q(τ)),
@@ -49,6 +49,7 @@
 #include "bearing/numerics/roots.h"
 #include "bearing/solvers/integrator.h"
 #include "integrator_detail.h"
+#include "step_control.h"
 
 namespace bearing {
 namespace solvers_detail {
@@ -129,49 +130,6 @@ class EventLocator {
   int count_;
   double atol_;
   std::vector<double> start_, end_, probe_, qv_;
-};
-
-// PI step-size control (Gustafsson) on the error ratio of gsl_odeiv2_control_scaled,
-//     r = max_i |err_i| / (atol s_i + rtol |y_i|),
-// accepted for r ≤ 1. The next step after an accepted one is h S r^(−α) r_prev^β (S = 0.9,
-// α = 0.7/p, β = 0.4/p, p = 8 the order of the error estimate's leading term), between 0.2 h
-// and 5 h; after a rejection h S r^(−1/p), at least 0.2 h, and no growth on the step after it.
-// The integral part alone (β = 0: GSL's control) lets the step grow until it fails, then
-// shrinks it, and repeats; the proportional part damps that cycle, which cost rk8pd a rejected
-// attempt for every ~3 accepted steps on the default case.
-class StepControl {
- public:
-  StepControl(std::size_t dim, double atol, double rtol, const double* scale)
-      : dim_(dim), atol_(atol), rtol_(rtol), scale_(scale) {}
-
-  /// Whether the step from y to y1 with error estimate err is accepted; h becomes the next
-  /// attempt's length.
-  bool adjust(const double* y1, const double* err, double& h) {
-    double r = 0.0;
-    for (std::size_t i = 0; i < dim_; ++i)
-      r = std::max(r, std::abs(err[i]) / (atol_ * scale_[i] + rtol_ * std::abs(y1[i])));
-    if (!(r <= 1.0)) {
-      h *= std::max(0.2, kSafety * std::pow(r, -1.0 / kOrder));
-      rejected_ = true;
-      return false;
-    }
-    r = std::max(r, 1e-10);
-    double factor = kSafety * std::pow(r, -0.7 / kOrder) * std::pow(r_prev_, 0.4 / kOrder);
-    factor = std::clamp(factor, 0.2, rejected_ ? 1.0 : 5.0);
-    h *= factor;
-    r_prev_ = r;
-    rejected_ = false;
-    return true;
-  }
-
- private:
-  static constexpr double kSafety = 0.9;
-  static constexpr double kOrder = 8.0;
-  std::size_t dim_;
-  double atol_, rtol_;
-  const double* scale_;
-  double r_prev_ = 1e-4;
-  bool rejected_ = false;
 };
 
 class EventAdaptive final : public Integrator {
