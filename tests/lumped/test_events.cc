@@ -117,6 +117,24 @@ TEST(EventLocation, WithoutSwitchingFunctionsItIsAPlainAdaptiveMethod) {
   EXPECT_NEAR(blind.q.back(), exact, 1e-12);
 }
 
+TEST(EventLocation, AStartOnTheKinkIsNotAnEvent) {
+  // Started on the wall (g = 0) moving into it: the step from the kink is not an event (a landing
+  // leaves g within atol of 0 on purpose; locating it again would land on it once more). The
+  // exit from the contact is the one event, at the analytic time.
+  IntegratorSettings s;
+  s.method = find_named(kIntegratorMethods, "rk8pd-events").value();
+  s.dt = 1e-6;
+  s.rtol = 1e-10;
+  s.atol = 1e-16;
+  const HertzWall wall(kMass, kK, 0.0, true);
+  std::vector<double> times;
+  for (int k = 1; k <= 10; ++k) times.push_back(k * 1e-4);
+  const IntegrationStats stats = make_integrator(s)->integrate(
+      wall, 0.0, {0.0}, {kV0}, times, [](double, const double*, const double*, const double*) {});
+  EXPECT_EQ(stats.events, 1);
+  EXPECT_LE(first_call_from(wall.calls, contact_duration() - 1e-9) - contact_duration(), 3e-8);
+}
+
 }  // namespace
 
 // --- rk8pd-events' step-size control (step_control.h) ------------------------------------------

@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <string>
 #include <vector>
 
 #include "bearing/constants.h"
@@ -171,6 +172,30 @@ TEST(HarmonicComb, FindsPlantedLinesAtTheirCommonSlip) {
   EXPECT_GT(r.evidence, 19);
   EXPECT_GT(r.threshold, 5);
   EXPECT_LT(r.threshold, 15);
+}
+
+TEST(HarmonicComb, EachLinesFloorIsTheFloorAroundItsSlipBand) {
+  // A line may sit anywhere within ± slip of its nominal frequency: its floor is the one around
+  // that whole band (line_floor.h), the same on both sides, whatever the line's rate.
+  const Spectrum s = exponential_spectrum(6000, 0.1, 6);
+  HarmonicComb comb;
+  comb.carrier = 107.3;
+  comb.harmonics = 3;
+  comb.modulation = 29.95;
+  comb.slip = 0.02;
+  comb.rated = {0.3, 600};
+  const CombSearch r = search_comb(s, comb, 1e-3);
+  ASSERT_EQ(r.lines.size(), 9u);
+  for (const CombLine& l : r.lines) {
+    SCOPED_TRACE("harmonic " + std::to_string(l.harmonic) + ", sideband " +
+                 std::to_string(l.sideband));
+    ASSERT_TRUE(l.rated);
+    const double rate = l.harmonic * comb.carrier;  // the sidebands' spacing does not slip
+    const LineFloor f = floor_around(s, l.nominal - comb.slip * rate, l.nominal + comb.slip * rate,
+                                     comb.rated.low, comb.rated.high);
+    EXPECT_EQ(l.floor_samples, f.samples);
+    EXPECT_EQ(l.floor, std::sqrt(f.power));
+  }
 }
 
 TEST(HarmonicComb, LinesInAnExcludedZoneDoNotCount) {
