@@ -2,6 +2,7 @@
 
 #include "analyse_command.h"
 
+#include <cctype>
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
@@ -33,11 +34,23 @@ std::vector<bearing::RecordFormat> record_formats() {
 #endif
 }
 
+// Whether bearing-sim-full reads this extension where this program does not (full_program.h):
+// BEARING_FULL_READS lists the extensions of the readers that load HDF5 in this build.
+bool read_by_full_program(const bearing::RecordFormat& f) {
+#ifdef BEARING_FULL_READS
+  const std::string list = std::string(" ") + BEARING_FULL_READS + " ";
+  return !f.read && list.find(" " + std::string(f.extension) + " ") != std::string::npos;
+#else
+  (void)f;
+  return false;
+#endif
+}
+
 std::string format_list() {
   std::string out;
   for (const auto& f : record_formats())
     out += "\n  " + std::string(f.extension) + "  " + std::string(f.description) +
-           (f.read ? "" : " (" + std::string(f.unavailable) + ")");
+           (f.read || read_by_full_program(f) ? "" : " (" + std::string(f.unavailable) + ")");
   return out;
 }
 
@@ -190,7 +203,13 @@ CLI::App* add_analyse_command(CLI::App& app, AnalyseOptions& o) {
   return cmd;
 }
 
-int analyse_command(const AnalyseOptions& o) {
+int analyse_command(const AnalyseOptions& o, const CommandLine& cl) {
+  const std::vector<bearing::RecordFormat> formats = record_formats();
+  std::string extension = std::filesystem::path(o.record).extension().string();
+  for (char& ch : extension) ch = static_cast<char>(std::tolower(static_cast<unsigned char>(ch)));
+  for (const auto& f : formats)
+    if (f.extension == extension && read_by_full_program(f))
+      hand_over(cl, "reading a " + extension + " record");
   const bearing::Case c = load_case(o);
   bearing::RecordOptions ro;
   ro.channel = o.channel;
@@ -198,7 +217,7 @@ int analyse_command(const AnalyseOptions& o) {
   ro.unit = o.unit;
   ro.scale = o.scale;
   ro.dataset = o.dataset;
-  const bearing::MeasuredRecord r = bearing::read_record(o.record, ro, record_formats());
+  const bearing::MeasuredRecord r = bearing::read_record(o.record, ro, formats);
   const SpeedChoice speed = speed_of(o, r, c);
 
   bearing::RecordAnalysisSettings s;

@@ -8,6 +8,8 @@
 
 #include <CLI/CLI.hpp>
 
+#include "full_program.h"
+
 namespace bearing_app {
 
 /// The analyse options as given on the command line.
@@ -33,6 +35,7 @@ struct AnalyseOptions {
 CLI::App* add_analyse_command(CLI::App& app, AnalyseOptions& o);
 
 /// Runs it: 0 on success; throws bearing::InputError (exit 2), OutputError or SolverError (3).
-int analyse_command(const AnalyseOptions& o);
+/// A record that only bearing-sim-full reads (.mat, .h5) is handed over to it (full_program.h).
+int analyse_command(const AnalyseOptions& o, const CommandLine& cl);
 
 }  // namespace bearing_app

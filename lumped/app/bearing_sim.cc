@@ -27,6 +27,7 @@
 #include "bearing/presets.h"
 #include "bearing/simulation.h"
 #include "bearing/sweep.h"
+#include "full_program.h"
 #ifdef BEARING_WITH_HDF5
 #include "bearing/sweep_dataset.h"
 #include "bearing/sweep_save.h"
@@ -46,10 +47,7 @@ namespace {
 struct MpiSession {
   bool active = false;
   MpiSession(int& argc, char**& argv) {
-    bool launched = false;
-    for (const char* v : {"OMPI_COMM_WORLD_SIZE", "PMIX_RANK", "PMI_RANK", "PMI_SIZE"})
-      launched = launched || std::getenv(v) != nullptr;
-    if (!launched) return;
+    if (!bearing_app::launched_in_parallel()) return;
     int provided = 0;
     MPI_Init_thread(&argc, &argv, MPI_THREAD_FUNNELED, &provided);
     active = true;
@@ -77,7 +75,7 @@ int fail(int code) {
 int world_rank() {
   return 0;
 }
-int world_size() {
+[[maybe_unused]] int world_size() {  // read only where MPI is built in
   return 1;
 }
 int fail(int code) {
@@ -230,8 +228,11 @@ std::optional<bearing::SweepCounts> already_finished(const std::string& dir) {
 
 // `sweep`: every case of the design (or of its --part), in parallel; sweep.csv streamed to a
 // temporary file and renamed into place only when complete; --resume DIR continues one.
-int sweep_command(const SweepOptions& o, bool tty) {
+int sweep_command(const SweepOptions& o, bool tty, const bearing_app::CommandLine& cl) {
   const bool resume = !o.resume.empty();
+  // sweep.h5 (--save, or the --save a --resume's spool may hold) is bearing-sim-full's.
+  if (bearing_app::hands_over() && (resume || !o.save.empty()))
+    bearing_app::hand_over(cl, resume ? "sweep --resume" : "sweep --save");
   if (resume && (!o.vary.empty() || !o.sample.empty() || !o.cases.empty() || !o.sets.empty() ||
                  !o.case_path.empty() || !o.part.empty() || !o.out_dir.empty()))
     throw bearing::InputError("--resume " + o.resume +
@@ -317,7 +318,8 @@ int sweep_command(const SweepOptions& o, bool tty) {
 
 // `merge OUT DIR…`: the parts' sweep.csv into OUT/sweep.csv, and their sweep.h5 (all parts have
 // one, or none) into OUT/sweep.h5; if that fails, the merged sweep.csv is removed again.
-int merge_command(const std::string& out, const std::vector<std::string>& dirs) {
+int merge_command(const std::string& out, const std::vector<std::string>& dirs,
+                  const bearing_app::CommandLine& cl) {
   namespace fs = std::filesystem;
   std::vector<std::string> datasets;
   for (const auto& d : dirs)
@@ -327,6 +329,8 @@ int merge_command(const std::string& out, const std::vector<std::string>& dirs) 
     throw bearing::InputError("merge: " + std::to_string(datasets.size()) + " of the " +
                               std::to_string(dirs.size()) +
                               " parts have a sweep.h5: run every part with the same --save");
+  if (!datasets.empty() && bearing_app::hands_over())
+    bearing_app::hand_over(cl, "merging sweep.h5");
 #ifndef BEARING_WITH_HDF5
   if (!datasets.empty())
     throw bearing::InputError(
@@ -391,6 +395,16 @@ void add_sweep_options(CLI::App* cmd, SweepOptions& o) {
 }  // namespace
 
 int main(int argc, char** argv) {
+  const bearing_app::CommandLine command_line{argc, argv};
+  // Under mpirun a plain bearing-sim is bearing-sim-full from the start (MPI_Init in every rank).
+  if (bearing_app::hands_over() && bearing_app::launched_in_parallel()) {
+    try {
+      bearing_app::hand_over(command_line, "a command under mpirun");
+    } catch (const std::exception& e) {
+      std::cerr << "bearing-sim: internal error: " << e.what() << "\n";
+      return 1;
+    }
+  }
 #ifdef BEARING_WITH_MPI
   MpiSession mpi(argc, argv);
 #endif
@@ -495,9 +509,9 @@ int main(int argc, char** argv) {
       return 0;
     }
     if (*run) return run_command(case_path, overrides_of(sets), out_dir, json, quiet, tty);
-    if (*sweep) return sweep_command(so, tty);
-    if (*merge) return merge_command(merge_out, merge_dirs);
-    if (*analyse) return bearing_app::analyse_command(ao);
+    if (*sweep) return sweep_command(so, tty, command_line);
+    if (*merge) return merge_command(merge_out, merge_dirs, command_line);
+    if (*analyse) return bearing_app::analyse_command(ao, command_line);
   } catch (const bearing::InputError& e) {
     std::cerr << who() << ": error: " << e.what() << "\n";
     return fail(2);

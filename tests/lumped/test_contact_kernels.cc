@@ -6,6 +6,8 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <fstream>
+#include <initializer_list>
 #include <random>
 #include <string>
 #include <vector>
@@ -103,6 +105,42 @@ TEST(ContactKernels, PlanarBallsInEveryInstructionSetGiveTheScalarBits) {
         }
       }
     }
+}
+
+}  // namespace
+}  // namespace bearing
+
+namespace bearing {
+namespace {
+
+// The dispatch (lumped/src/models/highway_runtime.cc) picks the best target whose instruction
+// sets the CPU has; the reference here is the kernel's own list in /proc/cpuinfo, read
+// independently of __builtin_cpu_supports.
+TEST(ContactKernels, DispatchPicksTheBestTargetTheCpuHas) {
+  if (simd_target().rfind("scalar", 0) == 0) GTEST_SKIP() << "built without Highway";
+  std::ifstream in("/proc/cpuinfo");
+  std::string line, flags;
+  while (std::getline(in, line))
+    if (line.rfind("flags", 0) == 0) {
+      flags = " " + line.substr(line.find(':') + 1) + " ";
+      break;
+    }
+  if (flags.empty()) GTEST_SKIP() << "no /proc/cpuinfo flags here";
+  const auto has = [&](std::initializer_list<const char*> sets) {
+    for (const char* s : sets)
+      if (flags.find(" " + std::string(s) + " ") == std::string::npos) return false;
+    return true;
+  };
+  const bool ssse3 = has({"sse2", "ssse3"});
+  const bool sse4 = ssse3 && has({"sse4_1", "sse4_2", "pclmulqdq", "aes"});
+  const bool avx2 = sse4 && has({"avx", "avx2", "bmi1", "bmi2", "fma", "f16c"});
+  const bool avx3 = avx2 && has({"avx512f", "avx512vl", "avx512dq", "avx512bw"});
+  const std::string expected = avx3    ? "AVX3"
+                               : avx2  ? "AVX2"
+                               : sse4  ? "SSE4"
+                               : ssse3 ? "SSSE3"
+                                       : "EMU128";
+  EXPECT_EQ(simd_target(), expected) << "cpuinfo flags:" << flags;
 }
 
 }  // namespace
