@@ -18,8 +18,18 @@
 #include <cstdint>
 
 #include <hwy/targets.h>
+#if HWY_ARCH_X86
+#include <cpuid.h>
+#endif
 
 namespace {
+
+#if HWY_ARCH_X86
+// F16C from CPUID leaf 1 (ECX bit 29): Clang's __builtin_cpu_supports does not know "f16c".
+bool cpu_has_f16c() {
+  unsigned int eax = 0, ebx = 0, ecx = 0, edx = 0;
+  return __get_cpuid(1, &eax, &ebx, &ecx, &edx) != 0 && (ecx & bit_F16C) != 0;
+}
 
 bool cpu_has_ssse3() {
   return __builtin_cpu_supports("sse2") && __builtin_cpu_supports("ssse3");
@@ -31,13 +41,14 @@ bool cpu_has_sse4() {
 bool cpu_has_avx2() {
   return cpu_has_sse4() && __builtin_cpu_supports("avx") && __builtin_cpu_supports("avx2") &&
          __builtin_cpu_supports("bmi") && __builtin_cpu_supports("bmi2") &&
-         __builtin_cpu_supports("fma") && __builtin_cpu_supports("f16c");
+         __builtin_cpu_supports("fma") && cpu_has_f16c();
 }
 bool cpu_has_avx3() {
   return cpu_has_avx2() && __builtin_cpu_supports("avx512f") &&
          __builtin_cpu_supports("avx512vl") && __builtin_cpu_supports("avx512dq") &&
          __builtin_cpu_supports("avx512bw");
 }
+#endif  // HWY_ARCH_X86
 
 int64_t detected_targets() {
   int64_t t = HWY_EMU128 | HWY_SCALAR;
