@@ -1,8 +1,8 @@
 // The three functions of Highway's runtime library that the contact kernels' dynamic dispatch
 // calls (HWY_DYNAMIC_DISPATCH in contact_kernels.cc), so that no program of the toolkit loads
-// libhwy.so: its static initialiser calibrates Highway's benchmark timer (TimerResolution, a
-// busy loop of ~3 ms) in every process that loads it, ~5 % of a plain `bearing-sim run`
-// (issue 31). Dispatch needs only the CPU's instruction sets, which GCC's and Clang's
+// libhwy.so: its static initialiser calibrates Highway's benchmark timer (TimerResolution) in
+// every process that loads it (~5 % of a plain `bearing-sim run` in the issue's profile,
+// issue 31). Dispatch needs only the CPU's instruction sets, which GCC's and Clang's
 // __builtin_cpu_supports give (CPUID, and XGETBV for the AVX and AVX-512 register state).
 //
 // The target chosen is the best one whose every instruction set the CPU has, with the sets
