@@ -76,7 +76,7 @@ void check_defect_step(const SolverSettings& s, const ModelInputs& in, double tr
 class DynamicRun final : public ModelRun {
  public:
   DynamicRun(std::unique_ptr<BearingModel> model, const ModelInputs& in, const SolverSettings& s,
-             double contact_angle)
+             double contact_angle, std::unique_ptr<Integrator> (*rk4)(const IntegratorSettings&))
       : model_(std::move(model)),
         q0_(model_->initial_displacement()),
         v0_(model_->initial_velocity()) {
@@ -94,7 +94,8 @@ class DynamicRun final : public ModelRun {
     settings.max_displacement = s.max_displacement;
     const auto [transit, defect] = quickest_transit(in, model_->cage_speed(), contact_angle);
     if (std::isfinite(transit)) settings.max_step = transit / kStepsPerDefectCrossing;
-    integrator_ = make_integrator(settings);
+    integrator_ =
+        rk4 && s.method == IntegratorMethod::rk4 ? rk4(settings) : make_integrator(settings);
     check_defect_step(s, in, transit, defect);
     check_explicit_step(s, *model_, q0_, v0_);
   }
@@ -116,10 +117,10 @@ class DynamicRun final : public ModelRun {
 
 }  // namespace
 
-std::unique_ptr<ModelRun> make_dynamic_run(std::unique_ptr<BearingModel> model,
-                                           const ModelInputs& inputs, const SolverSettings& solver,
-                                           double contact_angle) {
-  return std::make_unique<DynamicRun>(std::move(model), inputs, solver, contact_angle);
+std::unique_ptr<ModelRun> make_dynamic_run(
+    std::unique_ptr<BearingModel> model, const ModelInputs& inputs, const SolverSettings& solver,
+    double contact_angle, std::unique_ptr<Integrator> (*rk4)(const IntegratorSettings&)) {
+  return std::make_unique<DynamicRun>(std::move(model), inputs, solver, contact_angle, rk4);
 }
 
 }  // namespace bearing

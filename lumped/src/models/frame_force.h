@@ -38,9 +38,18 @@ class FrameForce : public Base {
   void force_with(MechanicalSystem::Workspace* workspace, double t, const double* q,
                   const double* v, double* f) const final {
     if (!workspace) return force(t, q, v, f);
-    const Model& model = static_cast<const Model&>(*this);
-    model.force_in(model.ball_set().template frame<Frame>(t, *workspace), q, v, f);
+    force_at(static_cast<FrameWorkspace<Frame>&>(*workspace), t, q, v, f);
   }
+
+  /// force_with() for a caller that knows the model's type (static_rk4.h): no virtual call, so
+  /// the force inlines into the caller's loop.
+  void force_at(FrameWorkspace<Frame>& workspace, double t, const double* q, const double* v,
+                double* f) const {
+    const Model& model = static_cast<const Model&>(*this);
+    model.force_in(model.ball_set().template frame<Frame>(t, workspace), q, v, f);
+  }
+
+  using FrameType = Frame;
 };
 
 }  // namespace bearing::detail

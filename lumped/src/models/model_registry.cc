@@ -39,7 +39,9 @@ const std::vector<ModelDescriptor>& model_registry() {
        false,
        true,
        free_angle,
-       make_two_dof_model},
+       make_two_dof_model,
+       nullptr,
+       make_two_dof_rk4},
       {ModelKind::three_dof,
        "x, y and the axial z under an axial load or preload (seed 001)",
        {},
@@ -150,7 +152,7 @@ std::unique_ptr<ModelRun> make_run(ModelKind kind, const ModelInputs& inputs,
   check_housing_supported(kind, inputs.housing);
   if (d.dynamic)
     return make_dynamic_run(make_dynamic_model(kind, inputs), inputs, solver,
-                            d.contact_angle(inputs));
+                            d.contact_angle(inputs), inputs.housing.enabled ? nullptr : d.rk4);
   return d.run(inputs, solver);
 }
 

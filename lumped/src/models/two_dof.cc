@@ -14,6 +14,7 @@
 #include "bearing/static_load.h"
 #include "frame_force.h"
 #include "model_input_checks.h"
+#include "static_rk4.h"
 
 namespace bearing {
 
@@ -154,6 +155,10 @@ class TwoDofModel final : public detail::FrameForce<TwoDofModel, detail::BallFra
 
 std::unique_ptr<BearingModel> make_two_dof_model(const ModelInputs& inputs) {
   return std::make_unique<TwoDofModel>(inputs);
+}
+
+std::unique_ptr<Integrator> make_two_dof_rk4(const IntegratorSettings& settings) {
+  return std::make_unique<detail::StaticRk4<TwoDofModel, 2>>(settings);
 }
 
 }  // namespace bearing

@@ -1,7 +1,7 @@
-// The vectorised RK4 stage arithmetic (rk4_stages.h): the inline loops compiled with the loop
-// vectoriser, which rk4.cc is built without.
+// The vectorised RK4 stage arithmetic (bearing/solvers/rk4_loop.h): the inline loops compiled with
+// the loop vectoriser, which rk4.cc is built without.
 
-#include "rk4_stages.h"
+#include "bearing/solvers/rk4_loop.h"
 
 namespace bearing::solvers_detail::rk4_wide {
 

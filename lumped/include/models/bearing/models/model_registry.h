@@ -56,6 +56,10 @@ struct ModelDescriptor {
   std::unique_ptr<BearingModel> (*dynamic)(const ModelInputs&) = nullptr;
   /// How a kind without equations of motion runs (nullptr for a dynamic one).
   std::unique_ptr<ModelRun> (*run)(const ModelInputs&, const SolverSettings&) = nullptr;
+  /// RK4 with this kind's force statically dispatched (static_rk4.h: the same bits as
+  /// make_integrator's RK4, which runs the kind when this is nullptr or the model is wrapped by
+  /// [housing]); for a dynamic kind whose force is hot. It integrates only the kind's own model.
+  std::unique_ptr<Integrator> (*rk4)(const IntegratorSettings&) = nullptr;
 
   /// Whether this kind reads the case table `name`.
   bool owns(const std::string& name) const;
@@ -96,9 +100,11 @@ std::unique_ptr<BearingModel> make_dynamic_model(ModelKind kind, const ModelInpu
 /// kind's kinematic angle (ModelDescriptor::contact_angle), which the defects' transit times use.
 /// Throws InputError naming solver.dt for a fixed step that would jump over a local defect, or
 /// that RK4 cannot run stably.
-std::unique_ptr<ModelRun> make_dynamic_run(std::unique_ptr<BearingModel> model,
-                                           const ModelInputs& inputs, const SolverSettings& solver,
-                                           double contact_angle);
+/// `rk4`: the kind's statically dispatched RK4 (ModelDescriptor::rk4), used when solver.method is
+/// rk4 (nullptr: make_integrator's).
+std::unique_ptr<ModelRun> make_dynamic_run(
+    std::unique_ptr<BearingModel> model, const ModelInputs& inputs, const SolverSettings& solver,
+    double contact_angle, std::unique_ptr<Integrator> (*rk4)(const IntegratorSettings&) = nullptr);
 /// The quasi-static model followed through the output times (quasi_static_run.cc).
 std::unique_ptr<ModelRun> make_quasi_static_run(const ModelInputs& inputs,
                                                 const SolverSettings& solver);

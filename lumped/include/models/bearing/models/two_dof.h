@@ -16,6 +16,7 @@
 
 #include "bearing/models/bearing_model.h"
 #include "bearing/models/model_inputs.h"
+#include "bearing/solvers/integrator.h"
 
 namespace bearing {
 
@@ -24,5 +25,10 @@ namespace bearing {
 /// initial_displacement() is the static solution (solve_static_load) under the constant radial
 /// load (with gravity if on), without waviness or size errors.
 std::unique_ptr<BearingModel> make_two_dof_model(const ModelInputs& inputs);
+
+/// RK4 (`settings`: method rk4, dt, max_displacement) with the 2-DOF model's force inlined in its
+/// stages (static_rk4.h): the same steps and bits as make_integrator(settings), faster. Its
+/// integrate() takes only a model of make_two_dof_model (std::logic_error for any other system).
+std::unique_ptr<Integrator> make_two_dof_rk4(const IntegratorSettings& settings);
 
 }  // namespace bearing

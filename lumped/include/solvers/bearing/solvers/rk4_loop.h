@@ -1,0 +1,172 @@
+#pragma once
+// The loop of the classic fixed-step RK4 (rk4.cc, where the method and its cost are described) as
+// a template on the force, so that a model whose force is hot can instantiate it with its own
+// force inlined in the stages (a statically dispatched path: models/static_rk4.h), while
+// make_integrator's RK4 instantiates it with MechanicalSystem::force_with behind a virtual call.
+// One loop, so both give the same steps and the same arithmetic in the same order: the same
+// bits.
+//
+// The stage arithmetic is element by element, no sums across DOFs and no fused multiply–add at
+// the baseline x86-64. It is compiled twice: inline (rk4_inline), used for 2 or 3 DOFs, where
+// rk4.cc is built without the loop vectoriser (its packed loads of what the force has just stored
+// one DOF at a time would miss store forwarding: ~1 ms of a 45 ms run), and vectorised in
+// rk4_wide.cc for the ball-DOF model's 2Z + 2 or 3 DOFs. Both give the same bits.
+
+#include <algorithm>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "bearing/solvers/fixed_step.h"
+#include "bearing/solvers/integrator.h"
+#include "bearing/solvers/mechanical_system.h"
+
+namespace bearing::solvers_detail {
+
+/// The arrays of one integrate() call (n doubles each).
+struct Rk4Arrays {
+  double* q;   ///< state displacement
+  double* v;   ///< state velocity
+  double* a;   ///< a₁ = M⁻¹ f(t, q, v)
+  double* qs;  ///< stage displacement
+  double* vs;  ///< stage velocity v₂, v₃, v₄
+  double* as;  ///< stage acceleration a₂, a₃, a₄
+  double* sq;  ///< v + 2v₂ + 2v₃ (+ v₄)
+  double* sv;  ///< a₁ + 2a₂ + 2a₃ (+ a₄)
+  int n;
+};
+
+namespace rk4_inline {
+
+/// a ← M⁻¹ a (w = 1/m per DOF).
+inline void scale(double* a, const double* w, int n) {
+  for (int i = 0; i < n; ++i) a[i] *= w[i];
+}
+/// The second stage's state from a₁.
+inline void stage2(const Rk4Arrays& r, double hh) {
+  for (int i = 0; i < r.n; ++i) {
+    r.qs[i] = r.q[i] + hh * r.v[i];
+    r.vs[i] = r.v[i] + hh * r.a[i];
+  }
+}
+/// The third stage's state from a₂.
+inline void stage3(const Rk4Arrays& r, double hh) {
+  for (int i = 0; i < r.n; ++i) {
+    r.sq[i] = r.v[i] + 2.0 * r.vs[i];
+    r.sv[i] = r.a[i] + 2.0 * r.as[i];
+    r.qs[i] = r.q[i] + hh * r.vs[i];
+    r.vs[i] = r.v[i] + hh * r.as[i];
+  }
+}
+/// The fourth stage's state from a₃.
+inline void stage4(const Rk4Arrays& r, double h) {
+  for (int i = 0; i < r.n; ++i) {
+    r.sq[i] += 2.0 * r.vs[i];
+    r.sv[i] += 2.0 * r.as[i];
+    r.qs[i] = r.q[i] + h * r.vs[i];
+    r.vs[i] = r.v[i] + h * r.as[i];
+  }
+}
+/// The step's end from a₄.
+inline void finish(const Rk4Arrays& r, double h6) {
+  for (int i = 0; i < r.n; ++i) {
+    r.q[i] += h6 * (r.sq[i] + r.vs[i]);
+    r.v[i] += h6 * (r.sv[i] + r.as[i]);
+  }
+}
+
+}  // namespace rk4_inline
+
+/// The same, vectorised (rk4_wide.cc).
+namespace rk4_wide {
+void scale(double* a, const double* w, int n);
+void stage2(const Rk4Arrays& r, double hh);
+void stage3(const Rk4Arrays& r, double hh);
+void stage4(const Rk4Arrays& r, double h);
+void finish(const Rk4Arrays& r, double h6);
+}  // namespace rk4_wide
+
+/// From this many DOFs on, rk4.cc uses rk4_wide (the ball-DOF model; not the 2- and 3-DOF ones).
+inline constexpr int kRk4WideDofs = 4;
+
+/// One integrate() of RK4 with step `dt` [s] and the blow-up bound `max_displacement` [m]
+/// (IntegratorSettings), as Integrator::integrate describes it; `method` names it in messages.
+/// force(t, q, v, f) writes the generalised force f(t, q, v) [N per DOF], as
+/// MechanicalSystem::force_with does for `system`, whose dofs() and mass() are used. kDofs > 0:
+/// the system's DOF count known at compile time (the stage loops unrolled); 0: system.dofs().
+template <int kDofs, class Force>
+IntegrationStats rk4_loop(const std::string& method, double dt, double max_displacement,
+                          const MechanicalSystem& system, double t0, const std::vector<double>& q0,
+                          const std::vector<double>& v0, const std::vector<double>& output_times,
+                          const Observer& observe, const Progress& progress, Force&& force) {
+  const std::vector<double> inv_mass = check_call(method, system, t0, q0, v0, output_times);
+  const int n = kDofs > 0 ? kDofs : system.dofs();
+  const std::vector<double> bounds = displacement_bounds(system, max_displacement);
+  const double* const bound = bounds.data();
+  IntegrationStats stats;
+
+  std::vector<double> work(8 * static_cast<std::size_t>(n));
+  double* const q = work.data();  // state
+  double* const v = q + n;
+  double* const a = v + n;    // a₁ = M⁻¹ f at (t, q, v)
+  double* const qs = a + n;   // stage displacement
+  double* const vs = qs + n;  // stage velocity v₂, v₃, v₄
+  double* const as = vs + n;  // stage acceleration a₂, a₃, a₄
+  double* const sq = as + n;  // v + 2v₂ + 2v₃ (+ v₄)
+  double* const sv = sq + n;  // a₁ + 2a₂ + 2a₃ (+ a₄)
+  const double* const w = inv_mass.data();
+  std::copy(q0.begin(), q0.end(), q);
+  std::copy(v0.begin(), v0.end(), v);
+  check_state(method, t0, 0, dt, q, v, n, bound);
+  if (output_times.empty()) return stats;
+
+  const Rk4Arrays r{q, v, a, qs, vs, as, sq, sv, n};
+  const bool wide = kDofs == 0 && n >= kRk4WideDofs;
+  const auto acceleration = [&](double t, const double* qq, const double* vv, double* aa) {
+    force(t, qq, vv, aa);
+    wide ? rk4_wide::scale(aa, w, n) : rk4_inline::scale(aa, w, n);
+  };
+
+  ProgressThrottle report(progress, t0, output_times.back());
+  double t = t0;
+  bool a_current = false;  // whether a holds a(t, q, v) already
+  long evaluations = 0;
+  for (const double t_out : output_times) {
+    const double segment_start = t;
+    long k = 0;  // steps in this segment: times are segment_start + k dt, not a running sum
+    while (t < t_out) {
+      const bool last = final_step_to(t, dt, t_out);
+      const double h = last ? t_out - t : dt;
+      const double hh = 0.5 * h;
+      if (!a_current) {
+        acceleration(t, q, v, a);
+        ++evaluations;
+      }
+      wide ? rk4_wide::stage2(r, hh) : rk4_inline::stage2(r, hh);
+      acceleration(t + hh, qs, vs, as);
+      wide ? rk4_wide::stage3(r, hh) : rk4_inline::stage3(r, hh);
+      acceleration(t + hh, qs, vs, as);
+      wide ? rk4_wide::stage4(r, h) : rk4_inline::stage4(r, h);
+      acceleration(t + h, qs, vs, as);
+      const double h6 = h / 6.0;
+      wide ? rk4_wide::finish(r, h6) : rk4_inline::finish(r, h6);
+      evaluations += 3;
+      a_current = false;
+      ++k;
+      t = last ? t_out : segment_start + static_cast<double>(k) * dt;
+      ++stats.steps;
+      check_state(method, t, stats.steps, h, q, v, n, bound);
+      report.update(t);
+    }
+    acceleration(t, q, v, a);
+    ++evaluations;
+    a_current = true;
+    check_acceleration(method, t, stats.steps, dt, a, n);
+    if (observe) observe(t, q, v, a);
+  }
+  stats.force_evaluations = evaluations;
+  report.finish();
+  return stats;
+}
+
+}  // namespace bearing::solvers_detail
