@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "../../lumped/src/models/contact_kernels.h"
+#include "../../lumped/src/models/phasor.h"
 #include "bearing/contact_loop.h"
 
 namespace bearing {
@@ -53,6 +54,41 @@ TEST(ContactKernels, EveryInstructionSetGivesTheScalarBits) {
         scalar.radial(c2.data(), s2.data(), e.data(), K.data(), Z, x, y, gap, &fx2, &fy2);
         ASSERT_EQ(fx1, fx2);
         ASSERT_EQ(fy1, fy2);
+      }
+    }
+}
+
+// The static RK4 computes a segment's phasors ahead with these kernels (static_rk4.h) where the
+// interface RK4 calls phasor() one at a time: they must agree to the bit, for angles of either
+// sign, up to a long run's ~1e5 rad, on the table's nodes and half-way between them (where the
+// rounding of θ/Δ decides the node), and for every count (the last vector partly used).
+TEST(ContactKernels, PhasorsInEveryInstructionSetGivePhasorsBits) {
+  std::vector<double> theta;
+  std::mt19937_64 rng(11);
+  std::uniform_real_distribution<double> u(-1, 1);
+  const double step = detail::PhasorConstants::kStep;
+  for (int i = 0; i < 200; ++i) theta.push_back(1e5 * u(rng));
+  for (int i = 0; i < 200; ++i) theta.push_back(10 * u(rng));
+  for (int k = -3000; k <= 3000; k += 7) {
+    theta.push_back(k * step);
+    theta.push_back((k + 0.5) * step);
+    theta.push_back(std::nextafter((k + 0.5) * step, 0.0));
+  }
+  theta.push_back(0.0);
+  theta.push_back(-0.0);
+  std::vector<detail::NamedKernels> targets = detail::kernels_per_target();
+  targets.push_back({"scalar", detail::contact_kernels(ContactLoop::scalar, 8)});
+  for (const detail::NamedKernels& t : targets)
+    for (const int n : {1, 7, 8, 9, static_cast<int>(theta.size())}) {
+      SCOPED_TRACE(t.target + ", n = " + std::to_string(n));
+      const int padded = detail::padded_balls(n);
+      std::vector<double> in(theta.begin(), theta.begin() + n), c(padded), s(padded);
+      in.resize(padded, 0.5);
+      t.kernels.phasors(in.data(), n, c.data(), s.data());
+      for (int i = 0; i < n; ++i) {
+        const detail::Phasor p = detail::phasor(in[i]);
+        ASSERT_EQ(c[i], p.c) << "theta = " << in[i];
+        ASSERT_EQ(s[i], p.s) << "theta = " << in[i];
       }
     }
 }

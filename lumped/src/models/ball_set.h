@@ -171,19 +171,51 @@ class BallSet {
     }
   }
 
+  /// The trigonometry of t that a frame needs: the phasors of the cage angle ω_c t and, where the
+  /// frame uses it (inner-race waviness, unbalance), of the shaft angle ω_i t (phasor.h). It
+  /// depends on t alone, so a caller that knows the coming times may compute it ahead for
+  /// several at once (static_rk4.h), which overlaps their latency.
+  struct TimeAngles {
+    Phasor cage;
+    Phasor shaft;
+  };
+  TimeAngles time_angles(double t) const {
+    return {phasor(cage_speed_ * t), needs_shaft_ ? phasor(inner_speed_ * t) : Phasor{1.0, 0.0}};
+  }
+
+  /// time_angles() of the n times t[i] [s] at once, into out[i]: the same bits, computed several
+  /// to a vector (the kernels' phasors). `scratch` is resized as needed.
+  void time_angles(const double* t, int n, TimeAngles* out, std::vector<double>& scratch) const {
+    const int padded = padded_balls(n);
+    scratch.resize(3 * static_cast<std::size_t>(padded));  // lanes past n: never used
+    double* const theta = scratch.data();
+    double* const c = theta + padded;
+    double* const s = c + padded;
+    for (int i = 0; i < n; ++i) theta[i] = cage_speed_ * t[i];
+    kernels_.phasors(theta, n, c, s);
+    for (int i = 0; i < n; ++i) out[i] = {{c[i], s[i]}, {1.0, 0.0}};
+    if (!needs_shaft_) return;
+    for (int i = 0; i < n; ++i) theta[i] = inner_speed_ * t[i];
+    kernels_.phasors(theta, n, c, s);
+    for (int i = 0; i < n; ++i) out[i].shaft = {c[i], s[i]};
+  }
+
   /// The frame at time t [s] in `workspace` (a FrameWorkspace<Frame> from the model's
   /// make_workspace()), evaluated only when t differs from the last t asked of it
-  /// (frame_workspace.h). The reference is valid until the next call with this workspace.
+  /// (frame_workspace.h); `ahead`: time_angles(t) computed ahead, or nullptr. The reference is
+  /// valid until the next call with this workspace.
   template <class Frame>
-  const Frame& frame(double t, MechanicalSystem::Workspace& workspace) const {
+  const Frame& frame(double t, MechanicalSystem::Workspace& workspace,
+                     const TimeAngles* ahead = nullptr) const {
     assert(dynamic_cast<FrameWorkspace<Frame>*>(&workspace));
     auto& w = static_cast<FrameWorkspace<Frame>&>(workspace);
     if (w.t != t) {
+      const TimeAngles a = ahead ? *ahead : time_angles(t);
       // Without waviness and defects e_j and K_j do not depend on t: only the angles move.
       if (std::isnan(w.t) || excitation_varies())
-        evaluate(t, w.frame);
+        evaluate(t, a, w.frame);
       else
-        angles(t, w.frame);
+        angles(a, w.frame);
       w.t = t;
     }
     return w.frame;
@@ -225,9 +257,11 @@ class BallSet {
   }
 
   /// Fills `fr` for time t [s].
-  void evaluate(double t, BallFrame& fr) const {
+  void evaluate(double t, BallFrame& fr) const { evaluate(t, time_angles(t), fr); }
+  /// The same with time_angles(t) given.
+  void evaluate(double t, const TimeAngles& ta, BallFrame& fr) const {
     const int Z = balls_;
-    angles(t, fr);
+    angles(ta, fr);
     for (int j = 0; j < Z; ++j) fr.excitation[j] = -size_error_[j];
     double curv_i[kMaxBalls], curv_o[kMaxBalls];
     add_waviness(fr, fr.excitation, fr.excitation, curv_i, curv_o);
@@ -245,9 +279,11 @@ class BallSet {
 
   /// Fills `fr` for time t [s] with each race's excitation and constant apart; a ball-size error
   /// ΔD_j takes ΔD_j/2 from each contact.
-  void evaluate(double t, RaceFrame& fr) const {
+  void evaluate(double t, RaceFrame& fr) const { evaluate(t, time_angles(t), fr); }
+  /// The same with time_angles(t) given.
+  void evaluate(double t, const TimeAngles& ta, RaceFrame& fr) const {
     const int Z = balls_;
-    angles(t, fr);
+    angles(ta, fr);
     for (int j = 0; j < Z; ++j)
       fr.inner_excitation[j] = fr.outer_excitation[j] = -0.5 * size_error_[j];
     double curv_i[kMaxBalls], curv_o[kMaxBalls];
@@ -266,15 +302,13 @@ class BallSet {
   }
 
  private:
-  // θ_j and the shaft angle at t: the precomputed (cos, sin) of φ₀ + 2πj/Z rotated by the one
-  // phasor of ω_c t (Frame: BallFrame or RaceFrame).
+  // θ_j and the shaft angle at t from time_angles(t): the precomputed (cos, sin) of φ₀ + 2πj/Z
+  // rotated by the one phasor of ω_c t (Frame: BallFrame or RaceFrame).
   template <class Frame>
-  void angles(double t, Frame& fr) const {
-    const Phasor cage = phasor(cage_speed_ * t);  // by rotation, not libm (phasor.h)
-    const double cc = cage.c, sc = cage.s;
-    const Phasor shaft = needs_shaft_ ? phasor(inner_speed_ * t) : Phasor{1.0, 0.0};
-    fr.cos_shaft = shaft.c;
-    fr.sin_shaft = shaft.s;
+  void angles(const TimeAngles& ta, Frame& fr) const {
+    const double cc = ta.cage.c, sc = ta.cage.s;
+    fr.cos_shaft = ta.shaft.c;
+    fr.sin_shaft = ta.shaft.s;
     static_assert(kMaxBalls % kKernelPad == 0, "the frame's arrays hold whole vectors");
     kernels_.rotate(base_cos_.data(), base_sin_.data(), cc, sc, balls_, fr.cos_theta, fr.sin_theta);
   }

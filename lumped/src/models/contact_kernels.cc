@@ -7,6 +7,7 @@
 #include <cstdint>
 
 #include "contact_kernels.h"
+#include "phasor.h"
 
 #ifndef BEARING_WITHOUT_HIGHWAY
 #undef HWY_TARGET_INCLUDE
@@ -131,8 +132,49 @@ void PlanarBallsImpl(const PlanarBalls& in, double* HWY_RESTRICT radial,
   *fy = sy;
 }
 
+// phasor() (phasor.h) lane by lane: the same operations in the same order, the table entry
+// gathered (Phasor is {cos, sin}: entry i is at 2i and 2i + 1 of the doubles).
+void PhasorsImpl(const double* HWY_RESTRICT theta, int n, double* HWY_RESTRICT cos_theta,
+                 double* HWY_RESTRICT sin_theta) {
+  using C = PhasorConstants;
+  const PhasorConstants& pc = phasor_constants();
+  const Tag d;
+  const hn::RebindToSigned<Tag> di;
+  const auto step = hn::Set(d, C::kStep), shifter = hn::Set(d, C::kShifter);
+  const auto hi = hn::Set(d, pc.step_hi), lo = hn::Set(d, pc.step_lo), one = hn::Set(d, 1.0);
+  const auto c1 = hn::Set(d, -0.5), c2 = hn::Set(d, 1.0 / 24), c3 = hn::Set(d, -1.0 / 720),
+             c4 = hn::Set(d, 1.0 / 40320);
+  const auto s1 = hn::Set(d, -1.0 / 6), s2 = hn::Set(d, 1.0 / 120), s3 = hn::Set(d, -1.0 / 5040),
+             s4 = hn::Set(d, 1.0 / 362880);
+  const auto mask = hn::Set(di, C::kN - 1);
+  const double* const table = &pc.table[0].c;
+  const auto count = static_cast<std::size_t>(n);
+  for (std::size_t j = 0; j < count; j += hn::Lanes(d)) {
+    const auto th = hn::LoadU(d, theta + j);
+    const auto k = hn::Sub(hn::Add(hn::Div(th, step), shifter), shifter);
+    const auto r = hn::Sub(hn::Sub(th, hn::Mul(k, hi)), hn::Mul(k, lo));
+    const auto r2 = hn::Mul(r, r);
+    const auto cr = hn::Add(
+        one,
+        hn::Mul(r2,
+                hn::Add(c1, hn::Mul(r2, hn::Add(c2, hn::Mul(r2, hn::Add(c3, hn::Mul(r2, c4))))))));
+    const auto sr = hn::Mul(
+        r,
+        hn::Add(
+            one,
+            hn::Mul(
+                r2,
+                hn::Add(s1, hn::Mul(r2, hn::Add(s2, hn::Mul(r2, hn::Add(s3, hn::Mul(r2, s4)))))))));
+    const auto index = hn::ShiftLeft<1>(hn::And(hn::ConvertTo(di, k), mask));
+    const auto tc = hn::GatherIndex(d, table, index);
+    const auto ts = hn::GatherIndex(d, table, hn::Add(index, hn::Set(di, 1)));
+    hn::StoreU(hn::Sub(hn::Mul(tc, cr), hn::Mul(ts, sr)), d, cos_theta + j);
+    hn::StoreU(hn::Add(hn::Mul(ts, cr), hn::Mul(tc, sr)), d, sin_theta + j);
+  }
+}
+
 ContactKernels KernelsImpl() {
-  return {&RotateBallsImpl, &RadialContactsImpl, &PlanarBallsImpl};
+  return {&RotateBallsImpl, &RadialContactsImpl, &PlanarBallsImpl, &PhasorsImpl};
 }
 const char* TargetImpl() {
   return hwy::TargetName(HWY_TARGET);
@@ -165,6 +207,14 @@ void radial_contacts_scalar(const double* cos_theta, const double* sin_theta,
     const double q = stiffness[j] * delta * std::sqrt(delta);
     *fx -= q * c;
     *fy -= q * s;
+  }
+}
+
+void phasors_scalar(const double* theta, int n, double* cos_theta, double* sin_theta) {
+  for (int i = 0; i < n; ++i) {
+    const Phasor p = phasor(theta[i]);
+    cos_theta[i] = p.c;
+    sin_theta[i] = p.s;
   }
 }
 
@@ -220,7 +270,7 @@ ContactKernels contact_kernels(ContactLoop loop, int balls) {
 #endif
   (void)balls;
   (void)loop;
-  return {&rotate_balls_scalar, &radial_contacts_scalar, &planar_balls_scalar};
+  return {&rotate_balls_scalar, &radial_contacts_scalar, &planar_balls_scalar, &phasors_scalar};
 }
 
 std::vector<NamedKernels> kernels_per_target() {

@@ -65,10 +65,16 @@ struct PlanarBalls {
 using PlanarBallForces = void (*)(const PlanarBalls& in, double* radial, double* torque, double* fx,
                                   double* fy);
 
+/// (cos θ_i, sin θ_i) of n angles θ_i [rad], each with phasor()'s bits (phasor.h: the same
+/// operations lane by lane, the table entry gathered). Arrays with room for n rounded up to a
+/// multiple of kKernelPad; what lies past n is computed from whatever is there and not used.
+using Phasors = void (*)(const double* theta, int n, double* cos_theta, double* sin_theta);
+
 struct ContactKernels {
   RotateBalls rotate;
   RadialContacts radial;
   PlanarBallForces planar_balls;
+  Phasors phasors;
 };
 
 /// The kernels of `loop` for Z = `balls` (simd: the best instruction set of this CPU, found on the

@@ -7,6 +7,7 @@
 // evaluation costs one virtual call, as when each model spelled these lines out itself.
 
 #include <memory>
+#include <vector>
 
 #include "ball_set.h"
 #include "bearing/solvers/mechanical_system.h"
@@ -42,11 +43,19 @@ class FrameForce : public Base {
   }
 
   /// force_with() for a caller that knows the model's type (static_rk4.h): no virtual call, so
-  /// the force inlines into the caller's loop.
+  /// the force inlines into the caller's loop; `ahead`: the ball set's time_angles(t) computed
+  /// ahead, or nullptr.
   void force_at(FrameWorkspace<Frame>& workspace, double t, const double* q, const double* v,
-                double* f) const {
+                double* f, const BallSet::TimeAngles* ahead = nullptr) const {
     const Model& model = static_cast<const Model&>(*this);
-    model.force_in(model.ball_set().template frame<Frame>(t, workspace), q, v, f);
+    model.force_in(model.ball_set().template frame<Frame>(t, workspace, ahead), q, v, f);
+  }
+
+  /// The ball set's time_angles() of n times at once (BallSet::TimeAngles), for a caller
+  /// computing them ahead.
+  void time_angles(const double* t, int n, BallSet::TimeAngles* out,
+                   std::vector<double>& scratch) const {
+    static_cast<const Model&>(*this).ball_set().time_angles(t, n, out, scratch);
   }
 
   using FrameType = Frame;

@@ -41,17 +41,56 @@ class StaticRk4 final : public Integrator {
       throw std::logic_error(
           "a model kind's own RK4 was given a system of another kind (make_integrator's RK4 runs "
           "it)");
-    FrameWorkspace<typename Model::FrameType> workspace;
-    return solvers_detail::rk4_loop<kDofs>(
-        name(), settings_.dt, settings_.max_displacement, system, t0, q0, v0, output_times, observe,
-        progress, [&](double t, const double* q, const double* v, double* f) {
-          model->force_at(workspace, t, q, v, f);
-        });
+    AheadForce force{*model, {}, {}, {}, 0, {}};
+    return solvers_detail::rk4_loop<kDofs>(name(), settings_.dt, settings_.max_displacement, system,
+                                           t0, q0, v0, output_times, observe, progress, force);
   }
 
   std::string name() const override { return "rk4"; }
 
  private:
+  // The model's force with the ball set's time_angles() of a segment's new times computed ahead,
+  // together, before its steps (their phasors are independent chains of ~40 dependent
+  // operations each, which then overlap; one at a time, inside each evaluation, they lay on its
+  // critical path). The values are time_angles(t)'s own: the same bits.
+  struct AheadForce {
+    const Model& model;
+    FrameWorkspace<typename Model::FrameType> workspace;
+    std::vector<double> times;                // the new times of the segment, in call order
+    std::vector<BallSet::TimeAngles> angles;  // time_angles() of each
+    std::size_t next;                         // the first entry not yet used
+    std::vector<double> scratch;              // BallSet::time_angles' work arrays
+
+    void ahead(const std::vector<solvers_detail::Rk4Step>& plan, double t_out) {
+      times.clear();
+      auto add = [&](double t) {
+        if (times.empty() || times.back() != t) times.push_back(t);
+      };
+      for (const solvers_detail::Rk4Step& s : plan) {
+        add(s.t);
+        add(s.mid);
+        add(s.end);
+      }
+      add(t_out);
+      angles.resize(times.size());
+      model.time_angles(times.data(), static_cast<int>(times.size()), angles.data(), scratch);
+      next = 0;
+    }
+
+    void operator()(double t, const double* q, const double* v, double* f) {
+      // The calls come in the order of `times`, each new time after the last one used (a time
+      // already in the workspace needs no angles).
+      const BallSet::TimeAngles* found = nullptr;
+      for (std::size_t i = next; i < times.size() && i < next + 3; ++i)
+        if (times[i] == t) {
+          found = &angles[i];
+          next = i + 1;
+          break;
+        }
+      model.force_at(workspace, t, q, v, f, found);
+    }
+  };
+
   IntegratorSettings settings_;
 };
 

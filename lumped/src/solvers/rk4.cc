@@ -50,11 +50,9 @@ IntegrationStats Rk4::integrate(const MechanicalSystem& system, double t0,
                                 const std::vector<double>& output_times, const Observer& observe,
                                 const Progress& progress) const {
   const std::unique_ptr<MechanicalSystem::Workspace> workspace = system.make_workspace();
+  InterfaceForce force{system, workspace.get()};
   return rk4_loop<0>(name(), settings_.dt, settings_.max_displacement, system, t0, q0, v0,
-                     output_times, observe, progress,
-                     [&](double t, const double* q, const double* v, double* f) {
-                       system.force_with(workspace.get(), t, q, v, f);
-                     });
+                     output_times, observe, progress, force);
 }
 
 }  // namespace

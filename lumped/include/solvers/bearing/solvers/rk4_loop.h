@@ -89,16 +89,52 @@ void finish(const Rk4Arrays& r, double h6);
 /// From this many DOFs on, rk4.cc uses rk4_wide (the ball-DOF model; not the 2- and 3-DOF ones).
 inline constexpr int kRk4WideDofs = 4;
 
+/// One step of a segment between output times, planned before the segment runs (its times
+/// depend on t alone): it starts at t with size h, evaluates the force at t (unless already
+/// known), at mid = t + h/2 (twice) and at end = t + h, and the next step starts at `next`
+/// (the output time for the segment's last step, else the segment's start + k dt).
+struct Rk4Step {
+  double t, h, mid, end, next;
+};
+
+/// The steps from t [s] to the output time t_out [s] with step dt [s] (Rk4Step), into `plan`.
+inline void plan_segment(double t, double dt, double t_out, std::vector<Rk4Step>& plan) {
+  plan.clear();
+  const double segment_start = t;
+  long k = 0;  // steps in this segment: times are segment_start + k dt, not a running sum
+  while (t < t_out) {
+    const bool last = final_step_to(t, dt, t_out);
+    const double h = last ? t_out - t : dt;
+    ++k;
+    const double next = last ? t_out : segment_start + static_cast<double>(k) * dt;
+    plan.push_back({t, h, t + 0.5 * h, t + h, next});
+    t = next;
+  }
+}
+
+/// The force of make_integrator's RK4: the system's force_with() behind the interface, with the
+/// system's workspace; nothing to prepare ahead.
+struct InterfaceForce {
+  const MechanicalSystem& system;
+  MechanicalSystem::Workspace* workspace;
+  void operator()(double t, const double* q, const double* v, double* f) const {
+    system.force_with(workspace, t, q, v, f);
+  }
+  void ahead(const std::vector<Rk4Step>& /*plan*/, double /*t_out*/) const {}
+};
+
 /// One integrate() of RK4 with step `dt` [s] and the blow-up bound `max_displacement` [m]
 /// (IntegratorSettings), as Integrator::integrate describes it; `method` names it in messages.
 /// force(t, q, v, f) writes the generalised force f(t, q, v) [N per DOF], as
-/// MechanicalSystem::force_with does for `system`, whose dofs() and mass() are used. kDofs > 0:
-/// the system's DOF count known at compile time (the stage loops unrolled); 0: system.dofs().
+/// MechanicalSystem::force_with does for `system`, whose dofs() and mass() are used; before each
+/// segment between output times, force.ahead(plan, t_out) is told the segment's steps (and may
+/// prepare what depends on t alone; InterfaceForce does nothing). kDofs > 0: the system's DOF
+/// count known at compile time (the stage loops unrolled); 0: system.dofs().
 template <int kDofs, class Force>
 IntegrationStats rk4_loop(const std::string& method, double dt, double max_displacement,
                           const MechanicalSystem& system, double t0, const std::vector<double>& q0,
                           const std::vector<double>& v0, const std::vector<double>& output_times,
-                          const Observer& observe, const Progress& progress, Force&& force) {
+                          const Observer& observe, const Progress& progress, Force& force) {
   const std::vector<double> inv_mass = check_call(method, system, t0, q0, v0, output_times);
   const int n = kDofs > 0 ? kDofs : system.dofs();
   const std::vector<double> bounds = displacement_bounds(system, max_displacement);
@@ -131,29 +167,28 @@ IntegrationStats rk4_loop(const std::string& method, double dt, double max_displ
   double t = t0;
   bool a_current = false;  // whether a holds a(t, q, v) already
   long evaluations = 0;
+  std::vector<Rk4Step> plan;
   for (const double t_out : output_times) {
-    const double segment_start = t;
-    long k = 0;  // steps in this segment: times are segment_start + k dt, not a running sum
-    while (t < t_out) {
-      const bool last = final_step_to(t, dt, t_out);
-      const double h = last ? t_out - t : dt;
+    plan_segment(t, dt, t_out, plan);
+    force.ahead(plan, t_out);
+    for (const Rk4Step& s : plan) {
+      const double h = s.h;
       const double hh = 0.5 * h;
       if (!a_current) {
         acceleration(t, q, v, a);
         ++evaluations;
       }
       wide ? rk4_wide::stage2(r, hh) : rk4_inline::stage2(r, hh);
-      acceleration(t + hh, qs, vs, as);
+      acceleration(s.mid, qs, vs, as);
       wide ? rk4_wide::stage3(r, hh) : rk4_inline::stage3(r, hh);
-      acceleration(t + hh, qs, vs, as);
+      acceleration(s.mid, qs, vs, as);
       wide ? rk4_wide::stage4(r, h) : rk4_inline::stage4(r, h);
-      acceleration(t + h, qs, vs, as);
+      acceleration(s.end, qs, vs, as);
       const double h6 = h / 6.0;
       wide ? rk4_wide::finish(r, h6) : rk4_inline::finish(r, h6);
       evaluations += 3;
       a_current = false;
-      ++k;
-      t = last ? t_out : segment_start + static_cast<double>(k) * dt;
+      t = s.next;
       ++stats.steps;
       check_state(method, t, stats.steps, h, q, v, n, bound);
       report.update(t);
