@@ -1,8 +1,9 @@
-// The statically dispatched RK4 of the 2-DOF model (models/static_rk4.h, issue 31): the same
+// The statically dispatched RK4 of the dynamic models (models/static_rk4.h, issue 31): the same
 // steps and the same bits as make_integrator's RK4 through the MechanicalSystem interface, for
-// every part of the 2-DOF force (waviness on both races, TVDS, ball-size errors, unbalance, a
-// local defect, the scalar contact loop, an exponent other than 3/2), over output times that
-// make it shorten and stretch steps; and it is the path the registry gives the 2-DOF kind.
+// every part of each model's force (waviness on both races, TVDS, ball-size errors, unbalance,
+// a local defect, the scalar contact loop, an exponent other than 3/2, an axial load, cage slip
+// and traction), over output times that make it shorten and stretch steps; and it is the path
+// the registry gives each dynamic kind.
 
 #include <gtest/gtest.h>
 
@@ -16,10 +17,12 @@
 #include "bearing/contact.h"
 #include "bearing/errors.h"
 #include "bearing/hertz.h"
+#include "bearing/models/ball_dofs.h"
 #include "bearing/models/model_registry.h"
 #include "bearing/models/three_dof.h"
 #include "bearing/models/two_dof.h"
 #include "bearing/presets.h"
+#include "bearing/traction.h"
 
 namespace bearing {
 namespace {
@@ -96,25 +99,60 @@ std::vector<double> output_times() {
   return t;
 }
 
-TEST(StaticRk4, SameBitsAsTheInterfaceRk4ForEveryPartOfTheForce) {
+// Each kind's integrator against make_integrator's on the same model, to the bit.
+void expect_same_bits(const Integrator& inlined, const BearingModel& model) {
   IntegratorSettings s;
   s.method = IntegratorMethod::rk4;
   s.dt = 5e-6;
   const std::unique_ptr<Integrator> interface = make_integrator(s);
-  const std::unique_ptr<Integrator> inlined = make_two_dof_rk4(s);
-  EXPECT_EQ(inlined->name(), interface->name());
+  EXPECT_EQ(inlined.name(), interface->name());
   const std::vector<double> times = output_times();
+  const Trace a = integrate(*interface, model, times);
+  const Trace b = integrate(inlined, model, times);
+  ASSERT_EQ(a.values.size(), b.values.size());
+  EXPECT_EQ(std::memcmp(a.values.data(), b.values.data(), a.values.size() * sizeof(double)), 0);
+  EXPECT_EQ(a.stats.steps, b.stats.steps);
+  EXPECT_EQ(a.stats.force_evaluations, b.stats.force_evaluations);
+  // The run moved: the comparison is not of two idle states.
+  const std::size_t row = 1 + 3 * static_cast<std::size_t>(model.dofs());
+  EXPECT_NE(a.values[1], a.values[a.values.size() - row + 1]);
+}
+
+IntegratorSettings rk4_settings() {
+  IntegratorSettings s;
+  s.method = IntegratorMethod::rk4;
+  s.dt = 5e-6;
+  return s;
+}
+
+TEST(StaticRk4, TwoDofSameBitsAsTheInterfaceRk4ForEveryPartOfTheForce) {
+  const std::unique_ptr<Integrator> inlined = make_two_dof_rk4(rk4_settings());
   for (const auto& [name, in] : variants()) {
     SCOPED_TRACE(name);
-    const std::unique_ptr<BearingModel> model = make_two_dof_model(in);
-    const Trace a = integrate(*interface, *model, times);
-    const Trace b = integrate(*inlined, *model, times);
-    ASSERT_EQ(a.values.size(), b.values.size());
-    EXPECT_EQ(std::memcmp(a.values.data(), b.values.data(), a.values.size() * sizeof(double)), 0);
-    EXPECT_EQ(a.stats.steps, b.stats.steps);
-    EXPECT_EQ(a.stats.force_evaluations, b.stats.force_evaluations);
-    // The run moved: the comparison is not of two idle states.
-    EXPECT_NE(a.values[1], a.values[a.values.size() - 7]);
+    expect_same_bits(*inlined, *make_two_dof_model(in));
+  }
+}
+
+TEST(StaticRk4, ThreeDofSameBitsAsTheInterfaceRk4) {
+  const std::unique_ptr<Integrator> inlined = make_three_dof_rk4(rk4_settings());
+  for (auto [name, in] : variants()) {
+    SCOPED_TRACE(name);
+    in.axial_load = 150;
+    expect_same_bits(*inlined, *make_three_dof_model(in));
+  }
+}
+
+TEST(StaticRk4, BallDofSameBitsAsTheInterfaceRk4) {
+  const std::unique_ptr<Integrator> inlined = make_ball_dof_rk4(rk4_settings());
+  for (auto [name, in] : variants()) {
+    if (in.contact.exponent != 1.5) continue;  // the ball-DOF model's contacts are Hertzian
+    SCOPED_TRACE(name);
+    in.cage_slip = 0.02;
+    in.traction = make_traction_curve(0.05, 0.1);
+    in.ball_damping = 350;
+    expect_same_bits(*inlined, *make_ball_dof_model(in));
+    in.axial_load = 150;
+    expect_same_bits(*inlined, *make_ball_dof_model(in));
   }
 }
 
@@ -133,10 +171,12 @@ TEST(StaticRk4, ValidatesItsSettingsAsMakeIntegrator) {
   EXPECT_THROW(make_two_dof_rk4(s), InputError);
 }
 
-TEST(StaticRk4, IsTheTwoDofKindsRk4AndNoOtherKindHasOne) {
+TEST(StaticRk4, EachDynamicKindHasItsOwn) {
   EXPECT_EQ(model_descriptor(ModelKind::two_dof).rk4, &make_two_dof_rk4);
+  EXPECT_EQ(model_descriptor(ModelKind::three_dof).rk4, &make_three_dof_rk4);
+  EXPECT_EQ(model_descriptor(ModelKind::balls).rk4, &make_ball_dof_rk4);
   for (const ModelDescriptor& d : model_registry())
-    if (d.kind != ModelKind::two_dof) EXPECT_EQ(d.rk4, nullptr) << name_of(kModelKinds, d.kind);
+    EXPECT_EQ(d.rk4 != nullptr, d.dynamic != nullptr) << name_of(kModelKinds, d.kind);
 }
 
 }  // namespace

@@ -32,6 +32,7 @@
 #include "frame_force.h"
 #include "groove_geometry.h"
 #include "model_input_checks.h"
+#include "static_rk4.h"
 
 namespace bearing {
 
@@ -510,6 +511,10 @@ double default_ball_inertia(double mass, double diameter) {
 
 std::unique_ptr<BallDofModel> make_ball_dof_model(const ModelInputs& inputs) {
   return std::make_unique<BallDofs>(inputs);
+}
+
+std::unique_ptr<Integrator> make_ball_dof_rk4(const IntegratorSettings& settings) {
+  return std::make_unique<detail::StaticRk4<BallDofs, 0>>(settings);
 }
 
 }  // namespace bearing

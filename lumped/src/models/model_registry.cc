@@ -49,7 +49,9 @@ const std::vector<ModelDescriptor>& model_registry() {
        true,
        true,
        loaded_angle,
-       make_three_dof_model},
+       make_three_dof_model,
+       nullptr,
+       make_three_dof_rk4},
       {ModelKind::balls,
        "ball DOFs, cage slip and traction (seed 004)",
        {"cage", "ball"},
@@ -59,7 +61,9 @@ const std::vector<ModelDescriptor>& model_registry() {
        ball_angle,
        [](const ModelInputs& in) -> std::unique_ptr<BearingModel> {
          return make_ball_dof_model(in);
-       }},
+       },
+       nullptr,
+       make_ball_dof_rk4},
       {ModelKind::quasi_static,
        "equilibrium per output instant, no inertia (seed 000)",
        {},

@@ -22,8 +22,9 @@
 namespace bearing::detail {
 
 /// RK4 (IntegratorSettings::dt, max_displacement) on systems of type Model (a FrameForce model
-/// with kDofs DOFs) only: integrate() throws std::logic_error for any other system (a wiring
-/// fault: such a system belongs to make_integrator's RK4), so a run never falls back unseen.
+/// with kDofs DOFs, or 0: a count known at run time) only: integrate() throws std::logic_error for
+/// any other system (a wiring fault: such a system belongs to make_integrator's RK4), so a run
+/// never falls back unseen.
 template <class Model, int kDofs>
 class StaticRk4 final : public Integrator {
  public:
@@ -37,7 +38,7 @@ class StaticRk4 final : public Integrator {
                              const std::vector<double>& output_times, const Observer& observe,
                              const Progress& progress) const override {
     const auto* model = dynamic_cast<const Model*>(&system);
-    if (!model || model->dofs() != kDofs)
+    if (!model || (kDofs > 0 && model->dofs() != kDofs))
       throw std::logic_error(
           "a model kind's own RK4 was given a system of another kind (make_integrator's RK4 runs "
           "it)");

@@ -34,6 +34,7 @@
 #include "frame_force.h"
 #include "groove_geometry.h"
 #include "model_input_checks.h"
+#include "static_rk4.h"
 
 namespace bearing {
 
@@ -372,6 +373,10 @@ double three_dof_cage_speed(const ModelInputs& inputs) {
 
 std::unique_ptr<BearingModel> make_three_dof_model(const ModelInputs& inputs) {
   return std::make_unique<ThreeDofModel>(inputs);
+}
+
+std::unique_ptr<Integrator> make_three_dof_rk4(const IntegratorSettings& settings) {
+  return std::make_unique<detail::StaticRk4<ThreeDofModel, 3>>(settings);
 }
 
 }  // namespace bearing

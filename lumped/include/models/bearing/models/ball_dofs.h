@@ -74,6 +74,7 @@
 
 #include "bearing/models/bearing_model.h"
 #include "bearing/models/model_inputs.h"
+#include "bearing/solvers/integrator.h"
 
 namespace bearing {
 
@@ -104,5 +105,10 @@ double default_ball_inertia(double mass, double diameter);
 /// 2-DOF and, with an axial load, the 3-DOF model, and cage.slip outside [0, 1), a negative
 /// ball.mass, ball.inertia or ball.damping).
 std::unique_ptr<BallDofModel> make_ball_dof_model(const ModelInputs& inputs);
+
+/// RK4 with the ball-DOF model's force inlined in its stages, as make_two_dof_rk4 (two_dof.h) for
+/// the 2-DOF model: the same bits as make_integrator(settings); it integrates only a model of
+/// make_ball_dof_model (std::logic_error for any other system).
+std::unique_ptr<Integrator> make_ball_dof_rk4(const IntegratorSettings& settings);
 
 }  // namespace bearing

@@ -45,6 +45,7 @@
 
 #include "bearing/models/bearing_model.h"
 #include "bearing/models/model_inputs.h"
+#include "bearing/solvers/integrator.h"
 
 namespace bearing {
 
@@ -76,5 +77,10 @@ double three_dof_cage_speed(const ModelInputs& inputs);
 /// radial load a stable one, by (c)); otherwise Newton's method on the convex contact potential
 /// from the axial state of solve_axial_preload().
 std::unique_ptr<BearingModel> make_three_dof_model(const ModelInputs& inputs);
+
+/// RK4 with the 3-DOF model's force inlined in its stages, as make_two_dof_rk4 (two_dof.h) for
+/// the 2-DOF model: the same bits as make_integrator(settings); it integrates only a model of
+/// make_three_dof_model (std::logic_error for any other system).
+std::unique_ptr<Integrator> make_three_dof_rk4(const IntegratorSettings& settings);
 
 }  // namespace bearing
