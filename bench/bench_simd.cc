@@ -10,13 +10,15 @@
 //                        evaluated every time: the phasor, the rotation, the contacts) at the
 //                        static state; 960 000 calls; simd and scalar contact loops
 //   RK4 integration      make_integrator(rk4, 5 us)->integrate over 1.2 s with the 20 kHz output
-//                        times observed (nothing stored); simd and scalar
+//                        times observed (nothing stored); simd and scalar; and the 2-DOF kind's
+//                        own RK4 (make_two_dof_rk4: the force inlined), what `run` uses
 //   bare scalar loop     the issue's yardstick: RK4 written out by hand for the same 2-DOF case,
 //                        1.2 s at 5 us, the ball angles advanced by rotating them by the phasor of
 //                        ω_c h/2 twice a step, the contact force inline, nothing written
 //   seed 004             issue 7's problems (examples/seed004_6304.toml, 1 s at 5 us, the 1 kHz
 //                        observer): the 2-DOF model, and the ball-DOF model with cage slip 0.02
-//                        and mu_m = 0.01; simd and scalar (target 4: balls <= 1.5x the 2-DOF)
+//                        and mu_m = 0.01; simd and scalar (target 4: balls <= 1.5x the 2-DOF);
+//                        each through its kind's own RK4, as `run` integrates it
 //   bearing-sim run      the whole process (case, simulation, FFT, CSV and JSON into a temporary
 //                        folder), when BEARING_SIM is given; simd and scalar
 
@@ -35,7 +37,9 @@
 
 #include "bearing/case_file.h"
 #include "bearing/contact_loop.h"
+#include "bearing/models/ball_dofs.h"
 #include "bearing/models/bearing_model.h"
+#include "bearing/models/two_dof.h"
 #include "bearing/simulation.h"
 #include "bearing/solvers/integrator.h"
 #include "seed004_case.h"
@@ -85,15 +89,19 @@ double force_loop(const bearing::BearingModel& m, const std::vector<double>& q0)
   return sum;
 }
 
+// RK4 at kDt through `make` (make_integrator: the force behind the MechanicalSystem interface; a
+// kind's own make_*_rk4: its force inlined, what `bearing-sim run` uses).
+using MakeRk4 = std::unique_ptr<bearing::Integrator> (*)(const bearing::IntegratorSettings&);
+
 double rk4_run(const bearing::BearingModel& m, const std::vector<double>& q0,
-               const std::vector<double>& v0, const std::vector<double>& times) {
+               const std::vector<double>& v0, const std::vector<double>& times,
+               MakeRk4 make = &bearing::make_integrator) {
   bearing::IntegratorSettings s;
   s.method = bearing::IntegratorMethod::rk4;
   s.dt = kDt;
   double sum = 0;
-  bearing::make_integrator(s)->integrate(
-      m, 0.0, q0, v0, times,
-      [&](double, const double*, const double*, const double* a) { sum += a[1]; });
+  make(s)->integrate(m, 0.0, q0, v0, times,
+                     [&](double, const double*, const double*, const double* a) { sum += a[1]; });
   return sum;
 }
 
@@ -201,9 +209,11 @@ void print_table(const std::vector<Row>& rows, int rounds, bool with_runs) {
       ratio(0, 1), ratio(1, 0), ratio(2, 3), ratio(2, 4), ratio(3, 4));
   std::printf("; seed 004 balls/2-DOF: simd %.3f, scalar %.3f; balls simd/scalar %.3f", ratio(7, 5),
               ratio(8, 6), ratio(7, 8));
+  std::printf("; RK4 2-DOF kind's own (run's path) / bare loop %.3f, / RK4 simd %.3f", ratio(9, 4),
+              ratio(9, 2));
   if (with_runs)
-    std::printf("; run simd / bare loop %.3f; run scalar / bare loop %.3f", ratio(9, 4),
-                ratio(10, 4));
+    std::printf("; run simd / bare loop %.3f; run scalar / bare loop %.3f", ratio(10, 4),
+                ratio(11, 4));
   std::printf("\n");
 }
 
@@ -280,23 +290,36 @@ int main(int argc, char** argv) {
        {}},
       {"seed 004, 2-DOF, simd",
        kSeed004Evals,
-       [&] { g_sink = g_sink + rk4_run(*s4_two.m, s4_two.q0, s4_two.v0, sparse); },
+       [&] {
+         g_sink =
+             g_sink + rk4_run(*s4_two.m, s4_two.q0, s4_two.v0, sparse, &bearing::make_two_dof_rk4);
+       },
        {}},
       {"seed 004, 2-DOF, scalar",
        kSeed004Evals,
        [&] {
-         g_sink = g_sink + rk4_run(*s4_two_scalar.m, s4_two_scalar.q0, s4_two_scalar.v0, sparse);
+         g_sink = g_sink + rk4_run(*s4_two_scalar.m, s4_two_scalar.q0, s4_two_scalar.v0, sparse,
+                                   &bearing::make_two_dof_rk4);
        },
        {}},
       {"seed 004, balls (slip 0.02, mu_m 0.01), simd",
        kSeed004Evals,
-       [&] { g_sink = g_sink + rk4_run(*s4_balls.m, s4_balls.q0, s4_balls.v0, sparse); },
+       [&] {
+         g_sink = g_sink + rk4_run(*s4_balls.m, s4_balls.q0, s4_balls.v0, sparse,
+                                   &bearing::make_ball_dof_rk4);
+       },
        {}},
       {"seed 004, balls (slip 0.02, mu_m 0.01), scalar",
        kSeed004Evals,
        [&] {
-         g_sink =
-             g_sink + rk4_run(*s4_balls_scalar.m, s4_balls_scalar.q0, s4_balls_scalar.v0, sparse);
+         g_sink = g_sink + rk4_run(*s4_balls_scalar.m, s4_balls_scalar.q0, s4_balls_scalar.v0,
+                                   sparse, &bearing::make_ball_dof_rk4);
+       },
+       {}},
+      {"RK4 integration, simd, the 2-DOF kind's own (make_two_dof_rk4)",
+       kEvals,
+       [&] {
+         g_sink = g_sink + rk4_run(*simd.m, simd.q0, simd.v0, times, &bearing::make_two_dof_rk4);
        },
        {}},
   };
