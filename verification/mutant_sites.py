@@ -33,10 +33,11 @@ PHYSICS_FILES = [
     "lumped/src/models/frame_force.h", "lumped/src/models/race_excitation.h",
     "lumped/src/models/race_stiffness.h", "lumped/src/models/groove_geometry.h",
     "lumped/src/models/defect_excitation.h", "lumped/src/models/phasor.h",
-    "lumped/src/models/curvature_compliance_table.h",
+    "lumped/src/models/curvature_compliance_table.h", "lumped/src/models/static_rk4.h",
     # integrators
     "lumped/src/solvers/rk4.cc", "lumped/src/solvers/rk4_wide.cc",
-    "lumped/src/solvers/rk4_stages.h", "lumped/src/solvers/newmark.cc",
+    "lumped/include/solvers/bearing/solvers/rk4_loop.h",
+    "lumped/include/solvers/bearing/solvers/fixed_step.h", "lumped/src/solvers/newmark.cc",
     "lumped/src/solvers/bdf.cc", "lumped/src/solvers/gsl_adaptive.cc",
     "lumped/src/solvers/event_adaptive.cc", "lumped/src/solvers/step_control.h",
     "lumped/src/solvers/integrator.cc",
