@@ -16,8 +16,8 @@
 #include "bearing/record_output.h"
 #include "bearing/records/record_formats.h"
 #include "bearing/units.h"
-#ifdef BEARING_WITH_RECORDS_HDF5
-#include "bearing/records/hdf5_record_formats.h"
+#ifdef BEARING_WITH_RECORDS_FULL
+#include "bearing/records/full_record_formats.h"
 #endif
 
 namespace bearing_app {
@@ -27,15 +27,16 @@ namespace {
 using bearing::InputError;
 
 std::vector<bearing::RecordFormat> record_formats() {
-#ifdef BEARING_WITH_RECORDS_HDF5
-  return bearing::with_formats(bearing::base_record_formats(), bearing::hdf5_record_formats());
+#ifdef BEARING_WITH_RECORDS_FULL
+  return bearing::with_formats(bearing::base_record_formats(), bearing::full_record_formats());
 #else
   return bearing::base_record_formats();
 #endif
 }
 
 // Whether bearing-sim-full reads this extension where this program does not (full_program.h):
-// BEARING_FULL_READS lists the extensions of the readers that load HDF5 in this build.
+// BEARING_FULL_READS lists the extensions of bearing_records_full's readers in this build (those
+// that load libsndfile, matio or HDF5).
 bool read_by_full_program(const bearing::RecordFormat& f) {
 #ifdef BEARING_FULL_READS
   const std::string list = std::string(" ") + BEARING_FULL_READS + " ";

@@ -1,11 +1,12 @@
 #pragma once
-// The boundary of a plain bearing-sim (issue 31). bearing-sim links neither MPI nor HDF5, so
-// `run`, `info`, `presets`, a sweep on threads and the analysis of a CSV, NPY or WAV record start
-// without loading them. What needs them — any command under mpirun (or srun), `sweep --save`,
-// `sweep --resume` (its spool may hold a --save), merging parts that have sweep.h5, reading a .mat
-// or .h5 record — is handed to bearing-sim-full, the same command line built with MPI and HDF5
-// beside it: exec, so the process (and under mpirun its rank) stays the same, with the same
-// arguments. The user's command lines do not change.
+// The boundary of a plain bearing-sim (issue 31). bearing-sim links neither MPI, HDF5 nor
+// libsndfile, so `run`, `info`, `presets`, a sweep on threads and the analysis of a CSV or NPY
+// record start without loading them. What needs them — any command under mpirun (or srun),
+// `sweep --save`, `sweep --resume` (its spool may hold a --save), merging parts that have
+// sweep.h5, reading a .wav, .mat or .h5 record — is handed to bearing-sim-full, the same command
+// line built with MPI, HDF5, matio and libsndfile beside it: exec, so the process (and under
+// mpirun its rank) stays the same, with the same arguments. The user's command lines do not
+// change.
 
 #include <string>
 
@@ -18,7 +19,7 @@ struct CommandLine {
 };
 
 /// Whether this program hands work to bearing-sim-full (a plain bearing-sim of a build that has
-/// MPI or HDF5), or is the program that does everything itself.
+/// MPI, HDF5, matio or libsndfile), or is the program that does everything itself.
 bool hands_over();
 
 /// Whether a parallel launcher (mpirun, srun) started this process: its variables are set.

@@ -1,5 +1,5 @@
 // record_dump: reads one measured record with the library's readers (bearing_records, and
-// bearing_records_hdf5 when built) and shows what it read, for the Python test check_readers.py,
+// bearing_records_full when built) and shows what it read, for the Python test check_readers.py,
 // which writes the files with other tools (scipy, h5py, wave, numpy, csv).
 //
 //   record_dump FILE [--channel NAME] [--rate HZ] [--unit UNIT] [--scale S] [--dataset PATH]
@@ -23,16 +23,16 @@
 
 #include "bearing/errors.h"
 #include "bearing/records/record_formats.h"
-#ifdef BEARING_RECORDS_HDF5
-#include "bearing/records/hdf5_record_formats.h"
+#ifdef BEARING_RECORDS_FULL
+#include "bearing/records/full_record_formats.h"
 #endif
 
 namespace {
 
 std::vector<bearing::RecordFormat> formats() {
   std::vector<bearing::RecordFormat> f = bearing::base_record_formats();
-#ifdef BEARING_RECORDS_HDF5
-  f = bearing::with_formats(f, bearing::hdf5_record_formats());
+#ifdef BEARING_RECORDS_FULL
+  f = bearing::with_formats(f, bearing::full_record_formats());
 #endif
   return f;
 }

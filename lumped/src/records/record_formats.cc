@@ -6,24 +6,34 @@
 #include "bearing/records/channel_choice.h"
 #include "bearing/records/csv_record.h"
 #include "bearing/records/npy_record.h"
-#ifdef BEARING_RECORDS_WITH_SNDFILE
-#include "bearing/records/wav_record.h"
-#endif
 
 namespace bearing {
 
 namespace {
 
-// What a program without bearing_records_hdf5's rows is told about .mat and .h5: whether this
-// build has the library (the program did not merge its rows) or not (a package was missing).
-#ifdef BEARING_RECORDS_HDF5_BUILT
-#define BEARING_HDF5_MISSING(ext)                   \
+// What a program without bearing_records_full's rows is told about .wav, .mat and .h5: that
+// the library reads it (the program did not merge its rows; BEARING_RECORDS_FULL_<format>) or
+// which package was missing at build time.
+#define BEARING_IN_FULL(ext)                        \
   "this program does not read " ext                 \
-  " (its reader is in bearing_records_hdf5: merge " \
-  "hdf5_record_formats() into the formats)"
+  " (its reader is in bearing_records_full: merge " \
+  "full_record_formats() into the formats)"
+#ifdef BEARING_RECORDS_FULL_WAV
+#define BEARING_WAV_MISSING BEARING_IN_FULL(".wav")
 #else
-#define BEARING_HDF5_MISSING(ext) \
-  "this build cannot read " ext ": neither libmatio-dev nor libhdf5-dev was found at build time"
+#define BEARING_WAV_MISSING \
+  "this build cannot read .wav: libsndfile1-dev was not found at build time"
+#endif
+#ifdef BEARING_RECORDS_FULL_MAT
+#define BEARING_MAT_MISSING BEARING_IN_FULL(".mat")
+#else
+#define BEARING_MAT_MISSING "this build cannot read .mat: libmatio-dev was not found at build time"
+#endif
+#ifdef BEARING_RECORDS_FULL_H5
+#define BEARING_H5_MISSING(ext) BEARING_IN_FULL(ext)
+#else
+#define BEARING_H5_MISSING(ext) \
+  "this build cannot read " ext ": libhdf5-dev was not found at build time"
 #endif
 
 std::string lower(std::string s) {
@@ -39,16 +49,10 @@ std::vector<RecordFormat> base_record_formats() {
        read_csv_record, "", false},
       {".npy", "NumPy array: 1-D float32/float64, or 2-D with a channel per column",
        read_npy_record, "", false},
-#ifdef BEARING_RECORDS_WITH_SNDFILE
-      {".wav", "WAV (libsndfile): integer PCM as fractions of full scale, float as stored",
-       read_wav_record, "", false},
-#else
-      {".wav", "WAV (libsndfile)", nullptr,
-       "this build cannot read .wav: libsndfile1-dev was not found at build time", false},
-#endif
-      {".mat", "MATLAB 5, 7 and 7.3 (libmatio)", nullptr, BEARING_HDF5_MISSING(".mat"), false},
-      {".h5", "HDF5 (--dataset)", nullptr, BEARING_HDF5_MISSING(".h5"), true},
-      {".hdf5", "HDF5 (--dataset)", nullptr, BEARING_HDF5_MISSING(".hdf5"), true},
+      {".wav", "WAV (libsndfile)", nullptr, BEARING_WAV_MISSING, false},
+      {".mat", "MATLAB 5, 7 and 7.3 (libmatio)", nullptr, BEARING_MAT_MISSING, false},
+      {".h5", "HDF5 (--dataset)", nullptr, BEARING_H5_MISSING(".h5"), true},
+      {".hdf5", "HDF5 (--dataset)", nullptr, BEARING_H5_MISSING(".hdf5"), true},
   };
   return rows;
 }

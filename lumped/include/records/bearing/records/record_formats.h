@@ -1,13 +1,13 @@
 #pragma once
 // The formats a measured record is read from: one row per file extension, with its reader. The
-// readers that need matio or HDF5 live in the optional library bearing_records_hdf5
-// (hdf5_record_formats.h), so a program that reads no such file loads neither; this library's
-// rows for .mat and .h5 say how to get them. read_record() picks the row by extension, runs its
-// reader and finish_record().
+// readers that load large libraries (libsndfile and its codecs, matio, HDF5) live in the optional
+// library bearing_records_full (full_record_formats.h), so a program that reads no such file loads
+// none of them; this library's rows for .wav, .mat and .h5 say how to get them. read_record()
+// picks the row by extension, runs its reader and finish_record().
 //
 // A program that reads records:
 //   std::vector<RecordFormat> formats = base_record_formats();
-//   formats = with_formats(formats, hdf5_record_formats());   // if it links bearing_records_hdf5
+//   formats = with_formats(formats, full_record_formats());   // if it links bearing_records_full
 //   MeasuredRecord r = read_record("130.mat", options, formats);
 
 #include <filesystem>
@@ -33,8 +33,8 @@ struct RecordFormat {
   bool takes_dataset = false;    ///< RecordOptions::dataset applies (.h5)
 };
 
-/// The rows of this library: .csv and .npy (always), .wav (libsndfile, when found at build time),
-/// and .mat, .h5, .hdf5 as rows without a reader, saying which library or package reads them.
+/// The rows of this library: .csv and .npy with their readers, and .wav, .mat, .h5, .hdf5 as rows
+/// without a reader, saying which library reads them or which package was missing at build time.
 std::vector<RecordFormat> base_record_formats();
 
 /// `base` with each row of `extra` in place of the row of the same extension (or appended).

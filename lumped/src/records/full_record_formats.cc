@@ -1,5 +1,8 @@
-#include "bearing/records/hdf5_record_formats.h"
+#include "bearing/records/full_record_formats.h"
 
+#ifdef BEARING_RECORDS_WITH_SNDFILE
+#include "bearing/records/wav_record.h"
+#endif
 #ifdef BEARING_RECORDS_WITH_MATIO
 #include "bearing/records/mat_record.h"
 #endif
@@ -9,8 +12,15 @@
 
 namespace bearing {
 
-std::vector<RecordFormat> hdf5_record_formats() {
+std::vector<RecordFormat> full_record_formats() {
   return {
+#ifdef BEARING_RECORDS_WITH_SNDFILE
+      {".wav", "WAV (libsndfile): integer PCM as fractions of full scale, float as stored",
+       read_wav_record, "", false},
+#else
+      {".wav", "WAV (libsndfile)", nullptr,
+       "this build cannot read .wav: libsndfile1-dev was not found at build time", false},
+#endif
 #ifdef BEARING_RECORDS_WITH_MATIO
       {".mat", "MATLAB 5, 7 and 7.3 (libmatio): the numeric vectors are channels", read_mat_record,
        "", false},
