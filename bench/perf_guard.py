@@ -3,9 +3,10 @@
 
     perf_guard.py --repo DIR --ref NAME --ref-build DIR --head-build DIR [--rounds N]
 
-Each row is one command of bearing-sim (or the Python import) run as a user runs it, pinned to
-core 0 (sched_setaffinity before exec, so no extra process is timed), its output discarded; wall
-time from fork to exit. One warm-up round, then N rounds, each timing REF then HEAD for every row.
+Each row is one command of bearing-sim (or the Python import) run as a user runs it, on core 0
+(the guard pins itself there and its children inherit it), its output discarded; wall time from
+spawn to exit. The spawn is vfork + exec (no Python code runs in the child), whose own cost the
+table states as the time of /bin/true: ~0.5 ms, which a millisecond row carries. One warm-up round, then N rounds, each timing REF then HEAD for every row.
 Prints a Markdown table: median and min–max of each build, HEAD/REF of the medians and the range
 of the per-round ratios. A row a build cannot run (an older commit without the option or the
 module) is shown as "—" with the reason below the table. Only the standard library."""
@@ -56,14 +57,9 @@ def command(build, argv, env):
     return argv, e
 
 
-def pin():
-    os.sched_setaffinity(0, {0})
-
-
 def time_once(argv, env):
     start = time.perf_counter()
-    p = subprocess.run(argv, env=env, stdout=subprocess.DEVNULL, stderr=subprocess.PIPE,
-                       preexec_fn=pin)
+    p = subprocess.run(argv, env=env, stdout=subprocess.DEVNULL, stderr=subprocess.PIPE)
     elapsed = time.perf_counter() - start
     if p.returncode != 0:
         return None, p.stderr.decode(errors="replace").strip().splitlines()[-1:] or ["exit %d"
@@ -97,6 +93,11 @@ def main():
         print("perf_guard.py: --rounds = %d: too few; allowed: at least 3" % o.rounds,
               file=sys.stderr)
         return 2
+    os.sched_setaffinity(0, {0})  # the children inherit it
+    spawn = []
+    for _ in range(21):
+        ms, _ = time_once(["/bin/true"], dict(os.environ))
+        spawn.append(ms)
     work = tempfile.mkdtemp(prefix="perf-guard-")
     try:
         table = rows(o.repo, work)
@@ -122,8 +123,9 @@ def main():
     finally:
         shutil.rmtree(work, ignore_errors=True)
     print("Whole processes, pinned to one core, %d interleaved rounds after a warm-up; "
-          "milliseconds, median (min–max). REF = %s (%s), HEAD = %s." % (
-              o.rounds, o.ref, o.ref_build, o.head_build))
+          "milliseconds, median (min–max). REF = %s (%s), HEAD = %s. The spawn itself "
+          "(/bin/true) takes %.2f ms (median of 21)." % (
+              o.rounds, o.ref, o.ref_build, o.head_build, statistics.median(spawn)))
     print()
     print("| measurement | REF %s [ms] | HEAD [ms] | HEAD / REF (range over the rounds) |" % o.ref)
     print("|---|---:|---:|---:|")

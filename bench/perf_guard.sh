@@ -6,8 +6,8 @@
 #                                        checkout's build folder (default build/)
 #
 #   --version, the default run, the ball model run, a 4-microphone run, a 100-case sweep
-#   (--jobs 1) and the Python module's import, each pinned to one core (taskset), in interleaved
-#   rounds (REF and HEAD one after another, round after round, so that load from elsewhere
+#   (--jobs 1) and the Python module's import, each on one core (the guard pins itself), in
+#   interleaved rounds (REF and HEAD one after another, round after round, so that load from elsewhere
 #   spreads over both), ROUNDS of them (default 11) after a warm-up. Prints each as the median
 #   and the spread (min–max) of both, and HEAD/REF as the ratio of the medians with the range of
 #   the ratios of the rounds; also the shared libraries each bearing-sim loads.
