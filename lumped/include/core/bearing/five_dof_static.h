@@ -1,0 +1,105 @@
+#pragma once
+// The 5-DOF static solution of a deep-groove ball bearing's inner ring and its tangent stiffness
+// (issue 32, first part: no centrifugal ball load yet, so each ball's inner and outer contact
+// angles are equal, the quasi-static state at zero speed).
+//
+// Coordinates. The outer ring is fixed; the inner ring moves by q = (δx, δy, δz, γx, γy) [m, m, m,
+// rad, rad] from the concentric, axially centred position, and carries the load vector
+// F = (Fx, Fy, Fz, Mx, My) [N, N, N, N m, N m], the work-conjugate of q (Mx turns about +x, as γx).
+//
+// Geometry (docs/model.md §1, three_dof.h). The groove curvature centres of one ball are
+// A₀ = (f_i + f_o − 1) D apart when it touches both races. In the centred position they lie at
+// the same axial position, radially u = A₀ − P_d/2 apart (P_d the diametral clearance): each ball
+// has a gap P_d/2. The inner groove centre lies on a circle of radius
+//     ℜ_i = d_m/2 + (f_i − 1/2) D − P_d/4     (the inner groove bottom d_i/2 = d_m/2 − D/2 − P_d/4,
+//                                              plus the groove radius f_i D).
+// Moving the inner ring by q moves ball j's inner groove centre, at ψ_j = φ₀ + 2πj/Z, radially by
+// r_j = δx cos ψ_j + δy sin ψ_j and axially by s_j = δz + ℜ_i (γx sin ψ_j − γy cos ψ_j) (a rotation
+// γ × p of the point p = ℜ_i (cos ψ_j, sin ψ_j, 0); its radial part is of second order in γ and
+// left out, as Jones and Harris do). So, with a_j = (u + r_j, s_j) = a₀ + B_j q,
+//     B_j = [ cos ψ_j  sin ψ_j  0       0             0          ]
+//           [ 0        0        1   ℜ_i sin ψ_j  −ℜ_i cos ψ_j ],
+//     L_j = |a_j|,   δ_j = L_j − A₀,   Q_j = K [δ_j]_+^n,
+// and the ball's contact angle follows the deflection: tan α_j = s_j/(u + r_j) (negative: the
+// other shoulder). The contact energy V(q) = Σ_j K/(n+1) [δ_j]_+^{n+1} is convex in q (a norm of
+// an affine map, through a convex increasing function), and in equilibrium
+//     F = ∇V = Σ_j Q_j B_jᵀ e_j,   e_j = (cos α_j, sin α_j),
+// i.e. Fx = Σ Q cos α cos ψ, Fz = Σ Q sin α, Mx = Σ Q sin α ℜ_i sin ψ, My = −Σ Q sin α ℜ_i cos ψ.
+// The tangent stiffness is the Hessian (symmetric by construction):
+//     K = ∂F/∂q = Σ_j n K δ_j^{n−1} g_j g_jᵀ + (Q_j / L_j) h_j h_jᵀ,
+//     g_j = B_jᵀ e_j,   h_j = B_jᵀ t_j,   t_j = (−sin α_j, cos α_j),
+// the first term the contact's own stiffness along its line, the second the turn of the contact
+// line (the contact angle's change) under its load.
+//
+// Reductions (tests/lumped/test_five_dof_static.cc checks each): a radial load alone gives
+// δz = γ = 0 and the 2-DOF static solution (solve_static_load with γ = P_d/2); a radial and an
+// axial load with the tilts held at 0 give the 3-DOF model's static state (three_dof.h, whose z
+// is δz − w₀; free to tilt, the ring does tilt, as the loaded side carries more of the axial
+// load); a pure axial load gives Harris's F_z = Z K [A₀ (cos α₀ / cos α − 1)]^n sin α.
+//
+// Approximations: rigid rings, K the constant of the case (the curvatures at the free contact
+// angle, as the 3-DOF model), no centrifugal load (to come: outer-race control) and no
+// gyroscopic moment.
+
+#include <array>
+#include <vector>
+
+#include <Eigen/Dense>
+
+#include "bearing/bearing.h"
+#include "bearing/contact.h"
+
+namespace bearing {
+
+using Vector5 = Eigen::Matrix<double, 5, 1>;
+using Matrix5 = Eigen::Matrix<double, 5, 5>;
+
+/// What the 5-DOF solution needs of a bearing.
+struct FiveDofBearing {
+  int balls = 0;             ///< Z
+  double K = 0;              ///< series constant of one ball [N/m^n]
+  double exponent = 1.5;     ///< n [-]
+  double A0 = 0;             ///< groove-centre distance (f_i + f_o − 1) D [m]
+  double clearance = 0;      ///< P_d [m]
+  double groove_radius = 0;  ///< ℜ_i, radius of the inner groove centres [m]
+  double phase = 0;          ///< φ₀, angle of ball 0 from +x toward +y [rad]
+};
+
+/// The FiveDofBearing of `b` with the contact law `c` and ball 0 at `phase` [rad]. Throws
+/// InputError naming bearing.clearance when P_d ≥ 2 A₀ (no contact angle below 90°).
+FiveDofBearing five_dof_bearing(const Bearing& b, const ContactConstants& c, double phase = 0);
+
+/// The ball set at one inner-ring displacement q.
+struct FiveDofPoint {
+  Vector5 force = Vector5::Zero();      ///< ∇V: the load the balls hold the ring in [N, N m]
+  Matrix5 stiffness = Matrix5::Zero();  ///< ∂force/∂q [N/m, N, N/rad, N m/rad]
+  double energy = 0;                    ///< V [J]
+  std::vector<double> ball_angles;      ///< ψ_j [rad]
+  std::vector<double> approaches;       ///< δ_j, negative: the gap left [m]
+  std::vector<double> ball_loads;       ///< Q_j ≥ 0 [N]
+  std::vector<double> contact_angles;   ///< α_j [rad]
+};
+
+/// Force, stiffness and the balls at displacement q = (δx, δy, δz, γx, γy) [m, rad].
+FiveDofPoint five_dof_point(const FiveDofBearing& b, const Vector5& q);
+
+struct FiveDofSolution {
+  Vector5 displacement = Vector5::Zero();  ///< q in equilibrium with the load [m, rad]
+  FiveDofPoint at;                         ///< the ball set there
+  double residual = 0;  ///< |force − F| / |F| with moments over ℜ_i [-] (0 for F = 0)
+  int iterations = 0;
+};
+
+/// Which of the five DOFs are held at 0 (e.g. the tilts of a ring whose shaft cannot tilt: the
+/// 3-DOF model); their load components are then reactions (FiveDofPoint::force there).
+using HeldDofs = std::array<bool, 5>;
+
+/// The displacement that carries `load` = (Fx, Fy, Fz, Mx, My) [N, N m] in the DOFs not `held`:
+/// the minimum of V(q) − F·q over them, by Levenberg-damped Newton from the centred position (V
+/// is convex, so it converges from there). A zero load gives q = 0 (the centred position, in the
+/// dead band of the clearance). Throws SolverError if the balance is not reached to 1e-10 of
+/// |F| (moments over ℜ_i).
+FiveDofSolution solve_five_dof(const FiveDofBearing& b, const Vector5& load,
+                               const HeldDofs& held = {});
+
+}  // namespace bearing
