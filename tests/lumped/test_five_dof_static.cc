@@ -220,6 +220,98 @@ TEST(FiveDofStatic, TheTiltArmIsTheInnerGrooveCentresRadius) {
   EXPECT_NEAR(b.groove_radius, 0.5 * d_i + brg.inner_conformity * brg.ball_diameter, 1e-15);
 }
 
+// --- At speed: each ball its own centre (races apart) -------------------------------------
+
+// The two-contact form at rest (F_c = 0) is the one-contact form with the series constant: the
+// ball lies on the line of centres and both contacts carry the same load. Equal to the Newton
+// tolerances (1e-13 of the load per ball, 1e-12 of |F| for the ring): 1e-8 relative.
+TEST(FiveDofStatic, TwoContactsAtRestAreTheSeriesLaw) {
+  for (const std::string name : {"6308", "6205", "6304"}) {
+    const FiveDofBearing one = of_preset(name);
+    FiveDofBearing two = one;
+    two.races_apart = true;
+    for (const Vector5& F : loads(one)) {
+      SCOPED_TRACE(name);
+      const FiveDofSolution a = solve_five_dof(one, F), b = solve_five_dof(two, F);
+      const double qs = a.displacement.head<3>().norm();
+      for (int i = 0; i < 5; ++i)
+        EXPECT_NEAR(b.displacement(i), a.displacement(i),
+                    1e-8 * (i < 3 ? qs : qs / one.groove_radius));
+      const double ks = a.at.stiffness.cwiseAbs().maxCoeff();
+      EXPECT_LE((b.at.stiffness - a.at.stiffness).cwiseAbs().maxCoeff(), 1e-8 * ks);
+      for (int j = 0; j < one.balls; ++j) {
+        EXPECT_NEAR(b.at.ball_loads[j], a.at.ball_loads[j], 1e-8 * F.head<3>().norm());
+        EXPECT_NEAR(b.at.outer_loads[j], a.at.ball_loads[j], 1e-8 * F.head<3>().norm());
+      }
+    }
+  }
+}
+
+FiveDofBearing at_speed(const std::string& name, double rpm) {
+  const Bearing brg = preset(name);
+  const double Fc = ball_centrifugal_load(brg, rpm * 2 * 3.14159265358979323846 / 60);
+  return five_dof_bearing(brg, contact_constants(brg, *make_exact_hertz()), 0.1, Fc);
+}
+
+// F_c = m_b ω_c² d_m/2, by hand for the 6308 at 12 000 rpm: m_b = ρ π D³/6, ω_c from the
+// pitch-line kinematics ω_c = ω_i (1 − D/d_m)/2 at a zero contact angle.
+TEST(FiveDofStatic, CentrifugalLoadByHand) {
+  const Bearing brg = preset("6308");
+  const double wi = 12000 * 2 * 3.14159265358979323846 / 60;
+  const double wc = 0.5 * wi * (1 - brg.ball_diameter / brg.pitch_diameter);
+  const double m = brg.ball.density * 3.14159265358979323846 * std::pow(brg.ball_diameter, 3) / 6;
+  EXPECT_NEAR(ball_centrifugal_load(brg, wi), m * wc * wc * 0.5 * brg.pitch_diameter,
+              1e-12 * m * wc * wc * brg.pitch_diameter);
+}
+
+// The condensed stiffness at speed (the two contacts in series through the ball's own
+// equilibrium) against central differences of the ring force, as at rest.
+TEST(FiveDofStatic, StiffnessAtSpeedIsTheCentralDifferenceOfTheForce) {
+  for (const std::string name : {"6308", "6205", "6304"}) {
+    const FiveDofBearing b = at_speed(name, 15000);
+    ASSERT_GT(b.centrifugal, 0);
+    for (const Vector5& F : loads(b)) {
+      SCOPED_TRACE(name);
+      const FiveDofSolution s = solve_five_dof(b, F);
+      double dmax = 0;
+      for (double d : s.at.approaches) dmax = std::max(dmax, d);
+      const double h = 1e-4 * dmax;
+      Matrix5 numeric;
+      for (int i = 0; i < 5; ++i) {
+        Vector5 dq = Vector5::Zero();
+        dq(i) = i < 3 ? h : h / b.groove_radius;
+        numeric.col(i) = (five_dof_point(b, s.displacement + dq).force -
+                          five_dof_point(b, s.displacement - dq).force) /
+                         (2 * dq(i));
+      }
+      const double scale = s.at.stiffness.cwiseAbs().maxCoeff();
+      EXPECT_LE((numeric - s.at.stiffness).cwiseAbs().maxCoeff(), 1e-6 * scale);
+      EXPECT_EQ((s.at.stiffness - s.at.stiffness.transpose()).cwiseAbs().maxCoeff(), 0.0);
+    }
+  }
+}
+
+// Jones's ball equilibrium from the reported loads and angles: Q_o cos α_o − Q_i cos α_i = F_c
+// and Q_o sin α_o = Q_i sin α_i, for every ball; under an axial load the centrifugal load turns
+// the outer contact toward the radial and the inner one away from it (α_o < α_i), and the
+// radial stiffness differs from the one at rest.
+TEST(FiveDofStatic, EachBallAtSpeedIsInJonessEquilibrium) {
+  const FiveDofBearing b = at_speed("6308", 15000);
+  Vector5 F;
+  F << 100, -300, 500, 0, 0;
+  const FiveDofSolution s = solve_five_dof(b, F);
+  for (int j = 0; j < b.balls; ++j) {
+    const double Qi = s.at.ball_loads[j], Qo = s.at.outer_loads[j];
+    const double ai = s.at.contact_angles[j], ao = s.at.outer_contact_angles[j];
+    EXPECT_NEAR(Qo * std::cos(ao) - Qi * std::cos(ai), b.centrifugal, 1e-9 * (Qo + b.centrifugal));
+    EXPECT_NEAR(Qo * std::sin(ao), Qi * std::sin(ai), 1e-9 * (Qo + b.centrifugal));
+    if (Qi > 0) EXPECT_LT(ao, ai);
+  }
+  const FiveDofBearing rest = of_preset("6308");
+  const FiveDofSolution r = solve_five_dof(rest, F);
+  EXPECT_GT(std::abs(s.at.stiffness(0, 0) - r.at.stiffness(0, 0)), 1e-3 * r.at.stiffness(0, 0));
+}
+
 TEST(FiveDofStatic, NoLoadIsTheCentredPosition) {
   const FiveDofSolution s = solve_five_dof(of_preset("6308"), Vector5::Zero());
   EXPECT_EQ(s.displacement, Vector5::Zero());

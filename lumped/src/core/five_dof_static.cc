@@ -7,6 +7,7 @@
 
 #include "bearing/constants.h"
 #include "bearing/errors.h"
+#include "bearing/kinematics.h"
 #include "bearing/numerics/newton.h"
 #include "bearing/units.h"
 
@@ -22,9 +23,85 @@ Vector5 scales(const FiveDofBearing& b) {
   return s;
 }
 
+// One contact's load Q = K δ^n and its 2×2 Hessian n K δ^{n−1} e eᵀ + (Q/L) t tᵀ along the
+// line of length L and direction e (five_dof_static.h); nothing where δ ≤ 0.
+struct Contact {
+  double delta = 0, Q = 0;
+  Eigen::Vector2d e = Eigen::Vector2d::Zero();
+  Eigen::Matrix2d H = Eigen::Matrix2d::Zero();
+};
+Contact contact(const Eigen::Vector2d& line, double offset, double K, double n) {
+  Contact c;
+  const double L = line.norm();
+  c.delta = L - offset;
+  c.e = line / L;
+  if (c.delta <= 0) return c;
+  c.Q = K * std::pow(c.delta, n);
+  const Eigen::Vector2d t(-c.e(1), c.e(0));
+  c.H = (n * c.Q / c.delta) * c.e * c.e.transpose() + (c.Q / L) * t * t.transpose();
+  return c;
+}
+
+// One ball between the races at speed, its inner groove centre at `a` from the outer one (radial,
+// axial): the ball centre p where its contacts and F_c balance, and what the ring feels.
+struct BallAtSpeed {
+  Contact inner, outer;
+  double energy = 0;
+  Eigen::Matrix2d ring_hessian = Eigen::Matrix2d::Zero();  // H_i − H_i (H_o + H_i)⁻¹ H_i
+};
+BallAtSpeed ball_at_speed(const FiveDofBearing& b, const Eigen::Vector2d& a) {
+  const double ni = b.inner_exponent, no = b.outer_exponent, Fc = b.centrifugal;
+  const Eigen::Vector2d radial(1, 0);
+  BallAtSpeed ball;
+  const double squeeze = a.norm() - b.inner_offset - b.outer_offset;
+  if (Fc == 0 && squeeze <= 0) return ball;  // a free ball between open contacts
+  // Start on the line of centres, the squeeze shared as two contacts in series, or resting on
+  // the outer race under F_c alone.
+  Eigen::Vector2d p = (b.outer_offset + std::pow(Fc / b.outer_K, 1 / no)) * radial;
+  if (squeeze > 0)
+    p = a.normalized() * (b.outer_offset + squeeze / (1 + std::pow(b.outer_K / b.inner_K, 1 / no)));
+  const auto evaluate = [&](const Eigen::Vector2d& at) {
+    const Contact o = contact(at, b.outer_offset, b.outer_K, no);
+    const Contact i = contact(a - at, b.inner_offset, b.inner_K, ni);
+    numerics::PotentialPoint<2> pt;
+    pt.value = o.Q * std::max(o.delta, 0.0) / (no + 1) + i.Q * std::max(i.delta, 0.0) / (ni + 1) -
+               Fc * at(0);
+    pt.gradient = o.Q * o.e - i.Q * i.e - Fc * radial;
+    pt.hessian = o.H + i.H;
+    return pt;
+  };
+  numerics::PotentialPoint<2> at = evaluate(p);
+  numerics::LevenbergOptions opt;
+  const double scale = std::max(Fc, b.inner_K * std::pow(std::max(squeeze, 0.0), ni));
+  opt.tolerance = 1e-13 * scale;
+  opt.stiffness = std::max(at.hessian.trace(), 1e-300);
+  opt.max_iterations = 200;  // a convex 2-D problem: a few Newton steps from the start above
+  const int iterations = numerics::levenberg_minimize<2>(p, at, evaluate, opt);
+  if (!(at.gradient.norm() <= 1e-9 * scale))
+    throw SolverError(
+        "5-DOF static solution at speed: a ball between the races did not settle (its "
+        "force balance " +
+        format_number(at.gradient.norm()) + " N against F_c = " + format_number(Fc) + " N after " +
+        std::to_string(iterations) + " iterations)");
+  ball.outer = contact(p, b.outer_offset, b.outer_K, no);
+  ball.inner = contact(a - p, b.inner_offset, b.inner_K, ni);
+  ball.energy = at.value;  // min over p of E: its gradient in a is the inner contact force
+  if (ball.inner.Q > 0)
+    ball.ring_hessian =
+        ball.inner.H - ball.inner.H * (ball.outer.H + ball.inner.H).ldlt().solve(ball.inner.H);
+  return ball;
+}
+
 }  // namespace
 
-FiveDofBearing five_dof_bearing(const Bearing& b, const ContactConstants& c, double phase) {
+double ball_centrifugal_load(const Bearing& b, double inner_speed) {
+  const double mass = b.ball.density * pi * std::pow(b.ball_diameter, 3) / 6;
+  const double wc = cage_speed(b, inner_speed);
+  return mass * wc * wc * 0.5 * b.pitch_diameter;
+}
+
+FiveDofBearing five_dof_bearing(const Bearing& b, const ContactConstants& c, double phase,
+                                double centrifugal) {
   FiveDofBearing f;
   f.balls = b.balls;
   f.K = c.K;
@@ -38,8 +115,42 @@ FiveDofBearing five_dof_bearing(const Bearing& b, const ContactConstants& c, dou
   f.groove_radius =
       0.5 * b.pitch_diameter + (b.inner_conformity - 0.5) * b.ball_diameter - 0.25 * b.clearance;
   f.phase = phase;
+  f.centrifugal = centrifugal;
+  f.races_apart = centrifugal > 0;
+  f.inner_K = c.inner.K;
+  f.outer_K = c.outer.K;
+  f.inner_exponent = c.inner.exponent;
+  f.outer_exponent = c.outer.exponent;
+  f.inner_offset = (b.inner_conformity - 0.5) * b.ball_diameter;
+  f.outer_offset = (b.outer_conformity - 0.5) * b.ball_diameter;
+  if (!(centrifugal >= 0 && std::isfinite(centrifugal)))
+    throw InputError("centrifugal load = " + format_number(centrifugal) +
+                     " N: allowed a finite load >= 0");
   return f;
 }
+
+namespace {
+
+// Ball j at speed (ball_at_speed) into p: its force Bᵀ Q_i e_i on the ring and its condensed
+// stiffness Bᵀ H B (lower triangle; five_dof_point mirrors it).
+void add_ball_at_speed(const FiveDofBearing& b, const Eigen::Vector2d& a, double c, double s, int j,
+                       FiveDofPoint& p) {
+  const BallAtSpeed ball = ball_at_speed(b, a);
+  const double R = b.groove_radius;
+  Eigen::Matrix<double, 2, 5> B;
+  B << c, s, 0, 0, 0, 0, 0, 1, R * s, -R * c;
+  p.approaches[j] = ball.inner.delta;
+  p.ball_loads[j] = ball.inner.Q;
+  p.outer_loads[j] = ball.outer.Q;
+  p.contact_angles[j] = std::atan2(ball.inner.e(1), ball.inner.e(0));
+  p.outer_contact_angles[j] = std::atan2(ball.outer.e(1), ball.outer.e(0));
+  p.energy += ball.energy;
+  if (ball.inner.Q <= 0) return;
+  p.force += ball.inner.Q * B.transpose() * ball.inner.e;
+  p.stiffness.triangularView<Eigen::Lower>() += B.transpose() * ball.ring_hessian * B;
+}
+
+}  // namespace
 
 FiveDofPoint five_dof_point(const FiveDofBearing& b, const Vector5& q) {
   FiveDofPoint p;
@@ -52,6 +163,8 @@ FiveDofPoint five_dof_point(const FiveDofBearing& b, const Vector5& q) {
   p.approaches.resize(Z);
   p.ball_loads.resize(Z);
   p.contact_angles.resize(Z);
+  p.outer_loads.resize(Z);
+  p.outer_contact_angles.resize(Z);
   for (int j = 0; j < Z; ++j) {
     const double psi = b.phase + two_pi * j / Z, c = std::cos(psi), s = std::sin(psi);
     const double r = q(0) * c + q(1) * s;
@@ -63,9 +176,15 @@ FiveDofPoint five_dof_point(const FiveDofBearing& b, const Vector5& q) {
     p.ball_angles[j] = psi;
     p.approaches[j] = delta;
     p.contact_angles[j] = std::atan2(ax, u + r);
+    p.outer_contact_angles[j] = p.contact_angles[j];
+    if (b.races_apart) {
+      add_ball_at_speed(b, Eigen::Vector2d(u + r, ax), c, s, j, p);
+      continue;
+    }
     if (delta <= 0) continue;
     const double Q = b.K * std::pow(delta, n);
     p.ball_loads[j] = Q;
+    p.outer_loads[j] = Q;
     p.energy += Q * delta / (n + 1);
     Vector5 g, h;  // Bᵀ e and Bᵀ t
     g << ca * c, ca * s, sa, sa * R * s, -sa * R * c;

@@ -37,9 +37,26 @@
 // is δz − w₀; free to tilt, the ring does tilt, as the loaded side carries more of the axial
 // load); a pure axial load gives Harris's F_z = Z K [A₀ (cos α₀ / cos α − 1)]^n sin α.
 //
-// Approximations: rigid rings, K the constant of the case (the curvatures at the free contact
-// angle, as the 3-DOF model), no centrifugal load (to come: outer-race control) and no
-// gyroscopic moment.
+// At speed (races apart). A centrifugal load F_c = m_b ω_c² d_m/2 presses each ball outward, so
+// its two contacts no longer lie on one line: the ball centre p (from the outer groove centre O,
+// in the ball's radial–axial plane) is a DOF of its own, with the outer contact
+// δ_o = |p| − (f_o − 1/2) D and the inner one δ_i = |a_j − p| − (f_i − 1/2) D, each with its
+// race's constant and exponent, and the ball's energy
+//     E_j(p; a_j) = K_o/(n_o+1) [δ_o]_+^{n_o+1} + K_i/(n_i+1) [δ_i]_+^{n_i+1} − F_c p_r,
+// jointly convex in (p, a_j). Each ball settles where ∇_p E_j = 0 — Jones's ball equilibrium
+//     Q_o cos α_o − Q_i cos α_i = F_c,   Q_o sin α_o = Q_i sin α_i
+// (the gyroscopic moment neglected, so the race control does not enter the forces). The ring
+// then feels V(q) = Σ_j min_p E_j, still convex, with F = Σ_j Q_i,j B_jᵀ e_i,j and the condensed
+// stiffness
+//     K = Σ_j B_jᵀ [H_i − H_i (H_o + H_i)⁻¹ H_i] B_j = Σ_j B_jᵀ (H_i⁻¹ + H_o⁻¹)⁻¹ B_j,
+// H_x = n_x K_x δ_x^{n_x−1} e_x e_xᵀ + (Q_x/L_x) t_x t_xᵀ each contact's 2×2 Hessian: the two
+// contacts in series. With F_c = 0 and equal exponents the ball lies on the line of centres,
+// δ_i + δ_o = L − A₀, and this is the one-contact form above with the series constant
+// (tests/lumped/test_five_dof_static.cc checks that the two agree).
+//
+// Approximations: rigid rings, the contact constants of the case (the curvatures at the free
+// contact angle, as the 3-DOF model), F_c from the kinematic cage speed at the free contact angle,
+// no gyroscopic moment, no damping.
 
 #include <array>
 #include <vector>
@@ -63,21 +80,37 @@ struct FiveDofBearing {
   double clearance = 0;      ///< P_d [m]
   double groove_radius = 0;  ///< ℜ_i, radius of the inner groove centres [m]
   double phase = 0;          ///< φ₀, angle of ball 0 from +x toward +y [rad]
+  /// The races apart (each ball its own centre, two contacts): set when centrifugal > 0.
+  bool races_apart = false;
+  double centrifugal = 0;                             ///< F_c on each ball, outward [N]
+  double inner_K = 0, outer_K = 0;                    ///< each race's constant [N/m^n]
+  double inner_exponent = 1.5, outer_exponent = 1.5;  ///< each race's n [-]
+  double inner_offset = 0;  ///< (f_i − 1/2) D: ball centre to inner groove centre [m]
+  double outer_offset = 0;  ///< (f_o − 1/2) D: outer groove centre to ball centre [m]
 };
 
-/// The FiveDofBearing of `b` with the contact law `c` and ball 0 at `phase` [rad]. Throws
-/// InputError naming bearing.clearance when P_d ≥ 2 A₀ (no contact angle below 90°).
-FiveDofBearing five_dof_bearing(const Bearing& b, const ContactConstants& c, double phase = 0);
+/// The FiveDofBearing of `b` with the contact law `c`, ball 0 at `phase` [rad] and the
+/// centrifugal load `centrifugal` [N] on each ball (0: at rest; ball_centrifugal_load() gives it
+/// at a speed). Throws InputError naming bearing.clearance when P_d ≥ 2 A₀ (no contact angle
+/// below 90°).
+FiveDofBearing five_dof_bearing(const Bearing& b, const ContactConstants& c, double phase = 0,
+                                double centrifugal = 0);
+
+/// F_c = m_b ω_c² d_m/2 [N] of one ball (m_b from its diameter and density) at the inner ring's
+/// speed `inner_speed` [rad/s], ω_c the cage speed at the free contact angle (kinematics.h).
+double ball_centrifugal_load(const Bearing& b, double inner_speed);
 
 /// The ball set at one inner-ring displacement q.
 struct FiveDofPoint {
-  Vector5 force = Vector5::Zero();      ///< ∇V: the load the balls hold the ring in [N, N m]
-  Matrix5 stiffness = Matrix5::Zero();  ///< ∂force/∂q [N/m, N, N/rad, N m/rad]
-  double energy = 0;                    ///< V [J]
-  std::vector<double> ball_angles;      ///< ψ_j [rad]
-  std::vector<double> approaches;       ///< δ_j, negative: the gap left [m]
-  std::vector<double> ball_loads;       ///< Q_j ≥ 0 [N]
-  std::vector<double> contact_angles;   ///< α_j [rad]
+  Vector5 force = Vector5::Zero();           ///< ∇V: the load the balls hold the ring in [N, N m]
+  Matrix5 stiffness = Matrix5::Zero();       ///< ∂force/∂q [N/m, N, N/rad, N m/rad]
+  double energy = 0;                         ///< V [J]
+  std::vector<double> ball_angles;           ///< ψ_j [rad]
+  std::vector<double> approaches;            ///< δ_j, negative: the gap left [m]
+  std::vector<double> ball_loads;            ///< Q_j ≥ 0 [N], of the inner contact
+  std::vector<double> contact_angles;        ///< α_j [rad], of the inner contact
+  std::vector<double> outer_loads;           ///< Q_o,j [N] (= Q_j at rest)
+  std::vector<double> outer_contact_angles;  ///< α_o,j [rad] (= α_j at rest)
 };
 
 /// Force, stiffness and the balls at displacement q = (δx, δy, δz, γx, γy) [m, rad].
