@@ -9,7 +9,9 @@
 #include <string>
 #include <vector>
 
+#include "bearing/ball_pass_stiffness.h"
 #include "bearing/contact.h"
+#include "bearing/errors.h"
 #include "bearing/five_dof_static.h"
 #include "bearing/hertz.h"
 #include "bearing/models/model_inputs.h"
@@ -310,6 +312,54 @@ TEST(FiveDofStatic, EachBallAtSpeedIsInJonessEquilibrium) {
   const FiveDofBearing rest = of_preset("6308");
   const FiveDofSolution r = solve_five_dof(rest, F);
   EXPECT_GT(std::abs(s.at.stiffness(0, 0) - r.at.stiffness(0, 0)), 1e-3 * r.at.stiffness(0, 0));
+}
+
+// --- Over a ball pass (ball_pass_stiffness.h) --------------------------------------------
+
+// A uniformly loaded ring (pure axial load) looks the same at every cage angle: Σ cos²ψ_j and
+// its kin do not depend on the phase for Z ≥ 3, so K has no ripple and no harmonic.
+TEST(BallPassStiffness, AnAxialLoadHasNoRipple) {
+  const FiveDofBearing b = of_preset("6308");
+  Vector5 F;
+  F << 0, 0, 300, 0, 0;
+  const BallPassStiffness r = ball_pass_stiffness(b, F, 16);
+  const double scale = r.mean.cwiseAbs().maxCoeff();
+  EXPECT_LE((r.max - r.min).cwiseAbs().maxCoeff(), 1e-9 * scale);
+  for (const Matrix5& h : r.harmonics) EXPECT_LE(h.cwiseAbs().maxCoeff(), 1e-9 * scale);
+}
+
+// Under a radial load with clearance a few balls carry it and K ripples as they pass: periodic in
+// one pitch (the ball set one pitch on is the same set), and each entry's harmonics hold its
+// variance (Parseval: the mean square of the ripple is Σ c_m²/2 plus the Nyquist term).
+TEST(BallPassStiffness, ARadialLoadRipplesWithThePitchAndParsevalHolds) {
+  const FiveDofBearing b = of_preset("6308", 0.0);
+  Vector5 F;
+  F << 0, -300, 0, 0, 0;
+  const int N = 16;
+  const BallPassStiffness r = ball_pass_stiffness(b, F, N);
+  EXPECT_GT(r.max(1, 1) - r.min(1, 1), 0.01 * r.mean(1, 1));
+  FiveDofBearing next = b;
+  next.phase = b.phase + 2 * 3.14159265358979323846 / b.balls;
+  const Matrix5 K0 = solve_five_dof(b, F).at.stiffness, K1 = solve_five_dof(next, F).at.stiffness;
+  EXPECT_LE((K1 - K0).cwiseAbs().maxCoeff(), 1e-9 * K0.cwiseAbs().maxCoeff());
+  for (const auto& [i, j] : {std::pair{1, 1}, std::pair{0, 0}, std::pair{0, 1}}) {
+    double variance = 0, nyquist = 0;
+    for (int k = 0; k < N; ++k) {
+      const double d = r.samples[k](i, j) - r.mean(i, j);
+      variance += d * d / N;
+      nyquist += (k % 2 ? -1 : 1) * r.samples[k](i, j) / N;
+    }
+    double sum = nyquist * nyquist;
+    for (const Matrix5& h : r.harmonics) sum += 0.5 * h(i, j) * h(i, j);
+    EXPECT_NEAR(sum, variance, 1e-9 * variance + 1e-30);
+  }
+  ASSERT_EQ(r.harmonics.size(), static_cast<std::size_t>(N / 2 - 1));
+  for (int k = 0; k < N; ++k)  // N cage angles through exactly one pitch
+    EXPECT_NEAR(r.cage_angles[k], b.phase + 2 * 3.14159265358979323846 / b.balls * k / N, 1e-15);
+}
+
+TEST(BallPassStiffness, NeedsFourSamples) {
+  EXPECT_THROW(ball_pass_stiffness(of_preset("6308"), Vector5::Zero(), 3), InputError);
 }
 
 TEST(FiveDofStatic, NoLoadIsTheCentredPosition) {
