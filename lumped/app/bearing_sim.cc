@@ -302,6 +302,9 @@ int sweep_command(const SweepOptions& o, bool tty, const bearing_app::CommandLin
     bearing::SweepPlan plan;
     plan.design = design_of(o);
     plan.base = bearing::sweep_base(o.case_path, overrides_of(o.sets));
+    // A base case its kind cannot run (an axial load without an axial DOF, a moment) is refused
+    // before any case runs, as the case reader refuses a bad value.
+    bearing::check_run_loads(bearing::load_sweep_case(plan.base, {}));
     if (!o.part.empty()) plan.part = bearing::parse_part(o.part);
     plan.program = kVersion;
     const bearing::SweepRowHook hook = save_hook(out_dir, plan, what, false);
