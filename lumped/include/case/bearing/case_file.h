@@ -173,7 +173,8 @@ Case default_case(const std::vector<Override>& overrides = {});
 std::string case_to_toml(const Case& c);
 
 /// The dimension of a numeric case-file key ("operation.speed" → angular speed; an array index
-/// may appear: "waviness.inner.0.amplitude"), for sweeps. Throws InputError for other keys.
+/// may appear: "waviness.inner.0.amplitude"), for sweeps. Throws InputError for other keys (an
+/// unknown one with the nearest known key).
 Dimension key_dimension(const std::string& key);
 
 /// Whether a key takes a whole number (bearing.balls, waviness orders, ...).
