@@ -120,6 +120,9 @@ int stiffness_command(const StiffnessOptions& o) {
   }
   table.bearing = bearing::load_sweep_case(base, {}).bearing.designation;
   bearing::write_stiffness(o.out_dir, table, o.format == "ross");
+  // As run does: the result is written (a user may study it), with a warning.
+  const std::string warning = bearing::stiffness_elastic_warning(table);
+  if (!warning.empty()) std::cerr << "bearing-sim: warning: " << warning << "\n";
   if (!o.quiet) {
     std::cout << bearing::stiffness_text(table);
     std::fprintf(stderr, "stiffness: wrote %s/ (%zu operating point%s)\n", o.out_dir.c_str(), n,

@@ -179,7 +179,8 @@ TEST(CliStiffness, RunAndSweepRefuseAMoment) {
       kExample, {bearing::parse_override("operation.moment=[\"2 N*m\", \"-300 N mm\"]")});
   EXPECT_EQ(c.operation.moment.x(), 2.0);
   EXPECT_DOUBLE_EQ(c.operation.moment.y(), -0.3);
-  EXPECT_NE(bearing::case_to_toml(c).find("moment = [2.0, -0.29999999999999999]"), std::string::npos)
+  EXPECT_NE(bearing::case_to_toml(c).find("moment = [2.0, -0.29999999999999999]"),
+            std::string::npos)
       << bearing::case_to_toml(c);
   EXPECT_EQ(bearing::case_to_toml(bearing::read_case_file(kExample)).find("moment"),
             std::string::npos);
@@ -258,6 +259,27 @@ TEST(CliStiffness, InputErrorsLeaveNoFolder) {
     EXPECT_FALSE(fs::exists(d)) << b.args;
   }
   EXPECT_EQ(sim("stiffness " + kExample), 2);  // --out is required
+}
+
+// Beyond the elastic limit the files are written, with a warning naming the points, as run does.
+TEST(CliStiffness, ALoadBeyondTheElasticLimitIsWrittenWithAWarning) {
+  const fs::path d = fresh_dir("stiffness_elastic");
+  std::string out;
+  ASSERT_EQ(sim("stiffness " + kExample +
+                    " --vary operation.axial_load=100:150000:2 --quiet --out " + d.string(),
+                &out),
+            0)
+      << out;
+  for (const char* s : {"bearing-sim: warning: at 1 of 2 operating points",
+                        "operation.axial_load = 150000 N", "elastic limit of 4.2 GPa"})
+    EXPECT_NE(out.find(s), std::string::npos) << s << "\n" << out;
+  const auto j = nlohmann::json::parse(read(d / "stiffness.json"));
+  EXPECT_TRUE(j["points"][0]["elastic"].get<bool>());
+  EXPECT_FALSE(j["points"][1]["elastic"].get<bool>());
+  EXPECT_GT(j["points"][1]["peak_pressure"]["inner"].get<double>(), 4.2e9);
+  EXPECT_EQ(j["pressure_limit"].get<double>(), 4.2e9);
+  ASSERT_EQ(sim("stiffness " + kExample + " --quiet --out " + d.string(), &out), 0);
+  EXPECT_EQ(out, "");  // no warning within the limit
 }
 
 // --format ross: ROSS's column names, rows by ascending speed, damping 0, k_xy == k_yx; a

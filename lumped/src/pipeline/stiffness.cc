@@ -55,11 +55,17 @@ int StiffnessPoint::loaded_balls() const {
   return static_cast<int>(std::count_if(q.begin(), q.end(), [](double v) { return v > 0; }));
 }
 
+bool StiffnessPoint::elastic() const {
+  return !(std::max(inner_peak_pressure, outer_peak_pressure) > kElasticPressureLimit);
+}
+
 StiffnessPoint stiffness_point(const Case& c) {
   const ModelInputs in = model_inputs(c);
   StiffnessPoint p;
   p.load = load_of(c, in);
   p.solution = solve_five_dof(bearing_of(in), p.load);
+  p.inner_peak_pressure = in.contact.inner.peak_pressure(p.q_max());
+  p.outer_peak_pressure = in.contact.outer.peak_pressure(p.q_max());
   return p;
 }
 

@@ -88,6 +88,9 @@ nlohmann::json point_json(const StiffnessTable& t, const StiffnessRow& r) {
           {"ball_angles", s.at.ball_angles},
           {"ball_loads", s.at.ball_loads},
           {"contact_angles", s.at.contact_angles},
+          {"peak_pressure",
+           {{"inner", r.point.inner_peak_pressure}, {"outer", r.point.outer_peak_pressure}}},
+          {"elastic", r.point.elastic()},
           {"residual", s.residual},
           {"iterations", s.iterations}};
 }
@@ -108,6 +111,8 @@ nlohmann::json units_json() {
           {"ball_angles", "rad"},
           {"ball_loads", "N"},
           {"contact_angles", "rad"},
+          {"peak_pressure", "Pa"},
+          {"pressure_limit", "Pa"},
           {"residual", "1"}};
 }
 
@@ -166,6 +171,7 @@ nlohmann::json stiffness_json(const StiffnessTable& t) {
             {"stiffness_definition",
              "stiffness[i][j] = dF_i/dq_j, F = (Fx, Fy, Fz, Mx, My) the load on the inner ring, "
              "q = (x, y, z, gx, gy) its displacement and tilts about +x and +y; y is up"},
+            {"pressure_limit", kElasticPressureLimit},
             {"varied", varied},
             {"points", points},
             {"units", units_json()}};
@@ -208,6 +214,22 @@ std::string stiffness_matrix_text(const Matrix5& K, const std::string& indent) {
     << "units: N/m (Fx, Fy, Fz by x, y, z), N/rad (Fx, Fy, Fz by gx, gy), N (Mx, My by x, y, z), "
        "N*m/rad (Mx, My by gx, gy); symmetric\n";
   return o.str();
+}
+
+std::string stiffness_elastic_warning(const StiffnessTable& t) {
+  const auto beyond = [](const StiffnessRow& r) { return !r.point.elastic(); };
+  const auto first = std::find_if(t.rows.begin(), t.rows.end(), beyond);
+  if (first == t.rows.end()) return "";
+  const auto n = std::count_if(t.rows.begin(), t.rows.end(), beyond);
+  const double p = std::max(first->point.inner_peak_pressure, first->point.outer_peak_pressure);
+  std::string where = t.keys.empty()
+                          ? "at the operating point"
+                          : "at " + std::to_string(n) + " of " + std::to_string(t.rows.size()) +
+                                " operating points (first: " + point_values(t, *first) + ")";
+  return where + " the most loaded ball's peak Hertz pressure, " + num(p * 1e-9, 3) +
+         " GPa, passes the elastic limit of " + num(kElasticPressureLimit * 1e-9, 2) +
+         " GPa (ISO 76): the contacts yield, and the elastic contact law behind K does not hold "
+         "there";
 }
 
 std::string stiffness_note(const StiffnessPoint& p, const std::string& indent) {

@@ -45,6 +45,10 @@ FiveDofBearing five_dof_bearing_of(const Case& c);
 struct StiffnessPoint {
   Vector5 load = Vector5::Zero();  ///< F = (Fx, Fy, Fz, Mx, My) [N, N, N, N m, N m]
   FiveDofSolution solution;        ///< q [m, rad], K [N/m, N/rad, N m/rad], the balls
+  /// Peak Hertz pressure of the most loaded ball at the inner and outer race [Pa]; beyond
+  /// kElasticPressureLimit (contact.h) the elastic contact law, and so K, does not hold.
+  double inner_peak_pressure = 0, outer_peak_pressure = 0;
+  bool elastic() const;
   /// The largest ball load [N] (0: no ball loaded, e.g. no load, K = 0).
   double q_max() const;
   /// The balls that carry a load.

@@ -41,7 +41,8 @@ std::string stiffness_csv(const StiffnessTable& t);
 
 /// stiffness.json: the case, what the model assumes, the DOFs and units, and per point the
 /// varied values, load, displacement, the full 5×5 matrix, each ball's angle, load and contact
-/// angle. Throws SolverError naming the first non-finite value.
+/// angle, the peak Hertz pressures and whether they are within the elastic limit. Throws
+/// SolverError naming the first non-finite value.
 nlohmann::json stiffness_json(const StiffnessTable& t);
 
 /// The matrix K with row (Fx [N] … My [N*m]) and column (x [m] … gy [rad]) labels and the units of
@@ -52,6 +53,10 @@ std::string stiffness_matrix_text(const Matrix5& K, const std::string& indent = 
 /// ball loaded (K = 0), or fewer than 3 (each ball stiffens the ring in two directions only);
 /// "" otherwise.
 std::string stiffness_note(const StiffnessPoint& p, const std::string& indent = "  ");
+
+/// The warning `stiffness` gives when points pass the elastic limit (StiffnessPoint::elastic):
+/// how many, the first one's varied values and pressure; "" when none does.
+std::string stiffness_elastic_warning(const StiffnessTable& t);
 
 /// The readable table: for one point its load, displacement, balls and matrix; for several, the
 /// main terms (diagonal, q_max, loaded balls) per point.
