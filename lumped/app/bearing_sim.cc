@@ -28,6 +28,7 @@
 #include "bearing/simulation.h"
 #include "bearing/sweep.h"
 #include "full_program.h"
+#include "stiffness_command.h"
 #ifdef BEARING_WITH_HDF5
 #include "bearing/sweep_dataset.h"
 #include "bearing/sweep_save.h"
@@ -302,6 +303,9 @@ int sweep_command(const SweepOptions& o, bool tty, const bearing_app::CommandLin
     bearing::SweepPlan plan;
     plan.design = design_of(o);
     plan.base = bearing::sweep_base(o.case_path, overrides_of(o.sets));
+    // A base case its kind cannot run (an axial load without an axial DOF, a moment) is refused
+    // before any case runs, as the case reader refuses a bad value.
+    bearing::check_run_loads(bearing::load_sweep_case(plan.base, {}));
     if (!o.part.empty()) plan.part = bearing::parse_part(o.part);
     plan.program = kVersion;
     const bearing::SweepRowHook hook = save_hook(out_dir, plan, what, false);
@@ -431,13 +435,15 @@ int main(int argc, char** argv) {
       "The contact law in use (a Hertz method, or the FE-calibrated constants of "
       "model.calibration), contact constants per race (sum rho, F(rho), ellipticity, delta*, K, "
       "exponent) and of the ball between both races, bearing frequencies (shaft, FTF, BPFO, "
-      "BPFI, BSF) and the static load distribution (deflection, ball loads, Q_max) for a case");
+      "BPFI, BSF), the static load distribution (deflection, ball loads, Q_max) and the 5x5 "
+      "stiffness at the case's loads (5-DOF static solution, as `stiffness`) for a case");
   add_case_options(info, case_path, sets);
   info->add_flag("--json", json,
                  "Print JSON (SI units) with the keys kinematics.{shaft,ftf,bpfo,bpfi,bsf}, "
                  "contact.{inner,outer}.{sum_rho,f_rho,ellipticity,delta_star,K,exponent}, "
                  "contact.{K,exponent,method}, contact.calibration (calibrated law), "
-                 "static.{deflection,ball_angles,ball_loads,q_max}");
+                 "static.{deflection,ball_angles,ball_loads,q_max}, stiffness.{load, "
+                 "displacement, matrix (5x5 K = dF/dq at every load of the case), q_max}");
 
   auto* run = app.add_subcommand(
       "run", "Simulate a case (model.kind " + bearing::names_of(bearing::kModelKinds, " | ") +
@@ -481,6 +487,11 @@ int main(int argc, char** argv) {
   bearing_app::AnalyseOptions ao;
   auto* analyse = bearing_app::add_analyse_command(app, ao);
 
+  bearing_app::StiffnessOptions stiffness_options;
+  auto* stiffness = bearing_app::add_stiffness_command(app, stiffness_options, kCaseHelp);
+  stiffness->footer("Case-file keys (plain numbers are SI; strings may carry a unit):\n" +
+                    bearing::case_keys_help());
+
   auto* presets = app.add_subcommand("presets", "List the catalogue bearings and their sources");
 
   try {
@@ -512,6 +523,7 @@ int main(int argc, char** argv) {
     if (*sweep) return sweep_command(so, tty, command_line);
     if (*merge) return merge_command(merge_out, merge_dirs, command_line);
     if (*analyse) return bearing_app::analyse_command(ao, command_line);
+    if (*stiffness) return bearing_app::stiffness_command(stiffness_options);
   } catch (const bearing::InputError& e) {
     std::cerr << who() << ": error: " << e.what() << "\n";
     return fail(2);

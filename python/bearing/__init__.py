@@ -26,6 +26,7 @@ API
 ``Case``      a case: ``Case.from_file(path)``, ``Case.default()``, ``Case.from_toml(text)``;
               ``case.set(key, value)`` (as ``--set``), ``case.to_toml()``
 ``info``      ``bearing-sim info --json`` as a dict
+``stiffness`` the bearing's 5x5 stiffness at the case's operating point (``bearing-sim stiffness``)
 ``run``       ``bearing-sim run``: a ``Result`` (``.t``, channels, ``.spectrum``, ``.summary``)
 ``sweep``     ``bearing-sim sweep``: the rows of sweep.csv (list of dicts or pandas DataFrame)
 ``analyse``   a measured record (NumPy array, SI) analysed: an ``Analysis`` (``.summary``, spectra)
@@ -69,8 +70,8 @@ else:
         "A numerical procedure that did not reach its answer, e.g. a blow-up; the message says "
         "why and what to change (bearing-sim exits with status 3).")
 
-__all__ = ["Case", "Result", "Analysis", "InputError", "SolverError", "info", "run", "sweep",
-           "analyse", "presets", "keys", "keys_help"]
+__all__ = ["Case", "Result", "Analysis", "InputError", "SolverError", "info", "stiffness", "run",
+           "sweep", "analyse", "presets", "keys", "keys_help"]
 
 
 def _case(case):
@@ -96,6 +97,25 @@ def info(case):
     >>> bearing.info(bearing.Case.default())["kinematics"]["bpfo"]   # Hz
     """
     return _bearing.info(_case(case))
+
+
+def stiffness(case):
+    """The bearing's stiffness at the case's operating point: a 5x5 NumPy array (float64).
+
+    ``case``: a :class:`Case`, or the path of a case file. K = dF/dq of the 5-DOF static solution
+    of the inner ring (as ``bearing-sim stiffness`` and ``info`` compute it): q = (x, y, z, gx, gy)
+    its displacement [m] and tilts about +x, +y [rad], F = (Fx, Fy, Fz, Mx, My) the load on it
+    [N, N*m]: ``operation.load`` (with the rotor weight when ``operation.gravity``),
+    ``operation.axial_load`` and ``operation.moment``, whatever ``model.kind``. Units: K[:3, :3]
+    N/m, K[:3, 3:] N/rad, K[3:, :3] N (= N*m/m), K[3:, 3:] N*m/rad; symmetric. Assumed: rigid
+    rings, zero speed (no centrifugal ball load), no damping. With no ball loaded (no load, the
+    ring in the clearance) K is 0. The displacement, ball loads and contact angles:
+    ``bearing.info(case)["stiffness"]``. Raises InputError or SolverError.
+
+    >>> k = bearing.stiffness(bearing.Case.default().set("operation.axial_load", "100 N"))
+    >>> k[1, 1]                                   # k_yy [N/m]
+    """
+    return _bearing.stiffness(_case(case))
 
 
 def run(case):

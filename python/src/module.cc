@@ -23,6 +23,7 @@
 #include "bearing/output.h"
 #include "bearing/presets.h"
 #include "bearing/simulation.h"
+#include "bearing/stiffness.h"
 #include "bearing/sweep.h"
 #include "bearing/sweep_columns.h"
 #include "bearing/units.h"
@@ -288,6 +289,23 @@ PYBIND11_MODULE(_bearing, m) {
         return to_python(j);
       },
       py::arg("case"), "The dict of `bearing-sim info --json` (SI units).");
+  m.def(
+      "stiffness",
+      [](const CaseHandle& c) {
+        const bearing::Case input = c.resolved;
+        bearing::StiffnessPoint p;
+        {
+          py::gil_scoped_release release;
+          p = bearing::stiffness_point(input);
+        }
+        py::array_t<double> k(std::vector<py::ssize_t>{5, 5});
+        auto out = k.mutable_unchecked<2>();
+        for (py::ssize_t i = 0; i < 5; ++i)
+          for (py::ssize_t j = 0; j < 5; ++j) out(i, j) = p.solution.at.stiffness(i, j);
+        return k;
+      },
+      py::arg("case"),
+      "The 5x5 stiffness K = dF/dq at the case's operating point (bearing/stiffness.h), SI.");
   m.def("run", &run_case, py::arg("case"),
         "Simulates and analyses a case as `bearing-sim run` does (GIL released).");
   m.def("sweep", &sweep, py::arg("case"), py::arg("vary"), py::arg("jobs") = 0,

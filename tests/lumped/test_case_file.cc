@@ -367,6 +367,11 @@ TEST(CaseSchema, WrittenCaseIsAFixedPointForEveryExample) {
                   parse_override("ball.mass=0.03"), parse_override("ball_errors.band=\"1 um\""),
                   parse_override("acoustics.microphones=[[\"1 m\", \"30 deg\"]]"),
                   parse_override("output.ball_dynamics=true")}));
+  // operation.moment, written only when set (issue 32), and an axial load on a 2dof case (read;
+  // run refuses both).
+  cases.push_back(read_case_file(std::string(BEARING_SOURCE_DIR) + "/examples/seed003_6308.toml",
+                                 {parse_override("operation.moment=[\"2 N*m\", \"-0.3 N m\"]"),
+                                  parse_override("operation.axial_load=50")}));
   // The text without its comments (the file it came from, where ball errors were drawn from).
   const auto body = [](const std::string& text) {
     std::istringstream in(text);

@@ -213,15 +213,6 @@ std::vector<BadCase> bad_cases() {
       {"ball inertia not positive",
        kPreset + "[model]\nkind = \"balls\"\n[ball]\ninertia = \"0 kg m^2\"\n",
        {"ball.inertia", "0 kg m^2", "positive"}},
-      {"axial load on the 2-DOF model",
-       kPreset + "[operation]\nload = [0, -100]\naxial_load = \"50 N\"\n",
-       {"operation.axial_load = 50 N", "model.kind = \"2dof\"", "no axial degree of freedom",
-        "allowed: 0", "\"3dof\" or \"balls\""}},
-      {"axial-only load: no static solution without an axial DOF",
-       kPreset + "[operation]\nload = [0, 0]\naxial_load = \"50 N\"\n[model]\n"
-                 "kind = \"quasistatic\"\n",
-       {"operation.axial_load = 50 N", "\"quasistatic\"", "no ball is in its load zone",
-        "static solution does not exist", "\"3dof\""}},
       {"model kind unknown",
        kPreset + "[model]\nkind = \"4dof\"\n",
        {"model.kind", "4dof", "2dof, 3dof"}},
@@ -317,7 +308,42 @@ TEST(InputErrors, EachMalformedCaseGetsAClearMessage) {
   }
 }
 
-// The registry row decides: each kind that carries an axial load reads one (an axial-only load
+// Loads a model kind cannot carry are refused when it is to run (run_settings: run, sweep, Python's
+// run), with one message naming the key, the value, why and what is allowed; the case itself
+// reads, since the static analyses (info, stiffness) carry every load whatever the kind.
+TEST(InputErrors, LoadsAKindCannotCarryAreRefusedWhenItRuns) {
+  const std::vector<BadCase> cases = {
+      {"axial load on the 2-DOF model",
+       kPreset + "[operation]\nload = [0, -100]\naxial_load = \"50 N\"\n",
+       {"operation.axial_load = 50 N", "model.kind = \"2dof\"", "no axial degree of freedom",
+        "allowed: 0", "\"3dof\" or \"balls\""}},
+      {"axial-only load: no static solution without an axial DOF",
+       kPreset + "[operation]\nload = [0, 0]\naxial_load = \"50 N\"\n[model]\n"
+                 "kind = \"quasistatic\"\n",
+       {"operation.axial_load = 50 N", "\"quasistatic\"", "no ball is in its load zone",
+        "static solution does not exist", "\"3dof\""}},
+      {"a moment on any kind",
+       kPreset + "[operation]\nmoment = [\"1.5 N m\", 0]\n[model]\nkind = \"3dof\"\n",
+       {"operation.moment = [1.5, 0] N m", "\"3dof\"", "no tilt degree of freedom",
+        "allowed: [0, 0]", "stiffness"}},
+  };
+  for (const auto& bc : cases) {
+    const bearing::Case c = bearing::parse_case(bc.toml, "t.toml");
+    try {
+      bearing::run_settings(c);
+      ADD_FAILURE() << bc.what << ": no error for\n" << bc.toml;
+    } catch (const bearing::InputError& e) {
+      const std::string m = e.what();
+      for (const auto& s : bc.expect)
+        EXPECT_NE(m.find(s), std::string::npos)
+            << bc.what << ": message lacks \"" << s << "\": " << m;
+      EXPECT_EQ(m.find('\n'), std::string::npos) << bc.what << ": not one line: " << m;
+    }
+    EXPECT_THROW(bearing::check_run_loads(c), bearing::InputError) << bc.what;
+  }
+}
+
+// The registry row decides: each kind that carries an axial load runs one (an axial-only load
 // included), each other kind refuses it, so a new kind is covered by its row.
 TEST(InputErrors, AxialLoadFollowsTheModelRegistry) {
   for (const bearing::ModelDescriptor& d : bearing::model_registry()) {
@@ -326,11 +352,12 @@ TEST(InputErrors, AxialLoadFollowsTheModelRegistry) {
         "[bearing]\npreset = \"6308\"\n[operation]\nload = [0, 0]\n"
         "axial_load = \"200 N\"\n[model]\nkind = \"" +
         kind + "\"\n";
+    const bearing::Case c = bearing::parse_case(toml, "t.toml");  // every kind reads it
     if (d.axial_load) {
-      EXPECT_NO_THROW(bearing::parse_case(toml, "t.toml")) << kind;
+      EXPECT_NO_THROW(bearing::run_settings(c)) << kind;
       continue;
     }
-    EXPECT_THROW(bearing::parse_case(toml, "t.toml"), bearing::InputError) << kind;
+    EXPECT_THROW(bearing::run_settings(c), bearing::InputError) << kind;
     // The library refuses it as well, for a caller that builds ModelInputs itself.
     bearing::ModelInputs in = bearing::model_inputs(bearing::parse_case(
         "[bearing]\npreset = \"6308\"\n[model]\nkind = \"" + kind + "\"\n", "t.toml"));

@@ -13,6 +13,7 @@
 
 #include <gtest/gtest.h>
 
+#include "bearing/errors.h"
 #include "bearing/sweep.h"
 #include "cli_helpers.h"
 
@@ -45,6 +46,27 @@ TEST(Sweep, PointFromItsIndex) {
     EXPECT_EQ(p.overrides[0].value, std::to_string(7 + i / 2));
   }
   EXPECT_EQ(bearing::sweep_points(axes).size(), 6u);
+}
+
+// A plain FROM or TO is SI (as in a case file and in --cases), except for angles and speeds,
+// whose bare 0 alone passes; an unknown key names the nearest known one.
+TEST(Sweep, VaryTakesPlainNumbersAsSi) {
+  EXPECT_EQ(bearing::parse_vary("operation.axial_load=0:200:3").values,
+            (std::vector<double>{0, 100, 200}));
+  EXPECT_EQ(bearing::parse_vary("bearing.clearance=0:1e-5:2").values,
+            (std::vector<double>{0, 1e-5}));
+  EXPECT_EQ(bearing::parse_vary("operation.speed=0:100rad/s:2").values,
+            (std::vector<double>{0, 100}));
+  for (const char* bad : {"operation.speed=0:3000:2", "bearing.contact_angle=0:10:2"})
+    EXPECT_THROW(bearing::parse_vary(bad), bearing::InputError) << bad;
+  try {
+    bearing::parse_vary("operation.axial_lod=0:200:3");
+    FAIL();
+  } catch (const bearing::InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("did you mean \"operation.axial_load\""),
+              std::string::npos)
+        << e.what();
+  }
 }
 
 SweepRow failed_row(double v, const std::string& why) {

@@ -40,6 +40,11 @@ TEST(Units, AcceptsSpellingsOfTheSameUnit) {
   EXPECT_DOUBLE_EQ(parse_quantity("1e3 N", Dimension::force, "k"), 1000.0);
   EXPECT_DOUBLE_EQ(parse_quantity("33.3 Hz", Dimension::angular_speed, "k"), 33.3 * two_pi);
   EXPECT_DOUBLE_EQ(parse_quantity("0.52", Dimension::dimensionless, "k"), 0.52);
+  EXPECT_EQ(parse_quantity("2 N*m", Dimension::moment, "k"), 2.0);
+  EXPECT_EQ(parse_quantity("2 N m", Dimension::moment, "k"), 2.0);
+  EXPECT_EQ(parse_quantity("1.5 kN m", Dimension::moment, "k"), 1500.0);
+  EXPECT_EQ(parse_quantity("300 N mm", Dimension::moment, "k"), 0.3);  // exactly the double 0.3
+  EXPECT_DOUBLE_EQ(parse_quantity("1 lbf in", Dimension::moment, "k"), 0.1129848290276167);
 }
 
 TEST(Units, RoundTripsThroughText) {

@@ -171,6 +171,41 @@ class InfoAndPresets(unittest.TestCase):
         self.assertIn("operation.speed", bearing.keys())
 
 
+class Stiffness(unittest.TestCase):
+    """bearing.stiffness against the CLI's stiffness.json and info --json: the same matrix."""
+
+    SETS = [("operation.axial_load", "100 N"), ("operation.moment", '["0.5 N*m", "0 N*m"]')]
+
+    def test_equals_the_cli_matrix(self):
+        example = str(EXAMPLES / "seed003_6308.toml")
+        k = bearing.stiffness(case_with(example, self.SETS))
+        self.assertIsInstance(k, np.ndarray)
+        self.assertEqual(k.shape, (5, 5))
+        self.assertEqual(k.dtype, np.float64)
+        with tempfile.TemporaryDirectory() as tmp:
+            cli("stiffness", example, *set_args(self.SETS), "--out", tmp, "--quiet")
+            with open(pathlib.Path(tmp) / "stiffness.json") as f:
+                point = json.load(f)["points"][0]
+        self.assertEqual(k.tolist(), point["stiffness"])
+        self.assertEqual(k.tolist(), bearing.info(case_with(example, self.SETS))["stiffness"]
+                         ["matrix"])
+        np.testing.assert_array_equal(k, k.T)  # symmetric to the bit
+        self.assertTrue(np.all(np.linalg.eigvalsh(k) > 0))  # loaded every way: positive definite
+        self.assertEqual(bearing.stiffness(example).tolist(),
+                         bearing.stiffness(bearing.Case.from_file(example)).tolist())
+
+    def test_errors_raise_as_the_cli_exits(self):
+        with self.assertRaises(bearing.InputError) as e:
+            bearing.stiffness(bearing.Case.default().set("bearing.clearance", "1.3 mm"))
+        self.assertIn("bearing.clearance", str(e.exception))
+        # A moment is read by every command, refused only by a run: no model kind can tilt.
+        case = bearing.Case.default().set("operation.moment", ["1 N*m", "0 N*m"])
+        self.assertEqual(bearing.stiffness(case).shape, (5, 5))
+        with self.assertRaises(bearing.InputError) as e:
+            bearing.run(case)
+        self.assertIn("operation.moment", str(e.exception))
+
+
 class Errors(unittest.TestCase):
     def cli_error(self, args, status):
         p = cli(*args, check=False)

@@ -18,7 +18,8 @@ calibration_example (examples/seed003_6308_calibration.json and its race folders
 calibration_fem (a fresh bearing-fem calibrate; needs --fem), analysis (an analysed record
 written by the compiled module's bearing.analyse: spectrum, envelope), report (the bearing-verify report's
 figures: verification/plot_figures.py on a figures.json with every panel kind), cli (formats,
-default --out, errors, import without the compiled extension).
+default --out, errors, import without the compiled extension), stiffness (bearing-sim
+stiffness: a --vary grid's terms against the key, one point's as bars).
 """
 import argparse
 import csv
@@ -446,6 +447,36 @@ def case_sweep1(args, plot):
         line = artist(figures["sweep_spl"], "sweep:mic1." + key)
         check(same(line.get_xydata(), np.column_stack([x, data["mic1." + key]])),
               "sweep (1 key): mic1.%s equals sweep.csv" % key)
+
+
+def case_stiffness(args, plot):
+    """bearing-sim stiffness: a grid (lines against the varied key) and one point (bars)."""
+    folder = os.path.join(args.work, "grid")
+    run_sim(args, "stiffness", "--vary", "operation.axial_load=0:200:5", "--quiet", "--out", folder)
+    result = plot_cli(args, folder)
+    check(result.returncode == 0, "bearing-plot STIFFNESS_DIR exits 0 (%s)" % result.stderr.strip())
+    check_files(plot, os.path.join(folder, "plots"), ["stiffness"])
+    data = csv_columns(os.path.join(folder, "stiffness.csv"))
+    fig = plot.stiffness_figure(plot.load_stiffness(folder))
+    x = data["operation.axial_load [N]"]
+    for name, unit in (("k_xx", "N/m"), ("k_yy", "N/m"), ("k_zz", "N/m"), ("k_gx_gx", "N*m/rad"),
+                       ("k_gy_gy", "N*m/rad")):
+        line = artist(fig, "stiffness:" + name)
+        check(same(line.get_xydata(), np.column_stack([x, data["%s [%s]" % (name, unit)]])),
+              "stiffness: %s against operation.axial_load equals stiffness.csv" % name)
+    drawn = {a.get_gid()[len("stiffness:"):] for a in fig.findobj(
+        lambda a: (a.get_gid() or "").startswith("stiffness:"))}
+    couplings = sorted(n for n in drawn if n not in ("k_xx", "k_yy", "k_zz", "k_gx_gx", "k_gy_gy"))
+    check(bool(couplings),
+          "stiffness: the largest couplings drawn too (%s)" % ", ".join(couplings))
+    check("k_xy" not in drawn, "stiffness: a coupling at round-off (k_xy) is not drawn")
+    one = os.path.join(args.work, "one")
+    run_sim(args, "stiffness", "--set", "operation.axial_load=100", "--quiet", "--out", one)
+    check(plot_cli(args, one).returncode == 0, "bearing-plot of one point exits 0")
+    check_files(plot, os.path.join(one, "plots"), ["stiffness"])
+    bar = artist(plot.stiffness_figure(plot.load_stiffness(one)), "stiffness:k_zz")
+    check(bar.get_height() == csv_columns(os.path.join(one, "stiffness.csv"))["k_zz [N/m]"][0],
+          "stiffness (one point): the k_zz bar is stiffness.csv's value")
 
 
 # --- contact ----------------------------------------------------------------------------------

@@ -17,6 +17,7 @@
 #include "bearing/hertz.h"
 #include "case_schema.h"
 #include "toml_guard.h"
+#include "toml_reader.h"
 
 namespace bearing {
 
@@ -172,7 +173,8 @@ HertzMethod hertz_shape_method(const ModelOptions& m) {
 Dimension key_dimension(const std::string& key) {
   using case_schema::Kind;
   const case_schema::Key* k = case_schema::find_key(schema_name(key));
-  if (!k || !(k->kind == Kind::quantity || k->kind == Kind::integer))
+  if (!k) case_schema::unknown_key(schema_name(key), key);  // with the nearest known key
+  if (!(k->kind == Kind::quantity || k->kind == Kind::integer))
     throw InputError(key + ": not a numeric case-file key (see bearing-sim run --help)");
   return k->dim;
 }

@@ -149,6 +149,20 @@ std::vector<Key> operation_keys() {
   load.write = [](std::ostream& o, const Case& c) {
     o << "load = [" << num17(c.operation.load.x()) << ", " << num17(c.operation.load.y()) << "]\n";
   };
+  Key moment =
+      described("operation.moment", Kind::vector2, D::moment,
+                "moments [Mx, My] on the inner ring, about +x and +y (default [0, 0]): used by "
+                "`stiffness` and `info` (5-DOF static solution); `run` refuses a nonzero one, as "
+                "no model kind has a tilt DOF");
+  moment.read = [](TableReader& r, Case& c, const ReadContext&) {
+    if (const auto v = r.vector2("moment")) c.operation.moment = *v;
+  };
+  // Written only when set: every case `run` writes has none.
+  moment.write = [](std::ostream& o, const Case& c) {
+    if (c.operation.moment.isZero(0.0)) return;
+    o << "moment = [" << num17(c.operation.moment.x()) << ", " << num17(c.operation.moment.y())
+      << "]\n";
+  };
   return {
       table("operation", "operating conditions"),
       quantity(
@@ -157,8 +171,10 @@ std::vector<Key> operation_keys() {
       load,
       quantity(
           "operation.axial_load", D::force,
-          "axial load / preload Fz (3dof, balls; 0 for the others)",
+          "axial load / preload Fz (run: 3dof, balls; the others refuse a nonzero one; "
+          "stiffness and info carry it with any kind)",
           [](auto& c) -> auto& { return c.operation.axial_load; }),
+      moment,
       quantity(
           "operation.unbalance", D::mass_length,
           "unbalance m_u e; force m_u e w^2 rotating with the shaft",
@@ -215,8 +231,10 @@ std::vector<Key> model_keys() {
   calibration.write = [](std::ostream& o, const Case& c) {
     if (c.model.calibration) o << "calibration = " << quoted(c.model.calibration->path) << "\n";
   };
+  // Whether model.kind carries the case's loads (an axial load, a moment) is checked where a
+  // model is built (check_run_loads, simulation.h), not here: the static analyses (`stiffness`,
+  // `info`) read the same case and carry every load whatever the kind.
   Key t = table("model", "model choices");
-  t.after = check_model_loads;
   return {
       t,
       choice(

@@ -175,14 +175,6 @@ void check_defect_entries(Case& c) {
   check_defects_supported(c.model.kind, defects);
 }
 
-void check_model_loads(Case& c) {
-  ModelInputs loads;  // only for its radial_load(): the weight with gravity on
-  loads.load = c.operation.load;
-  loads.gravity = c.operation.gravity;
-  loads.mass = c.rotor.mass;
-  check_axial_load_supported(c.model.kind, c.operation.axial_load, loads.radial_load().norm());
-}
-
 void write_defects(std::ostream& o, const Case& c) {
   bool first = true;
   for (const LocalDefect& d : c.excitation.defects) {

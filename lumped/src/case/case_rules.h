@@ -27,8 +27,6 @@ void write_ball_errors(std::ostream& o, const Case& c);
 /// all are read (check_defects, a model kind that integrates in time).
 void read_defect(TableReader& r, Case& c, const ReadContext& context);
 void check_defect_entries(Case& c);
-/// [model]: operation.axial_load needs a kind that carries it (check_axial_load_supported).
-void check_model_loads(Case& c);
 void write_defects(std::ostream& o, const Case& c);
 
 /// model.calibration: read and checked against the bearing now, so a calibration for another

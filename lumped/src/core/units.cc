@@ -51,6 +51,12 @@ const std::vector<UnitEntry>& table(Dimension dim) {
       {"kgm", 1.0}, {"gmm", 1e-6}, {"gcm", 1e-5}, {"gm", 1e-3}};
   static const std::vector<UnitEntry> velocity{{"m/s", 1.0}, {"mm/s", 1e-3}, {"km/h", 1.0 / 3.6}};
   static const std::vector<UnitEntry> inertia{{"kgm2", 1.0}, {"gmm2", 1e-9}, {"gcm2", 1e-7}};
+  static const std::vector<UnitEntry> moment{{"Nm", 1.0},
+                                             {"kNm", 1e3},
+                                             {"Nmm", 1e-3},
+                                             {"mNm", 1e-3},
+                                             {"lbfin", 0.1129848290276167},
+                                             {"lbfft", 1.3558179483314004}};
   static const std::vector<UnitEntry> none{};
   switch (dim) {
     case Dimension::length:
@@ -79,6 +85,8 @@ const std::vector<UnitEntry>& table(Dimension dim) {
       return velocity;
     case Dimension::inertia:
       return inertia;
+    case Dimension::moment:
+      return moment;
     case Dimension::dimensionless:
       return none;
   }
@@ -119,10 +127,11 @@ std::string join(const std::vector<std::string>& items) {
 
 // The dimension a unit belongs to, if any other than `dim` knows it (for a clearer message).
 const char* other_dimension(const std::string& unit, Dimension dim) {
-  for (Dimension d : {Dimension::length, Dimension::angle, Dimension::angular_speed,
-                      Dimension::force, Dimension::pressure, Dimension::mass, Dimension::density,
-                      Dimension::time, Dimension::frequency, Dimension::damping,
-                      Dimension::mass_length, Dimension::velocity, Dimension::inertia}) {
+  for (Dimension d :
+       {Dimension::length, Dimension::angle, Dimension::angular_speed, Dimension::force,
+        Dimension::pressure, Dimension::mass, Dimension::density, Dimension::time,
+        Dimension::frequency, Dimension::damping, Dimension::mass_length, Dimension::velocity,
+        Dimension::inertia, Dimension::moment}) {
     if (d == dim) continue;
     for (const auto& e : table(d))
       if (unit == e.name) return dimension_name(d).data();
@@ -160,6 +169,8 @@ std::string_view dimension_name(Dimension dim) {
       return "speed";
     case Dimension::inertia:
       return "moment of inertia";
+    case Dimension::moment:
+      return "moment (torque)";
     case Dimension::dimensionless:
       return "dimensionless number";
   }
@@ -194,6 +205,8 @@ std::string_view si_unit(Dimension dim) {
       return "m/s";
     case Dimension::inertia:
       return "kg m^2";
+    case Dimension::moment:
+      return "N m";
     case Dimension::dimensionless:
       return "";
   }
@@ -228,6 +241,8 @@ std::vector<std::string> accepted_units(Dimension dim) {
       return {"m/s", "mm/s", "km/h"};
     case Dimension::inertia:
       return {"kg m^2", "g mm^2", "g cm^2"};
+    case Dimension::moment:
+      return {"N m", "kN m", "N mm", "lbf in", "lbf ft"};
     case Dimension::dimensionless:
       return {};
   }

@@ -6,12 +6,14 @@
 #include <sstream>
 
 #include "bearing/constants.h"
+#include "bearing/errors.h"
 #include "bearing/json_helpers.h"
 #include "bearing/local_defect.h"
 #include "bearing/models/model_registry.h"
 #include "bearing/models/three_dof.h"
 #include "bearing/presets.h"
 #include "bearing/simulation.h"
+#include "bearing/stiffness_output.h"
 #include "bearing/units.h"
 
 namespace bearing {
@@ -73,8 +75,47 @@ InfoReport compute_info(const Case& c) {
   }
   if (c.housing.enabled)
     r.housing_modes = housing_modes(*make_dynamic_model(c.model.kind, static_model_inputs(c)));
+  // A section of the report, not its purpose: a case the 5-DOF solution cannot take still gets
+  // the rest, with the reason shown (`bearing-sim stiffness` fails on it instead).
+  try {
+    r.stiffness = stiffness_point(c);
+  } catch (const InputError& e) {
+    r.stiffness_error = e.what();
+  } catch (const SolverError& e) {
+    r.stiffness_error = e.what();
+  }
   return r;
 }
+
+namespace {
+
+nlohmann::json stiffness_info_json(const InfoReport& r) {
+  using nlohmann::json;
+  if (!r.stiffness) return {{"error", r.stiffness_error}};
+  const StiffnessPoint& p = *r.stiffness;
+  const auto vec = [](const Vector5& v) { return std::vector<double>(v.data(), v.data() + 5); };
+  json matrix = json::array(), units = json::array();
+  for (int i = 0; i < 5; ++i) {
+    json row = json::array(), unit = json::array();
+    for (int j = 0; j < 5; ++j) {
+      row.push_back(p.solution.at.stiffness(i, j));
+      unit.push_back(stiffness_unit(i, j));
+    }
+    matrix.push_back(row);
+    units.push_back(unit);
+  }
+  return {{"dofs", kStiffnessDofs},
+          {"load", vec(p.load)},
+          {"displacement", vec(p.solution.displacement)},
+          {"matrix", matrix},
+          {"matrix_units", units},
+          {"q_max", p.q_max()},
+          {"loaded_balls", p.loaded_balls()},
+          {"ball_loads", p.solution.at.ball_loads},
+          {"contact_angles", p.solution.at.contact_angles}};
+}
+
+}  // namespace
 
 nlohmann::json info_json(const InfoReport& r) {
   using nlohmann::json;
@@ -178,6 +219,15 @@ nlohmann::json info_json(const InfoReport& r) {
     j["units"]["housing.modes.frequency"] = "Hz";
     j["units"]["housing.modes.housing_share"] = "1";
   }
+  j["stiffness"] = stiffness_info_json(r);
+  if (r.stiffness) {
+    j["units"]["stiffness.load"] = kStiffnessLoadUnits;
+    j["units"]["stiffness.displacement"] = kStiffnessDofUnits;
+    j["units"]["stiffness.matrix"] = "stiffness.matrix_units";
+    j["units"]["stiffness.q_max"] = "N";
+    j["units"]["stiffness.ball_loads"] = "N";
+    j["units"]["stiffness.contact_angles"] = "rad";
+  }
   if (cal) {
     j["units"]["contact.calibration.load_range"] = "N";
     j["units"]["contact.calibration.series_fit_residual"] = "1";
@@ -261,6 +311,25 @@ std::string housing_text(const InfoReport& r) {
     o << "  " << rpad(num(m.frequency, 5), 16) << rpad(fixed(100 * m.housing_share, 1) + " %", 16)
       << "\n";
   return o.str();
+}
+
+// The 5-DOF stiffness at the case's loads, for info_text.
+std::string stiffness_info_text(const InfoReport& r) {
+  std::ostringstream o;
+  o << "\nStiffness at the operating point (5-DOF static solution: rigid rings, zero speed, no "
+       "damping; every load of the case, whatever model.kind; `bearing-sim stiffness` for more)\n";
+  if (!r.stiffness) return o.str() + "  not available: " + r.stiffness_error + "\n";
+  const StiffnessPoint& p = *r.stiffness;
+  const Vector5& q = p.solution.displacement;
+  o << "  load Fx = " << num(p.load(0)) << " N, Fy = " << num(p.load(1))
+    << " N, Fz = " << num(p.load(2)) << " N, Mx = " << num(p.load(3))
+    << " N*m, My = " << num(p.load(4)) << " N*m\n"
+    << "  displacement x = " << fixed(q(0) * 1e6, 4) << " um, y = " << fixed(q(1) * 1e6, 4)
+    << " um, z = " << fixed(q(2) * 1e6, 4) << " um, gx = " << fixed(q(3) * 1e6, 4)
+    << " urad, gy = " << fixed(q(4) * 1e6, 4) << " urad; " << p.loaded_balls()
+    << " balls loaded, the largest " << num(p.q_max()) << " N\n"
+    << stiffness_matrix_text(p.solution.at.stiffness);
+  return o.str() + stiffness_note(p);
 }
 
 std::string defects_text(const InfoReport& r) {
@@ -352,6 +421,14 @@ std::string info_text(const InfoReport& r) {
     o << "  Q_max = " << num(s.q_max)
       << " N; Q_max Z / F_r = " << num(s.q_max * b.balls / c.operation.load.norm(), 4) << "\n";
   }
+  // Loads the kind does not carry (run refuses them) are in the stiffness section alone.
+  if (!r.axial && c.operation.axial_load != 0)
+    o << "  operation.axial_load = " << num(c.operation.axial_load)
+      << " N is not in this distribution nor in the peak pressure: model.kind = \""
+      << name_of(kModelKinds, c.model.kind)
+      << "\" does not carry it (run refuses it); the stiffness section carries every load\n";
+  if (!c.operation.moment.isZero(0.0))
+    o << "  operation.moment is carried by the stiffness section alone (run refuses it)\n";
   if (r.axial)
     o << "  axial load " << num(c.operation.axial_load) << " N alone: contact angle "
       << fixed(r.axial->contact_angle * 180.0 / pi, 3) << " deg, each ball "
@@ -375,6 +452,7 @@ std::string info_text(const InfoReport& r) {
   }
   o << defects_text(r);
   o << housing_text(r);
+  o << stiffness_info_text(r);
   return o.str();
 }
 

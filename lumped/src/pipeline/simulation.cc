@@ -5,6 +5,7 @@
 #include "bearing/errors.h"
 #include "bearing/excitation_families.h"
 #include "bearing/models/three_dof.h"
+#include "bearing/units.h"
 
 namespace bearing {
 
@@ -38,7 +39,37 @@ ModelInputs model_inputs(const Case& c) {
   return in;
 }
 
+namespace {
+
+void check_loads(const Case& c) {
+  const Eigen::Vector2d& m = c.operation.moment;
+  if (!m.isZero(0.0))
+    throw InputError(
+        "operation.moment = [" + format_number(m.x()) + ", " + format_number(m.y()) +
+        "] N m: model.kind = \"" + std::string(name_of(kModelKinds, c.model.kind)) +
+        "\" has no tilt degree of freedom (no model kind of run or sweep has one: "
+        "the inner ring only translates), so it cannot carry a moment; allowed: [0, 0] "
+        "here; the moment is used by `bearing-sim stiffness` and `info` (the 5-DOF "
+        "static solution)");
+  ModelInputs loads;  // only for its radial_load(): the weight with gravity on
+  loads.load = c.operation.load;
+  loads.gravity = c.operation.gravity;
+  loads.mass = c.rotor.mass;
+  check_axial_load_supported(c.model.kind, c.operation.axial_load, loads.radial_load().norm());
+}
+
+}  // namespace
+
+void check_run_loads(const Case& c) {
+  try {
+    check_loads(c);
+  } catch (const InputError& e) {  // named by the case, as the case reader's errors are
+    throw InputError(c.source.empty() ? std::string(e.what()) : c.source + ": " + e.what());
+  }
+}
+
 RunSettings run_settings(const Case& c) {
+  check_run_loads(c);
   RunSettings s;
   s.kind = c.model.kind;
   s.model = model_inputs(c);
@@ -58,6 +89,7 @@ RunSettings run_settings(const Case& c) {
 }
 
 std::unique_ptr<BearingModel> make_model(const Case& c) {
+  check_run_loads(c);
   return make_dynamic_model(c.model.kind, model_inputs(c));
 }
 

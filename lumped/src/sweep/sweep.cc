@@ -32,6 +32,13 @@ double parse_end(const std::string& text, const SweepAxis& axis, const std::stri
       throw InputError(key + " = \"" + text + "\": " + axis.key + " takes whole numbers");
     return static_cast<double>(v);
   }
+  // A plain number is SI, as in a case file and in --cases (0:200:3 N of operation.axial_load),
+  // except for angles and speeds, which need a unit (0 needs none).
+  double v = 0;
+  const auto res = std::from_chars(text.data(), text.data() + text.size(), v);
+  if (!text.empty() && res.ec == std::errc() && res.ptr == text.data() + text.size() &&
+      std::isfinite(v) && (bare_number_is_si(axis.dimension) || v == 0))
+    return v;
   return parse_quantity(text, axis.dimension, key);
 }
 

@@ -31,6 +31,10 @@ FOLDER is recognised by its files:
   ptp, kurtosis, crest, peak_frequency; one panel per ring channel) and ``sweep_spl``: against the
   varied key as lines (one key), as heat maps (two keys), as points against each key (three and
   more);
+- a stiffness output (``bearing-sim stiffness --out FOLDER``: ``stiffness.csv``) gives
+  ``stiffness``: the bearing's stiffness terms against the first varied key, one panel per unit
+  (N/m: forces by displacements, N/rad: forces by tilts, N·m/rad: moments by tilts), each diagonal
+  term solid and the largest couplings above round-off dashed; a single point as bars;
 - a contact output (``bearing-fem contact --out FOLDER``: ``force_approach.csv`` and
   ``contact.json``) gives ``force_approach``: the FE force against the approach on log axes with
   the Hertz law, and the FE/Hertz deviation of force, semi-axes and peak pressure per step;
@@ -47,7 +51,8 @@ status: 0 written, 2 the folder (or file) is none of the above.
 
 Library use: ``load_run(folder)``, ``run_figures(run)`` (name -> matplotlib Figure),
 ``record_figures(load_analysis(folder))``,
-``sweep_figures(load_sweep(folder))``, ``contact_figure(load_contact(folder))``,
+``sweep_figures(load_sweep(folder))``, ``stiffness_figure(load_stiffness(folder))``,
+``contact_figure(load_contact(folder))``,
 ``calibration_figure(load_calibration(path))``, ``plot_folder(folder, out, fmt)``; and the panel
 functions ``trace_axes``, ``orbit_axes``, ``spectrum_axes``, ``ball_load_axes``, ``spl_axes``,
 ``force_approach_axes``, ``series_axes``, ``mark_lines``, ``sweep_line_axes``,
@@ -86,6 +91,8 @@ from .run_figures import (  # noqa: F401
     time_figure)
 from .sweep_figures import (  # noqa: F401
     STATISTIC_SHORT, channel_title, key_display, statistic_display, sweep_figures)
+from .stiffness_figure import (  # noqa: F401
+    Stiffness, load_stiffness, panel_terms, stiffness_figure, term_name, term_unit)
 from .contact_figure import contact_figure  # noqa: F401
 from .calibration_figure import calibration_figure  # noqa: F401
 from .record_figures import Analysis, load_analysis, record_figures  # noqa: F401

@@ -11,6 +11,7 @@ from .folders import detect, load_calibration, load_contact, load_run, load_swee
 from .run_figures import run_figures
 from .record_figures import load_analysis, record_figures
 from .sweep_figures import sweep_figures
+from .stiffness_figure import load_stiffness, stiffness_figure
 from .contact_figure import contact_figure
 from .calibration_figure import calibration_figure
 
@@ -18,7 +19,7 @@ from .calibration_figure import calibration_figure
 # --- folders and the command line ------------------------------------------------------------
 
 KNOWN_NAMES = ("time", "orbit", "spectrum", "envelope", "ball_loads", "ball_channels", "spl",
-               "sensor", "force_approach", "calibration", "sweep_spl") + tuple("sweep_" + s
+               "sensor", "force_approach", "calibration", "stiffness", "sweep_spl") + tuple("sweep_" + s
                                                                     for s in STATISTICS)
 
 
@@ -32,6 +33,8 @@ def figures_of(folder):
         return kind, record_figures(load_analysis(folder))
     if kind == "sweep":
         return kind, sweep_figures(load_sweep(folder))
+    if kind == "stiffness":
+        return kind, {"stiffness": stiffness_figure(load_stiffness(folder))}
     if kind == "calibration":
         return kind, {"calibration": calibration_figure(load_calibration(folder))}
     return kind, {"force_approach": contact_figure(load_contact(folder))}
@@ -81,10 +84,11 @@ def main(argv=None):
         epilog="Run: time, orbit, spectrum, and with their outputs envelope, ball_loads, "
                "ball_channels, spl (a 3-DOF run adds z and az to time and spectrum). Analysed "
                "record: spectrum, envelope (with the squared envelope spectrum's fault lines). "
-               "Sweep: sweep_<statistic>, sweep_spl. Contact: force_approach. Calibration: "
+               "Sweep: sweep_<statistic>, sweep_spl. Stiffness: stiffness. Contact: force_approach. "
+               "Calibration: "
                "calibration.")
-    parser.add_argument("folder",
-                        metavar="RUN_DIR|ANALYSIS_DIR|SWEEP_DIR|CONTACT_DIR|CALIBRATION.json")
+    parser.add_argument(
+        "folder", metavar="RUN_DIR|ANALYSIS_DIR|SWEEP_DIR|STIFFNESS_DIR|CONTACT_DIR|CALIBRATION.json")
     parser.add_argument("--out", metavar="DIR", help="where the figures go (default FOLDER/plots; "
                         "for DIR/STEM.json, DIR/STEM_plots)")
     parser.add_argument("--format", choices=FORMATS, default="png", help="file format (png)")

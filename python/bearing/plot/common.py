@@ -24,6 +24,7 @@ SIZES = {
     "record_spectrum": (13.0, 6.0),
     "record_envelope": (13.0, 8.5),
     "calibration": (13.0, 10.0),
+    "stiffness": (15.0, 5.4),
     "report": (7.0, 4.4),  # one panel of the verification report (bearing-verify)
 }
 FORMATS = ("png", "svg", "pdf")

@@ -320,7 +320,8 @@ def _is_calibration(path):
 
 
 def detect(folder):
-    """'run', 'analysis', 'sweep', 'contact' or 'calibration'; FolderError naming the folder and
+    """'run', 'analysis', 'stiffness', 'sweep', 'contact' or 'calibration'; FolderError naming the
+    folder and
     what was expected. A calibration may be named by its JSON file."""
     if os.path.isfile(folder):
         if calibration_file(folder):
@@ -336,6 +337,8 @@ def detect(folder):
     if (has("summary.json") and (has("spectrum.csv") or has("spectrum.npy"))
             and "record" in _read_json(os.path.join(folder, "summary.json"))):
         return "analysis"
+    if has("stiffness.csv"):
+        return "stiffness"
     if has("sweep.csv"):
         return "sweep"
     if has("force_approach.csv") and has("contact.json"):
@@ -346,12 +349,13 @@ def detect(folder):
     for sub in sorted(os.listdir(folder)):
         path = os.path.join(folder, sub)
         if os.path.isdir(path) and any(os.path.isfile(os.path.join(path, f)) for f in (
-                "summary.json", "sweep.csv", "force_approach.csv")):
+                "summary.json", "sweep.csv", "stiffness.csv", "force_approach.csv")):
             inside.append(sub)
     raise FolderError(
         "%s is not a folder bearing-plot knows: expected a bearing-sim run (summary.json with "
         "response.csv or response.npy), an analysed record (summary.json with a record block "
-        "and spectrum.csv or .npy), a bearing-sim sweep (sweep.csv), a bearing-fem contact "
+        "and spectrum.csv or .npy), a bearing-sim sweep (sweep.csv), a bearing-sim stiffness "
+        "output (stiffness.csv), a bearing-fem contact "
         "output (force_approach.csv with contact.json) or a bearing-fem calibration (its JSON "
         "file)%s" % (
             folder, "; its subfolders %s are: plot each of them" % ", ".join(inside[:6])

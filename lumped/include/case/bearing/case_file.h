@@ -42,6 +42,9 @@ struct Operation {
   double speed = 0.0;                              ///< inner-ring speed ω_i [rad/s]
   Eigen::Vector2d load = Eigen::Vector2d::Zero();  ///< radial load (F_x, F_y) on the inner ring [N]
   double axial_load = 0.0;                         ///< axial load F_z on the inner ring [N] (3-DOF)
+  /// Moments (M_x, M_y) on the inner ring [N m], about +x and +y. Only the 5-DOF static solution
+  /// (`stiffness`, `info`) carries them; `run` refuses a nonzero one (check_run_loads).
+  Eigen::Vector2d moment = Eigen::Vector2d::Zero();
   double unbalance = 0.0;  ///< m_u e [kg m]; F_u = m_u e ω_i², rotating with the shaft
   bool gravity = false;    ///< add the rotor weight −m g to F_y
 };
@@ -170,7 +173,8 @@ Case default_case(const std::vector<Override>& overrides = {});
 std::string case_to_toml(const Case& c);
 
 /// The dimension of a numeric case-file key ("operation.speed" → angular speed; an array index
-/// may appear: "waviness.inner.0.amplitude"), for sweeps. Throws InputError for other keys.
+/// may appear: "waviness.inner.0.amplitude"), for sweeps. Throws InputError for other keys (an
+/// unknown one with the nearest known key).
 Dimension key_dimension(const std::string& key);
 
 /// Whether a key takes a whole number (bearing.balls, waviness orders, ...).

@@ -24,6 +24,7 @@ enum class Dimension {
   mass_length,    ///< SI: kg m (unbalance: mass times eccentricity)
   velocity,       ///< SI: m/s (speed of sound)
   inertia,        ///< SI: kg m^2 (a ball's moment of inertia)
+  moment,         ///< SI: N m (a moment of force, a torque: operation.moment)
   dimensionless,  ///< no unit
 };
 

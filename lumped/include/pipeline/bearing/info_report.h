@@ -13,6 +13,7 @@
 #include "bearing/kinematics.h"
 #include "bearing/models/housing.h"
 #include "bearing/static_load.h"
+#include "bearing/stiffness.h"
 
 namespace bearing {
 
@@ -48,6 +49,11 @@ struct InfoReport {
   /// With [housing]: the undamped modes of the bearing on the housing at the static state
   /// (housing_modes, housing.h), ascending.
   std::vector<HousingMode> housing_modes;
+  /// The 5-DOF static state and stiffness at the case's loads, radial, axial and moments
+  /// together, whatever the model kind (stiffness.h); empty when it has none, with the reason in
+  /// stiffness_error (a clearance beyond the 5-DOF geometry, no equilibrium reached).
+  std::optional<StiffnessPoint> stiffness;
+  std::string stiffness_error;
 };
 
 /// The warning `info` and `run` give when the static load's peak Hertz pressure passes
@@ -66,7 +72,9 @@ InfoReport compute_info(const Case& c);
 /// contact.calibration (calibration_json, json_helpers.h); with [[defects]], defects[] with
 /// location, width, depth [m], inner_drop, outer_drop [m], crossing, max_step [s] (null at rest);
 /// with [housing], housing.{mass [kg], frequency [Hz], damping_ratio, stiffness [N/m], damping
-/// [N s/m], modes[].{frequency [Hz], housing_share}}.
+/// [N s/m], modes[].{frequency [Hz], housing_share}}; stiffness.{dofs, load [N, N m],
+/// displacement [m, rad], matrix (5×5 K = dF/dq) [N/m, N/rad, N m/rad], q_max [N],
+/// loaded_balls} (stiffness.h), or null with stiffness_error saying why.
 /// Throws SolverError if any value is not finite.
 nlohmann::json info_json(const InfoReport& report);
 

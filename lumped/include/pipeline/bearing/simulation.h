@@ -32,13 +32,20 @@ struct RunSettings {
   AcousticsOptions acoustics;  ///< enabled only with an [acoustics] table
 };
 
-/// The one Case → settings mapper.
+/// The loads of `c` its model kind must carry to run: operation.axial_load needs a kind with an
+/// axial DOF (check_axial_load_supported), and operation.moment must be [0, 0] (no kind has a tilt
+/// DOF). Throws InputError naming the key, its value and why. run_settings() and make_model() call
+/// it; the static analyses (info, the 5-DOF stiffness) carry every load and do not.
+void check_run_loads(const Case& c);
+
+/// The one Case → settings mapper (check_run_loads first).
 RunSettings run_settings(const Case& c);
 
 /// The model inputs a case describes (run_settings(c).model).
 ModelInputs model_inputs(const Case& c);
 
-/// The dynamic model of `c.model.kind` (InputError for a kind without equations of motion).
+/// The dynamic model of `c.model.kind` (InputError for a kind without equations of motion, or
+/// loads it cannot carry: check_run_loads).
 std::unique_ptr<BearingModel> make_model(const Case& c);
 
 struct SimulationResult {

@@ -18,7 +18,8 @@
 
 namespace bearing {
 
-/// Parses `KEY=FROM:TO:N`; FROM and TO may carry units ("1000rpm:3000rpm:5"), N in 1…100000.
+/// Parses `KEY=FROM:TO:N`; FROM and TO may carry units ("1000rpm:3000rpm:5"; a plain number is
+/// SI, except for angles and speeds: "0:200:3" N of operation.axial_load), N in 1…100000.
 /// Throws InputError naming `--vary`, the text and what is allowed.
 SweepAxis parse_vary(std::string_view text);
 

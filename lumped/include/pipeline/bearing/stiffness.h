@@ -1,0 +1,62 @@
+#pragma once
+// The bearing's stiffness at a case's operating point, for rotor models (issue 32): the case
+// mapped to the 5-DOF static solution of the inner ring (five_dof_static.h) and solved. What
+// `bearing-sim stiffness` writes per operating point, what `info` shows and `bearing.stiffness`
+// returns.
+//
+// Coordinates: q = (x, y, z, gx, gy) = (δx, δy, δz, γx, γy) [m, m, m, rad, rad], the inner ring's
+// displacement from the centred position and its tilts about +x and +y; F = (Fx, Fy, Fz, Mx, My)
+// [N, N, N, N m, N m] the load on it. K = ∂F/∂q, symmetric: N/m between forces and
+// displacements, N/rad between forces and tilts (= N m/m, moments and displacements), N m/rad
+// between moments and tilts. Assumed: rigid rings, the outer ring fixed, zero speed (no
+// centrifugal ball load, no gyroscopic moment: operation.speed does not enter), no damping.
+
+#include <array>
+#include <string>
+
+#include "bearing/case_file.h"
+#include "bearing/five_dof_static.h"
+
+namespace bearing {
+
+/// The DOF names (x, y, z, gx, gy), their units (m, rad) and the load components' (N, N*m).
+constexpr std::array<const char*, 5> kStiffnessDofs = {"x", "y", "z", "gx", "gy"};
+constexpr std::array<const char*, 5> kStiffnessDofUnits = {"m", "m", "m", "rad", "rad"};
+constexpr std::array<const char*, 5> kStiffnessLoadUnits = {"N", "N", "N", "N*m", "N*m"};
+
+/// The unit of K_ij = ∂F_i/∂q_j: "N/m", "N/rad", "N" or "N*m/rad".
+std::string stiffness_unit(int i, int j);
+
+/// The name of K_ij for i ≤ j: "k_" and both DOF names, joined by "_" when one is a tilt
+/// ("k_xx", "k_yz", "k_x_gx", "k_gx_gy").
+std::string stiffness_name(int i, int j);
+
+/// The load vector of a case [N, N m]: (Fx, Fy) the constant radial load with the rotor weight
+/// −m g on Fy when operation.gravity is on (ModelInputs::radial_load), Fz = operation.axial_load,
+/// (Mx, My) = operation.moment.
+Vector5 five_dof_load_of(const Case& c);
+
+/// The case's bearing with its contact law (contact_constants(c): a Hertz method, or the
+/// calibrated constants), ball 0 at the cage phase of its model inputs. Throws InputError naming
+/// bearing.clearance when the clearance leaves no contact angle below 90°.
+FiveDofBearing five_dof_bearing_of(const Case& c);
+
+/// The 5-DOF static state at one operating point.
+struct StiffnessPoint {
+  Vector5 load = Vector5::Zero();  ///< F = (Fx, Fy, Fz, Mx, My) [N, N, N, N m, N m]
+  FiveDofSolution solution;        ///< q [m, rad], K [N/m, N/rad, N m/rad], the balls
+  /// Peak Hertz pressure of the most loaded ball at the inner and outer race [Pa]; beyond
+  /// kElasticPressureLimit (contact.h) the elastic contact law, and so K, does not hold.
+  double inner_peak_pressure = 0, outer_peak_pressure = 0;
+  bool elastic() const;
+  /// The largest ball load [N] (0: no ball loaded, e.g. no load, K = 0).
+  double q_max() const;
+  /// The balls that carry a load.
+  int loaded_balls() const;
+};
+
+/// Solves the case's operating point: five_dof_bearing_of(c) under five_dof_load_of(c), every
+/// DOF free. Throws InputError (clearance) or SolverError (no equilibrium reached).
+StiffnessPoint stiffness_point(const Case& c);
+
+}  // namespace bearing

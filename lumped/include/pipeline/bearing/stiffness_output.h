@@ -1,0 +1,77 @@
+#pragma once
+// The files and tables of `bearing-sim stiffness` (docs/bearing-sim.md, "stiffness"): one row per
+// operating point in stiffness.csv, everything in stiffness.json, a readable table, and the table
+// ROSS's BearingElement reads (stiffness_ross.csv). Written all or nothing (atomic_file_set.h).
+
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "bearing/stiffness.h"
+
+namespace bearing {
+
+/// A varied key of the operating points: its case-file key and SI unit ("" dimensionless).
+struct StiffnessKey {
+  std::string key;   ///< "operation.axial_load"
+  std::string unit;  ///< "N"
+};
+
+/// One operating point: the varied keys' values (SI), the case's speed and its solution.
+struct StiffnessRow {
+  std::vector<double> values;  ///< one per StiffnessTable::keys [SI]
+  double speed = 0;            ///< operation.speed [rad/s] (not used by the solution: zero speed)
+  StiffnessPoint point;
+};
+
+/// The operating points of one `bearing-sim stiffness` call.
+struct StiffnessTable {
+  std::string source;              ///< the case file, or "built-in default case"
+  std::string bearing;             ///< its designation ("6308")
+  std::vector<StiffnessKey> keys;  ///< the varied keys, in column order (none: one point)
+  std::vector<StiffnessRow> rows;  ///< the points, the first key varying slowest
+};
+
+/// stiffness.csv: per point the varied keys ("operation.axial_load [N]"), the 15 K_ij with
+/// i ≤ j ("k_xx [N/m]", …, "k_x_gx [N/rad]", …, "k_gy_gy [N*m/rad]"), the displacement ("x [m]",
+/// …, "gy [rad]"), "q_max [N]", "loaded_balls", then the load ("Fx [N]", …, "My [N*m]");
+/// shortest round-trip numbers.
+std::string stiffness_csv(const StiffnessTable& t);
+
+/// stiffness.json: the case, what the model assumes, the DOFs and units, and per point the
+/// varied values, load, displacement, the full 5×5 matrix, each ball's angle, load and contact
+/// angle, the peak Hertz pressures and whether they are within the elastic limit. Throws
+/// SolverError naming the first non-finite value.
+nlohmann::json stiffness_json(const StiffnessTable& t);
+
+/// The matrix K with row (Fx [N] … My [N*m]) and column (x [m] … gy [rad]) labels and the units of
+/// its blocks, each line started by `indent` (also `info`'s).
+std::string stiffness_matrix_text(const Matrix5& K, const std::string& indent = "  ");
+
+/// What the reader of a matrix must know when it is singular, as a line started by `indent`: no
+/// ball loaded (K = 0), or fewer than 3 (each ball stiffens the ring in two directions only);
+/// "" otherwise.
+std::string stiffness_note(const StiffnessPoint& p, const std::string& indent = "  ");
+
+/// The warning `stiffness` gives when points pass the elastic limit (StiffnessPoint::elastic):
+/// how many, the first one's varied values and pressure; "" when none does.
+std::string stiffness_elastic_warning(const StiffnessTable& t);
+
+/// The readable table: for one point its load, displacement, balls and matrix; for several, the
+/// main terms (diagonal, q_max, loaded balls) per point.
+std::string stiffness_text(const StiffnessTable& t);
+
+/// stiffness_ross.csv, the table ROSS's BearingElement reads (its from_table column names):
+/// frequency [rad/s] (operation.speed), kxx, kxy, kyx, kyy [N/m], cxx, cxy, cyx, cyy [N s/m], the
+/// damping columns 0 (the model has none); rows by ascending speed. ROSS interpolates over the
+/// speed, so the points may vary operation.speed only. Throws InputError naming --format ross,
+/// the varied keys or the repeated speed otherwise.
+std::string stiffness_ross_csv(const StiffnessTable& t);
+
+/// Writes dir/stiffness.csv and stiffness.json, with `ross` also stiffness_ross.csv, all or
+/// nothing (the folder is created only once every file's text is made). Throws InputError (the
+/// folder cannot be made, ROSS's table impossible) or OutputError.
+void write_stiffness(const std::string& dir, const StiffnessTable& t, bool ross);
+
+}  // namespace bearing

@@ -1,0 +1,72 @@
+// A case's operating point through the 5-DOF static solution (stiffness.h).
+
+#include "bearing/stiffness.h"
+
+#include <algorithm>
+
+#include "bearing/simulation.h"
+
+namespace bearing {
+
+std::string stiffness_unit(int i, int j) {
+  const bool moment = i >= 3, tilt = j >= 3;
+  if (moment && tilt) return "N*m/rad";
+  if (moment) return "N";  // N m per m
+  return tilt ? "N/rad" : "N/m";
+}
+
+std::string stiffness_name(int i, int j) {
+  const std::string a = kStiffnessDofs[i], b = kStiffnessDofs[j];
+  return "k_" + a + (a.size() == 1 && b.size() == 1 ? "" : "_") + b;
+}
+
+namespace {
+
+// Both from one mapping of the case (model_inputs computes the contact constants).
+Vector5 load_of(const Case& c, const ModelInputs& in) {
+  const Eigen::Vector2d radial = in.radial_load();
+  Vector5 f;
+  f << radial.x(), radial.y(), c.operation.axial_load, c.operation.moment.x(),
+      c.operation.moment.y();
+  return f;
+}
+
+FiveDofBearing bearing_of(const ModelInputs& in) {
+  return five_dof_bearing(in.bearing, in.contact, in.cage_phase);
+}
+
+}  // namespace
+
+Vector5 five_dof_load_of(const Case& c) {
+  return load_of(c, model_inputs(c));
+}
+
+FiveDofBearing five_dof_bearing_of(const Case& c) {
+  return bearing_of(model_inputs(c));
+}
+
+double StiffnessPoint::q_max() const {
+  const auto& q = solution.at.ball_loads;
+  return q.empty() ? 0.0 : *std::max_element(q.begin(), q.end());
+}
+
+int StiffnessPoint::loaded_balls() const {
+  const auto& q = solution.at.ball_loads;
+  return static_cast<int>(std::count_if(q.begin(), q.end(), [](double v) { return v > 0; }));
+}
+
+bool StiffnessPoint::elastic() const {
+  return !(std::max(inner_peak_pressure, outer_peak_pressure) > kElasticPressureLimit);
+}
+
+StiffnessPoint stiffness_point(const Case& c) {
+  const ModelInputs in = model_inputs(c);
+  StiffnessPoint p;
+  p.load = load_of(c, in);
+  p.solution = solve_five_dof(bearing_of(in), p.load);
+  p.inner_peak_pressure = in.contact.inner.peak_pressure(p.q_max());
+  p.outer_peak_pressure = in.contact.outer.peak_pressure(p.q_max());
+  return p;
+}
+
+}  // namespace bearing

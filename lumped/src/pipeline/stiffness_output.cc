@@ -1,0 +1,348 @@
+// The files and tables of `bearing-sim stiffness` (stiffness_output.h).
+
+#include "bearing/stiffness_output.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <sstream>
+
+#include "bearing/atomic_file_set.h"
+#include "bearing/errors.h"
+#include "bearing/json_helpers.h"
+#include "bearing/units.h"
+
+namespace bearing {
+
+namespace {
+
+constexpr std::array<const char*, 5> kLoadNames = {"Fx", "Fy", "Fz", "Mx", "My"};
+
+// The shortest "%.*g" text that reads back as exactly `v`: the files hold the solver's doubles
+// bit for bit (format_number allows 2 ulp).
+std::string exact(double v) {
+  if (v == 0) v = 0;  // "0", not "-0"
+  char buf[64];
+  for (int digits = 1; digits <= 17; ++digits) {
+    std::snprintf(buf, sizeof buf, "%.*g", digits, v);
+    if (std::strtod(buf, nullptr) == v) break;
+  }
+  return buf;
+}
+
+std::string with_unit(const std::string& name, const std::string& unit) {
+  return name + " [" + (unit.empty() ? "-" : unit) + "]";
+}
+
+std::string num(double v, int digits = 5) {
+  if (v == 0) v = 0;  // no "-0"
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "%.*g", digits, v);
+  return buf;
+}
+
+// Fixed decimals: the solver's round-off (~1e-21 m) is not worth showing as "-1.3e-15 um".
+std::string fixed(double v, int decimals) {
+  if (std::fabs(v) < 0.5 * std::pow(10.0, -decimals)) v = 0.0;
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "%.*f", decimals, v);
+  return buf;
+}
+
+std::string pad(const std::string& s, std::size_t width) {
+  return s.size() >= width ? s : std::string(width - s.size(), ' ') + s;
+}
+
+// "operation.axial_load = 100 N, bearing.clearance = 1e-05 m": the varied values of a row.
+std::string point_values(const StiffnessTable& t, const StiffnessRow& r) {
+  std::string out;
+  for (std::size_t k = 0; k < t.keys.size(); ++k)
+    out += (k ? ", " : "") + t.keys[k].key + " = " + format_number(r.values[k]) +
+           (t.keys[k].unit.empty() ? "" : " " + t.keys[k].unit);
+  return out;
+}
+
+nlohmann::json vector_json(const Vector5& v) {
+  return nlohmann::json(std::vector<double>(v.data(), v.data() + 5));
+}
+
+nlohmann::json matrix_json(const Matrix5& K) {
+  nlohmann::json rows = nlohmann::json::array();
+  for (int i = 0; i < 5; ++i) rows.push_back(vector_json(K.row(i).transpose()));
+  return rows;
+}
+
+nlohmann::json point_json(const StiffnessTable& t, const StiffnessRow& r) {
+  const FiveDofSolution& s = r.point.solution;
+  nlohmann::json values = nlohmann::json::object();
+  for (std::size_t k = 0; k < t.keys.size(); ++k) values[t.keys[k].key] = r.values[k];
+  return {{"values", values},
+          {"speed", r.speed},
+          {"load", vector_json(r.point.load)},
+          {"displacement", vector_json(s.displacement)},
+          {"stiffness", matrix_json(s.at.stiffness)},
+          {"q_max", r.point.q_max()},
+          {"loaded_balls", r.point.loaded_balls()},
+          {"ball_angles", s.at.ball_angles},
+          {"ball_loads", s.at.ball_loads},
+          {"contact_angles", s.at.contact_angles},
+          {"peak_pressure",
+           {{"inner", r.point.inner_peak_pressure}, {"outer", r.point.outer_peak_pressure}}},
+          {"elastic", r.point.elastic()},
+          {"residual", s.residual},
+          {"iterations", s.iterations}};
+}
+
+nlohmann::json units_json() {
+  nlohmann::json k = nlohmann::json::array();
+  for (int i = 0; i < 5; ++i) {
+    nlohmann::json row = nlohmann::json::array();
+    for (int j = 0; j < 5; ++j) row.push_back(stiffness_unit(i, j));
+    k.push_back(row);
+  }
+  return {{"values", "SI, the unit of each key in varied[]"},
+          {"speed", "rad/s"},
+          {"load", kStiffnessLoadUnits},
+          {"displacement", kStiffnessDofUnits},
+          {"stiffness", k},
+          {"q_max", "N"},
+          {"ball_angles", "rad"},
+          {"ball_loads", "N"},
+          {"contact_angles", "rad"},
+          {"peak_pressure", "Pa"},
+          {"pressure_limit", "Pa"},
+          {"residual", "1"}};
+}
+
+constexpr std::array<const char*, 5> kAssumptions = {
+    "the 5-DOF static equilibrium of the inner ring (x, y, z, gx, gy) on Hertzian ball contacts "
+    "Q = K delta^n, each ball's contact angle following the deflection (five_dof_static.h)",
+    "rigid rings; the outer ring fixed",
+    "zero speed: no centrifugal ball load and no gyroscopic moment, so operation.speed does not "
+    "change K (the speed column is the case's, for the rotor model's table)",
+    "no damping: the bearing's damping is not modelled (ROSS's cxx..cyy are written as 0)",
+    "K = dF/dq is the tangent stiffness at the equilibrium under the load F, symmetric; the "
+    "force the bearing exerts on the ring for a small extra displacement dq is -K dq"};
+
+}  // namespace
+
+std::string stiffness_csv(const StiffnessTable& t) {
+  std::ostringstream o;
+  std::vector<std::string> header;
+  for (const auto& k : t.keys) header.push_back(with_unit(k.key, k.unit));
+  for (int i = 0; i < 5; ++i)
+    for (int j = i; j < 5; ++j)
+      header.push_back(with_unit(stiffness_name(i, j), stiffness_unit(i, j)));
+  for (int i = 0; i < 5; ++i) header.push_back(with_unit(kStiffnessDofs[i], kStiffnessDofUnits[i]));
+  header.push_back("q_max [N]");
+  header.push_back("loaded_balls");
+  for (int i = 0; i < 5; ++i) header.push_back(with_unit(kLoadNames[i], kStiffnessLoadUnits[i]));
+  for (std::size_t c = 0; c < header.size(); ++c) o << (c ? "," : "") << header[c];
+  o << "\n";
+  for (const StiffnessRow& r : t.rows) {
+    const FiveDofSolution& s = r.point.solution;
+    std::vector<std::string> cells;
+    for (double v : r.values) cells.push_back(exact(v));
+    for (int i = 0; i < 5; ++i)
+      for (int j = i; j < 5; ++j) cells.push_back(exact(s.at.stiffness(i, j)));
+    for (int i = 0; i < 5; ++i) cells.push_back(exact(s.displacement(i)));
+    cells.push_back(exact(r.point.q_max()));
+    cells.push_back(std::to_string(r.point.loaded_balls()));
+    for (int i = 0; i < 5; ++i) cells.push_back(exact(r.point.load(i)));
+    for (std::size_t c = 0; c < cells.size(); ++c) o << (c ? "," : "") << cells[c];
+    o << "\n";
+  }
+  return o.str();
+}
+
+nlohmann::json stiffness_json(const StiffnessTable& t) {
+  using nlohmann::json;
+  json varied = json::array();
+  for (const auto& k : t.keys) varied.push_back({{"key", k.key}, {"unit", k.unit}});
+  json points = json::array();
+  for (const StiffnessRow& r : t.rows) points.push_back(point_json(t, r));
+  json j = {{"case", {{"source", t.source}, {"bearing", t.bearing}}},
+            {"model",
+             {{"name", "5-DOF static solution of the inner ring"}, {"assumptions", kAssumptions}}},
+            {"dofs", kStiffnessDofs},
+            {"loads", kLoadNames},
+            {"stiffness_definition",
+             "stiffness[i][j] = dF_i/dq_j, F = (Fx, Fy, Fz, Mx, My) the load on the inner ring, "
+             "q = (x, y, z, gx, gy) its displacement and tilts about +x and +y; y is up"},
+            {"pressure_limit", kElasticPressureLimit},
+            {"varied", varied},
+            {"points", points},
+            {"units", units_json()}};
+  require_finite(j);
+  return j;
+}
+
+namespace {
+
+// The largest |K_ij| of the block of one unit: forces or moments (rows) by displacements or
+// tilts (columns); the off-diagonal blocks taken together, as K is symmetric.
+double block_scale(const Matrix5& K, bool moment_row, bool tilt_column) {
+  double m = 0;
+  for (int i = 0; i < 5; ++i)
+    for (int j = 0; j < 5; ++j) {
+      const bool mixed = (i >= 3) != (j >= 3), want_mixed = moment_row != tilt_column;
+      if (mixed ? want_mixed : (!want_mixed && (i >= 3) == moment_row))
+        m = std::max(m, std::fabs(K(i, j)));
+    }
+  return m;
+}
+
+}  // namespace
+
+std::string stiffness_matrix_text(const Matrix5& K, const std::string& indent) {
+  std::ostringstream o;
+  o << indent << pad("K = dF/dq", 12);
+  for (int j = 0; j < 5; ++j) o << pad(with_unit(kStiffnessDofs[j], kStiffnessDofUnits[j]), 13);
+  o << "\n";
+  for (int i = 0; i < 5; ++i) {
+    o << indent << pad(with_unit(kLoadNames[i], kStiffnessLoadUnits[i]), 12);
+    for (int j = 0; j < 5; ++j) {
+      // A term at round-off of its block's largest (e.g. 1e-9 N/m beside 1e7 N/m) shows as 0.
+      const double scale = block_scale(K, i >= 3, j >= 3);
+      o << pad(num(std::fabs(K(i, j)) <= 1e-12 * scale ? 0.0 : K(i, j)), 13);
+    }
+    o << "\n";
+  }
+  o << indent
+    << "units: N/m (Fx, Fy, Fz by x, y, z), N/rad (Fx, Fy, Fz by gx, gy), N (Mx, My by x, y, z), "
+       "N*m/rad (Mx, My by gx, gy); symmetric\n";
+  return o.str();
+}
+
+std::string stiffness_elastic_warning(const StiffnessTable& t) {
+  const auto beyond = [](const StiffnessRow& r) { return !r.point.elastic(); };
+  const auto first = std::find_if(t.rows.begin(), t.rows.end(), beyond);
+  if (first == t.rows.end()) return "";
+  const auto n = std::count_if(t.rows.begin(), t.rows.end(), beyond);
+  const double p = std::max(first->point.inner_peak_pressure, first->point.outer_peak_pressure);
+  std::string where = t.keys.empty()
+                          ? "at the operating point"
+                          : "at " + std::to_string(n) + " of " + std::to_string(t.rows.size()) +
+                                " operating points (first: " + point_values(t, *first) + ")";
+  return where + " the most loaded ball's peak Hertz pressure, " + num(p * 1e-9, 3) +
+         " GPa, passes the elastic limit of " + num(kElasticPressureLimit * 1e-9, 2) +
+         " GPa (ISO 76): the contacts yield, and the elastic contact law behind K does not hold "
+         "there";
+}
+
+std::string stiffness_note(const StiffnessPoint& p, const std::string& indent) {
+  const int n = p.loaded_balls();
+  if (n == 0)
+    return indent +
+           "no ball is loaded (the ring sits in the clearance): K = 0; give operation.load, "
+           "operation.axial_load or operation.moment\n";
+  if (n < 3)
+    return indent + "only " + std::to_string(n) + " ball" + (n == 1 ? "" : "s") +
+           " loaded: K is singular (a ball stiffens the ring in two directions only); a "
+           "preload (operation.axial_load) or a larger load loads more balls\n";
+  return "";
+}
+
+std::string stiffness_text(const StiffnessTable& t) {
+  std::ostringstream o;
+  o << "Bearing stiffness (5-DOF static solution of the inner ring: rigid rings, zero speed, no "
+       "damping)\nCase: "
+    << t.source << (t.bearing.empty() ? "" : " (" + t.bearing + ")") << "\n";
+  if (t.rows.size() == 1) {
+    const StiffnessPoint& p = t.rows.front().point;
+    const Vector5& q = p.solution.displacement;
+    if (!t.keys.empty()) o << "Point: " << point_values(t, t.rows.front()) << "\n";
+    o << "Load on the inner ring: Fx = " << num(p.load(0)) << " N, Fy = " << num(p.load(1))
+      << " N, Fz = " << num(p.load(2)) << " N, Mx = " << num(p.load(3))
+      << " N*m, My = " << num(p.load(4)) << " N*m\n"
+      << "Displacement: x = " << fixed(q(0) * 1e6, 4) << " um, y = " << fixed(q(1) * 1e6, 4)
+      << " um, z = " << fixed(q(2) * 1e6, 4) << " um, gx = " << fixed(q(3) * 1e6, 4)
+      << " urad, gy = " << fixed(q(4) * 1e6, 4) << " urad\n"
+      << "Balls: " << p.loaded_balls() << " of " << p.solution.at.ball_loads.size()
+      << " loaded, the largest load " << num(p.q_max()) << " N\n\n"
+      << stiffness_matrix_text(p.solution.at.stiffness);
+    o << stiffness_note(p);
+    return o.str();
+  }
+  o << t.rows.size() << " operating points; the main terms (every term: stiffness.csv)\n";
+  for (const auto& k : t.keys)
+    if (k.key == "operation.speed")
+      o << "note: the model is at zero speed (no centrifugal ball load yet), so K is the same at "
+           "every operation.speed\n";
+  std::vector<std::string> head;
+  for (const auto& k : t.keys) head.push_back(with_unit(k.key, k.unit));
+  for (int i = 0; i < 5; ++i) head.push_back(with_unit(stiffness_name(i, i), stiffness_unit(i, i)));
+  head.push_back("q_max [N]");
+  head.push_back("loaded_balls");
+  std::vector<std::size_t> width;
+  for (const auto& h : head) width.push_back(std::max<std::size_t>(h.size() + 2, 13));
+  for (std::size_t c = 0; c < head.size(); ++c) o << pad(head[c], width[c]);
+  o << "\n";
+  for (const StiffnessRow& r : t.rows) {
+    std::vector<std::string> cells;
+    for (double v : r.values) cells.push_back(num(v));
+    const Matrix5& K = r.point.solution.at.stiffness;
+    for (int i = 0; i < 5; ++i)
+      cells.push_back(
+          num(std::fabs(K(i, i)) <= 1e-12 * block_scale(K, i >= 3, i >= 3) ? 0.0 : K(i, i)));
+    cells.push_back(num(r.point.q_max()));
+    cells.push_back(std::to_string(r.point.loaded_balls()));
+    for (std::size_t c = 0; c < cells.size(); ++c) o << pad(cells[c], width[c]);
+    o << "\n";
+  }
+  const bool singular = std::any_of(t.rows.begin(), t.rows.end(),
+                                    [](const auto& r) { return r.point.loaded_balls() < 3; });
+  if (singular)
+    o << "note: where fewer than 3 balls are loaded K is singular (a ball stiffens the ring in two "
+         "directions only; no ball: K = 0)\n";
+  return o.str();
+}
+
+std::string stiffness_ross_csv(const StiffnessTable& t) {
+  for (const auto& k : t.keys)
+    if (k.key != "operation.speed")
+      throw InputError(
+          "--format ross: ROSS's BearingElement interpolates its coefficients over "
+          "the speed (its frequency column), so the points may vary operation.speed "
+          "only; this call varies " +
+          k.key + " (write one table per value with --set " + k.key + "=...)");
+  std::vector<const StiffnessRow*> rows;
+  for (const auto& r : t.rows) rows.push_back(&r);
+  std::stable_sort(rows.begin(), rows.end(),
+                   [](const auto* a, const auto* b) { return a->speed < b->speed; });
+  for (std::size_t i = 1; i < rows.size(); ++i)
+    if (rows[i]->speed == rows[i - 1]->speed)
+      throw InputError("--format ross: operation.speed = " + format_number(rows[i]->speed) +
+                       " rad/s appears twice; ROSS needs each speed once (N = 1, or FROM != TO)");
+  std::ostringstream o;
+  o << "frequency,kxx,kxy,kyx,kyy,cxx,cxy,cyx,cyy\n";
+  for (const StiffnessRow* r : rows) {
+    const Matrix5& K = r->point.solution.at.stiffness;
+    o << exact(r->speed) << "," << exact(K(0, 0)) << "," << exact(K(0, 1)) << "," << exact(K(1, 0))
+      << "," << exact(K(1, 1)) << ",0,0,0,0\n";
+  }
+  return o.str();
+}
+
+void write_stiffness(const std::string& dir, const StiffnessTable& t, bool ross) {
+  namespace fs = std::filesystem;
+  // Every text first: an error leaves no folder and no file.
+  const std::string csv = stiffness_csv(t);
+  const std::string json = stiffness_json(t).dump(2) + "\n";
+  const std::string ross_csv = ross ? stiffness_ross_csv(t) : std::string();
+  std::error_code ec;
+  fs::create_directories(dir, ec);
+  if (ec) throw InputError("--out " + dir + ": cannot create the folder (" + ec.message() + ")");
+  std::vector<std::string> names = {"stiffness.csv", "stiffness.json"};
+  std::vector<std::string> others;  // an earlier call's ROSS table that this one does not write
+  (ross ? names : others).push_back("stiffness_ross.csv");
+  AtomicFileSet files(dir, names, others, "--out " + dir);
+  files.write("stiffness.csv", csv);
+  files.write("stiffness.json", json);
+  if (ross) files.write("stiffness_ross.csv", ross_csv);
+  files.commit();
+}
+
+}  // namespace bearing

@@ -1,0 +1,153 @@
+"""The figure of a `bearing-sim stiffness` folder: the bearing's stiffness terms against the varied
+key, one panel per unit (docs/rotordynamics.md)."""
+
+import csv
+import json
+import os
+import re
+
+import numpy as np
+
+from .common import FolderError, _new_figure, _style
+from .sweep_figures import key_display
+
+DOFS = ("x", "y", "z", "gx", "gy")
+# The panels: the unit of K_ij (i <= j) in stiffness.csv's header, and the panel's title.
+PANELS = (("N/m", "forces by displacements [N/m]"),
+          ("N/rad", "forces by tilts [N/rad] = moments by displacements [N]"),
+          ("N*m/rad", "moments by tilts [N·m/rad]"))
+SHOWN_UNIT = {"N/m": "N/m", "N/rad": "N/rad", "N*m/rad": "N·m/rad"}
+OFF_DIAGONAL_SHOWN = 3  # the largest off-diagonal terms per panel
+_COLUMN = re.compile(r"^(?P<name>.+?) \[(?P<unit>[^\]]*)\]$")
+
+
+def term_name(i, j):
+    """stiffness.csv's name of K_ij: "k_xx", "k_x_gx", "k_gx_gy" (as bearing/stiffness.h)."""
+    a, b = DOFS[i], DOFS[j]
+    return "k_" + a + ("" if len(a) == 1 and len(b) == 1 else "_") + b
+
+
+def term_unit(i, j):
+    """The unit of K_ij for i <= j: N/m, N/rad or N*m/rad."""
+    return "N*m/rad" if i >= 3 else ("N/rad" if j >= 3 else "N/m")
+
+
+class Stiffness:
+    """stiffness.csv (and the case named in stiffness.json): the varied keys, then the terms."""
+
+    def __init__(self, folder):
+        self.folder = folder
+        self.path = os.path.join(folder, "stiffness.csv")
+        with open(self.path, newline="") as f:
+            rows = [r for r in csv.reader(f) if r]
+        if not rows or "k_xx [N/m]" not in rows[0]:
+            raise FolderError("%s: no header with a k_xx [N/m] column" % self.path)
+        header = rows[0]
+        try:
+            values = np.array([[float(c) for c in r] for r in rows[1:]], ndmin=2)
+        except ValueError as e:
+            raise FolderError("%s: not a table of numbers (%s)" % (self.path, e)) from e
+        self.columns = {}  # name (without unit) -> (unit, values)
+        for k, text in enumerate(header):
+            m = _COLUMN.match(text)
+            name, unit = (m.group("name"), m.group("unit")) if m else (text, "")
+            self.columns[name] = (unit, values[:, k] if values.size else np.array([]))
+        self.keys = [_COLUMN.match(h).group("name") if _COLUMN.match(h) else h
+                     for h in header[:header.index("k_xx [N/m]")]]
+        self.source = ""
+        meta = os.path.join(folder, "stiffness.json")
+        if os.path.exists(meta):
+            try:
+                with open(meta) as f:
+                    case = json.load(f).get("case", {})
+                self.source = "%s (%s)" % (case.get("source", ""), case.get("bearing", ""))
+            except (OSError, ValueError):
+                pass
+
+    def __getitem__(self, name):
+        return self.columns[name][1]
+
+    @property
+    def points(self):
+        return len(self["k_xx"])
+
+    @property
+    def varied(self):
+        """The keys that take more than one value."""
+        return [k for k in self.keys if len(np.unique(self[k])) > 1]
+
+    @property
+    def name(self):
+        return os.path.basename(os.path.normpath(self.folder))
+
+
+def load_stiffness(folder):
+    return Stiffness(folder)
+
+
+def panel_terms(s, unit):
+    """(diagonal, off-diagonal) term names of one unit's panel: every diagonal term, and the
+    largest off-diagonal terms that are not round-off (|K_ij| above 1e-6 sqrt(|K_ii| |K_jj|))."""
+    peak = {name: float(np.max(np.abs(s[name]))) if s.points else 0.0
+            for name in (term_name(i, j) for i in range(5) for j in range(i, 5))}
+    diagonal = [term_name(i, i) for i in range(5) if term_unit(i, i) == unit]
+    off = []
+    for i in range(5):
+        for j in range(i + 1, 5):
+            if term_unit(i, j) != unit:
+                continue
+            scale = np.sqrt(peak[term_name(i, i)] * peak[term_name(j, j)])
+            if peak[term_name(i, j)] > 1e-6 * scale:
+                off.append(term_name(i, j))
+    off.sort(key=lambda n: -peak[n])
+    return diagonal, off[:OFF_DIAGONAL_SHOWN]
+
+
+def _draw_panel(ax, s, unit, x, xlabel, joined=True):
+    diagonal, off = panel_terms(s, unit)
+    for name in diagonal + off:
+        style = ("-o" if name in diagonal else "--s") if joined else \
+            ("o" if name in diagonal else "s")
+        if x is None:  # one point: its terms as bars
+            bars = ax.bar([name], s[name], color="C0" if name in diagonal else "C1")
+            bars.patches[0].set_gid("stiffness:" + name)
+            continue
+        order = np.argsort(x, kind="stable")
+        line, = ax.plot(x[order], s[name][order], style, ms=4, label=name)
+        line.set_gid("stiffness:" + name)
+    ax.set_ylabel("K [%s]" % SHOWN_UNIT[unit])
+    ax.ticklabel_format(axis="y", style="sci", scilimits=(-3, 4))
+    if x is not None:
+        ax.set_xlabel(xlabel)
+        if diagonal or off:
+            ax.legend()
+    if not diagonal and not off:
+        ax.text(0.5, 0.5, "no coupling above round-off", transform=ax.transAxes, ha="center")
+
+
+def stiffness_figure(s):
+    """The stiffness terms against the first varied key (one point: as bars), one panel per unit;
+    with more varied keys, all points against the first."""
+    if s.points == 0:
+        raise FolderError("%s: no operating point" % s.path)
+    varied = s.varied
+    key = varied[0] if varied else None
+    xlabel, factor = key_display(key) if key else ("", 1.0)
+    x = s[key] * factor if key else None
+    with _style():
+        fig = _new_figure("stiffness")
+        axes = fig.subplots(1, len(PANELS), squeeze=False)[0]
+        for ax, (unit, what) in zip(axes, PANELS):
+            _draw_panel(ax, s, unit, x, xlabel, joined=len(varied) <= 1)
+            ax.set_title(what, fontsize=10)
+        against = "against %s" % key if key else "at the operating point"
+        extra = "; also varied: %s (every point, unjoined)" % ", ".join(varied[1:]) \
+            if len(varied) > 1 else ""
+        legend = ("blue: diagonal, orange: largest couplings" if key is None else
+                  "solid: diagonal, dashed: largest couplings" if len(varied) == 1 else
+                  "circles: diagonal, squares: largest couplings")
+        fig.suptitle("%s — bearing stiffness K = dF/dq %s (%s)\n%s · 5-DOF static solution: "
+                     "rigid rings, zero speed, no damping%s"
+                     % (s.name, against, legend, s.source, extra))
+        fig.tight_layout()
+    return fig

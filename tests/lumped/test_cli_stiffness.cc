@@ -1,0 +1,311 @@
+// bearing-sim stiffness end to end (issue 32): the files and their columns, the values against
+// a direct solve_five_dof, the grid of --vary, info's matrix, operation.moment (read by every
+// command, refused by run), and the errors: exit status, message, no output folder.
+
+#include <cmath>
+#include <filesystem>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include "bearing/case_file.h"
+#include "bearing/five_dof_static.h"
+#include "cli_helpers.h"
+
+namespace {
+
+namespace fs = std::filesystem;
+using bearing::test::fresh_dir;
+using bearing::test::read;
+using bearing::test::sim;
+
+const std::string kExample = std::string(BEARING_SOURCE_DIR) + "/examples/seed003_6308.toml";
+
+// The 5-DOF solution from the library's own pieces, not through the pipeline's mapping.
+bearing::FiveDofSolution direct(const std::vector<bearing::Override>& sets) {
+  const bearing::Case c = bearing::read_case_file(kExample, sets);
+  const bearing::FiveDofBearing b =
+      bearing::five_dof_bearing(c.bearing, bearing::contact_constants(c), 0.0);
+  bearing::Vector5 f;
+  f << c.operation.load.x(), c.operation.load.y(), c.operation.axial_load, c.operation.moment.x(),
+      c.operation.moment.y();
+  return bearing::solve_five_dof(b, f);
+}
+
+std::vector<std::string> split(const std::string& line) {
+  std::vector<std::string> out;
+  std::stringstream s(line);
+  for (std::string cell; std::getline(s, cell, ',');) out.push_back(cell);
+  return out;
+}
+
+// stiffness.csv as its header and rows of cells.
+struct Csv {
+  std::vector<std::string> header;
+  std::vector<std::vector<std::string>> rows;
+  double at(std::size_t row, const std::string& column) const {
+    for (std::size_t c = 0; c < header.size(); ++c)
+      if (header[c] == column) return std::stod(rows.at(row).at(c));
+    ADD_FAILURE() << "no column " << column;
+    return NAN;
+  }
+};
+
+Csv read_csv(const fs::path& p) {
+  std::stringstream s(read(p));
+  Csv csv;
+  std::string line;
+  std::getline(s, line);
+  csv.header = split(line);
+  while (std::getline(s, line)) csv.rows.push_back(split(line));
+  return csv;
+}
+
+const char* const kKColumns[] = {"k_xx [N/m]",        "k_xy [N/m]",        "k_xz [N/m]",
+                                 "k_x_gx [N/rad]",    "k_x_gy [N/rad]",    "k_yy [N/m]",
+                                 "k_yz [N/m]",        "k_y_gx [N/rad]",    "k_y_gy [N/rad]",
+                                 "k_zz [N/m]",        "k_z_gx [N/rad]",    "k_z_gy [N/rad]",
+                                 "k_gx_gx [N*m/rad]", "k_gx_gy [N*m/rad]", "k_gy_gy [N*m/rad]"};
+
+// The row's K_ij, q and load are the direct solution's, to the bit (shortest round-trip text).
+void expect_row_is(const Csv& csv, std::size_t row, const bearing::FiveDofSolution& s) {
+  int n = 0;
+  for (int i = 0; i < 5; ++i)
+    for (int j = i; j < 5; ++j) EXPECT_EQ(csv.at(row, kKColumns[n++]), s.at.stiffness(i, j));
+  const char* q[] = {"x [m]", "y [m]", "z [m]", "gx [rad]", "gy [rad]"};
+  for (int i = 0; i < 5; ++i) EXPECT_EQ(csv.at(row, q[i]), s.displacement(i)) << q[i];
+  double q_max = 0;
+  int loaded = 0;
+  for (double Q : s.at.ball_loads) q_max = std::max(q_max, Q), loaded += Q > 0;
+  EXPECT_EQ(csv.at(row, "q_max [N]"), q_max);
+  EXPECT_EQ(csv.at(row, "loaded_balls"), loaded);
+}
+
+TEST(CliStiffness, OnePointEqualsTheDirectSolution) {
+  const fs::path d = fresh_dir("stiffness_one");
+  std::string out;
+  const std::string sets =
+      " --set operation.axial_load=100 --set 'operation.moment=[\"0.5 N*m\", 0]'";
+  ASSERT_EQ(sim("stiffness " + kExample + sets + " --out " + d.string(), &out), 0) << out;
+  const Csv csv = read_csv(d / "stiffness.csv");
+  std::vector<std::string> header(std::begin(kKColumns), std::end(kKColumns));
+  for (const char* c : {"x [m]", "y [m]", "z [m]", "gx [rad]", "gy [rad]", "q_max [N]",
+                        "loaded_balls", "Fx [N]", "Fy [N]", "Fz [N]", "Mx [N*m]", "My [N*m]"})
+    header.push_back(c);
+  EXPECT_EQ(csv.header, header);
+  ASSERT_EQ(csv.rows.size(), 1u);
+  const bearing::FiveDofSolution s = direct({bearing::parse_override("operation.axial_load=100"),
+                                             bearing::parse_override("operation.moment=[0.5, 0]")});
+  expect_row_is(csv, 0, s);
+  EXPECT_EQ(csv.at(0, "Fz [N]"), 100.0);
+  EXPECT_EQ(csv.at(0, "Mx [N*m]"), 0.5);
+
+  const auto j = nlohmann::json::parse(read(d / "stiffness.json"));
+  const auto& K = j["points"][0]["stiffness"];
+  for (int r = 0; r < 5; ++r)
+    for (int c = 0; c < 5; ++c) {
+      EXPECT_EQ(K[r][c].get<double>(), s.at.stiffness(r, c));
+      EXPECT_EQ(K[r][c].get<double>(), K[c][r].get<double>());  // k_xy == k_yx
+    }
+  EXPECT_EQ(j["points"][0]["ball_loads"].size(), 8u);
+  EXPECT_EQ(j["points"][0]["contact_angles"].size(), 8u);
+  EXPECT_EQ(j["units"]["stiffness"][3][4], "N*m/rad");
+  EXPECT_EQ(j["units"]["stiffness"][0][3], "N/rad");
+  EXPECT_EQ(j["units"]["stiffness"][3][0], "N");
+  EXPECT_NE(j["model"]["assumptions"].dump().find("zero speed"), std::string::npos);
+  // The matrix with its labels on stdout.
+  for (const char* label : {"K = dF/dq", "Fx [N]", "My [N*m]", "gy [rad]", "N*m/rad"})
+    EXPECT_NE(out.find(label), std::string::npos) << label << "\n" << out;
+  EXPECT_EQ(sim("stiffness " + kExample + sets + " --quiet --out " + d.string(), &out), 0);
+  EXPECT_EQ(out, "");
+}
+
+// The brief's grid: k_zz grows with the preload; every row is its own direct solution.
+TEST(CliStiffness, GridOfAxialLoads) {
+  const fs::path d = fresh_dir("stiffness_grid");
+  std::string out;
+  ASSERT_EQ(
+      sim("stiffness " + kExample + " --vary operation.axial_load=0:200:3 --out " + d.string(),
+          &out),
+      0)
+      << out;
+  const Csv csv = read_csv(d / "stiffness.csv");
+  ASSERT_EQ(csv.header.at(0), "operation.axial_load [N]");
+  EXPECT_EQ(csv.header.at(1), "k_xx [N/m]");
+  ASSERT_EQ(csv.rows.size(), 3u);
+  for (std::size_t r = 0; r < 3; ++r) {
+    EXPECT_EQ(csv.at(r, "operation.axial_load [N]"), 100.0 * r);
+    expect_row_is(
+        csv, r,
+        direct({bearing::parse_override("operation.axial_load=" + std::to_string(100 * r))}));
+  }
+  EXPECT_LT(csv.at(0, "k_zz [N/m]"), csv.at(1, "k_zz [N/m]"));
+  EXPECT_LT(csv.at(1, "k_zz [N/m]"), csv.at(2, "k_zz [N/m]"));
+  const auto j = nlohmann::json::parse(read(d / "stiffness.json"));
+  EXPECT_EQ(j["varied"][0]["key"], "operation.axial_load");
+  EXPECT_EQ(j["varied"][0]["unit"], "N");
+  EXPECT_EQ(j["points"][2]["values"]["operation.axial_load"], 200.0);
+  EXPECT_NE(out.find("3 operating points"), std::string::npos) << out;
+  EXPECT_NE(out.find("k_gx_gx [N*m/rad]"), std::string::npos) << out;
+}
+
+// info shows the same matrix, at every load of the case, whatever model.kind (a 2dof case with
+// an axial load and a moment: run refuses both, info and stiffness carry them).
+TEST(CliStiffness, InfoShowsTheMatrix) {
+  std::string out;
+  const std::string sets = " --set operation.axial_load=50 --set 'operation.moment=[0, -0.2]'";
+  ASSERT_EQ(sim("info --json " + kExample + sets, &out), 0) << out;
+  const auto j = nlohmann::json::parse(out);
+  const bearing::FiveDofSolution s =
+      direct({bearing::parse_override("operation.axial_load=50"),
+              bearing::parse_override("operation.moment=[0, -0.2]")});
+  for (int r = 0; r < 5; ++r)
+    for (int c = 0; c < 5; ++c)
+      EXPECT_EQ(j["stiffness"]["matrix"][r][c].get<double>(), s.at.stiffness(r, c));
+  EXPECT_EQ(j["stiffness"]["load"][4], -0.2);
+  EXPECT_EQ(j["stiffness"]["matrix_units"][4][4], "N*m/rad");
+  ASSERT_EQ(sim("info " + kExample + sets, &out), 0) << out;
+  EXPECT_NE(out.find("Stiffness at the operating point"), std::string::npos) << out;
+  EXPECT_NE(out.find("K = dF/dq"), std::string::npos) << out;
+}
+
+// operation.moment: units, written back only when set, and refused by run and sweep (exit 2,
+// the key, its value and why, no output) since no model kind has a tilt DOF.
+TEST(CliStiffness, RunAndSweepRefuseAMoment) {
+  const bearing::Case c = bearing::read_case_file(
+      kExample, {bearing::parse_override("operation.moment=[\"2 N*m\", \"-300 N mm\"]")});
+  EXPECT_EQ(c.operation.moment.x(), 2.0);
+  EXPECT_DOUBLE_EQ(c.operation.moment.y(), -0.3);
+  EXPECT_NE(bearing::case_to_toml(c).find("moment = [2.0, -0.29999999999999999]"),
+            std::string::npos)
+      << bearing::case_to_toml(c);
+  EXPECT_EQ(bearing::case_to_toml(bearing::read_case_file(kExample)).find("moment"),
+            std::string::npos);
+  for (const std::string command : {"run", "sweep --vary operation.speed=1000rpm:2000rpm:2"}) {
+    const fs::path d = fresh_dir("moment_refused");
+    std::string out;
+    EXPECT_EQ(sim(command + " " + kExample + " --set 'operation.moment=[1, 0]' --quiet --out " +
+                      d.string(),
+                  &out),
+              2)
+        << command;
+    for (const char* s : {"operation.moment = [1, 0] N m", "no tilt degree of freedom",
+                          "allowed: [0, 0]", "stiffness"})
+      EXPECT_NE(out.find(s), std::string::npos) << command << ": " << s << "\n" << out;
+    EXPECT_FALSE(fs::exists(d)) << command;
+  }
+  // A wrong unit names the key and the units a moment takes.
+  std::string out;
+  EXPECT_EQ(sim("stiffness --set 'operation.moment=[\"1 N\", 0]' --out " +
+                    fresh_dir("moment_unit").string(),
+                &out),
+            2);
+  for (const char* s : {"operation.moment[0]", "N m", "lbf in"})
+    EXPECT_NE(out.find(s), std::string::npos) << s << "\n" << out;
+}
+
+// A 2dof case reads an axial load (stiffness and info carry it); run refuses it as before.
+TEST(CliStiffness, RunStillRefusesAnAxialLoadItsKindCannotCarry) {
+  std::string out;
+  const fs::path d = fresh_dir("axial_2dof");
+  EXPECT_EQ(
+      sim("run " + kExample + " --set operation.axial_load=50 --quiet --out " + d.string(), &out),
+      2);
+  for (const char* s : {"operation.axial_load = 50 N", "model.kind = \"2dof\"",
+                        "no axial degree of freedom", "\"3dof\" or \"balls\""})
+    EXPECT_NE(out.find(s), std::string::npos) << s << "\n" << out;
+  EXPECT_FALSE(fs::exists(d));
+  EXPECT_EQ(sim("sweep " + kExample +
+                    " --set operation.axial_load=50 --vary "
+                    "operation.speed=1000rpm:2000rpm:2 --out " +
+                    d.string(),
+                &out),
+            2)
+      << out;
+  EXPECT_FALSE(fs::exists(d));
+}
+
+// Bad input: exit 2, one message naming the key, value or allowed range, and no folder.
+TEST(CliStiffness, InputErrorsLeaveNoFolder) {
+  struct Bad {
+    std::string args;
+    std::vector<std::string> expect;
+  };
+  const std::vector<Bad> bad = {
+      {"--vary operation.axial_lod=0:200:3", {"operation.axial_lod", "operation.axial_load"}},
+      {"--vary operation.axial_load=0:200:-3", {"N = \"-3\"", "from 1 to 100000"}},
+      {"--vary operation.axial_load=0:200:0", {"N = \"0\"", "from 1 to 100000"}},
+      {"--vary operation.axial_load=0:200", {"FROM:TO:N"}},
+      {"--vary model.kind=1:2:2", {"model.kind", "not a numeric"}},
+      {"--vary bearing.balls=2:4:3", {"operating point 1 of 3 (bearing.balls = 2)", "at least 3"}},
+      {"--set bearing.clearance=1.3mm", {"bearing.clearance", "P_d < 2 A0"}},
+      {"--format xml", {"--format xml", "csv", "ross"}},
+      {"--vary operation.axial_load=0:200:3 --format ross",
+       {"--format ross", "operation.speed only", "operation.axial_load"}},
+      {"--vary operation.axial_load=0:1e6:100001", {"from 1 to 100000"}},
+  };
+  for (const Bad& b : bad) {
+    const fs::path d = fresh_dir("stiffness_bad");
+    std::string out;
+    EXPECT_EQ(sim("stiffness " + kExample + " " + b.args + " --out " + d.string(), &out), 2)
+        << b.args << "\n"
+        << out;
+    for (const auto& s : b.expect)
+      EXPECT_NE(out.find(s), std::string::npos) << b.args << ": lacks " << s << "\n" << out;
+    EXPECT_EQ(out.find('\n'), out.size() - 1) << "not one line: " << out;
+    EXPECT_FALSE(fs::exists(d)) << b.args;
+  }
+  EXPECT_EQ(sim("stiffness " + kExample), 2);  // --out is required
+}
+
+// Beyond the elastic limit the files are written, with a warning naming the points, as run does.
+TEST(CliStiffness, ALoadBeyondTheElasticLimitIsWrittenWithAWarning) {
+  const fs::path d = fresh_dir("stiffness_elastic");
+  std::string out;
+  ASSERT_EQ(sim("stiffness " + kExample +
+                    " --vary operation.axial_load=100:150000:2 --quiet --out " + d.string(),
+                &out),
+            0)
+      << out;
+  for (const char* s : {"bearing-sim: warning: at 1 of 2 operating points",
+                        "operation.axial_load = 150000 N", "elastic limit of 4.2 GPa"})
+    EXPECT_NE(out.find(s), std::string::npos) << s << "\n" << out;
+  const auto j = nlohmann::json::parse(read(d / "stiffness.json"));
+  EXPECT_TRUE(j["points"][0]["elastic"].get<bool>());
+  EXPECT_FALSE(j["points"][1]["elastic"].get<bool>());
+  EXPECT_GT(j["points"][1]["peak_pressure"]["inner"].get<double>(), 4.2e9);
+  EXPECT_EQ(j["pressure_limit"].get<double>(), 4.2e9);
+  ASSERT_EQ(sim("stiffness " + kExample + " --quiet --out " + d.string(), &out), 0);
+  EXPECT_EQ(out, "");  // no warning within the limit
+}
+
+// --format ross: ROSS's column names, rows by ascending speed, damping 0, k_xy == k_yx; a
+// second call without it removes the table an earlier one left.
+TEST(CliStiffness, RossTable) {
+  const fs::path d = fresh_dir("stiffness_ross");
+  ASSERT_EQ(
+      sim("stiffness " + kExample +
+          " --vary operation.speed=3000rpm:1000rpm:3 --format ross --quiet --out " + d.string()),
+      0);
+  const Csv ross = read_csv(d / "stiffness_ross.csv");
+  EXPECT_EQ(ross.header, (std::vector<std::string>{"frequency", "kxx", "kxy", "kyx", "kyy", "cxx",
+                                                   "cxy", "cyx", "cyy"}));
+  ASSERT_EQ(ross.rows.size(), 3u);
+  const double rpm = 2 * M_PI / 60;
+  const bearing::FiveDofSolution s = direct({});
+  for (std::size_t r = 0; r < 3; ++r) {
+    EXPECT_NEAR(ross.at(r, "frequency"), (1000 + 1000 * r) * rpm, 1e-9);
+    EXPECT_EQ(ross.at(r, "kxx"), s.at.stiffness(0, 0));
+    EXPECT_EQ(ross.at(r, "kyy"), s.at.stiffness(1, 1));
+    EXPECT_EQ(ross.at(r, "kxy"), ross.at(r, "kyx"));
+    for (const char* c : {"cxx", "cxy", "cyx", "cyy"}) EXPECT_EQ(ross.at(r, c), 0.0);
+  }
+  ASSERT_EQ(sim("stiffness " + kExample + " --quiet --out " + d.string()), 0);
+  EXPECT_FALSE(fs::exists(d / "stiffness_ross.csv"));
+  EXPECT_TRUE(fs::exists(d / "stiffness.csv"));
+}
+
+}  // namespace
