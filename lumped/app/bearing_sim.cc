@@ -137,7 +137,8 @@ int run_command(const std::string& case_path, const std::vector<bearing::Overrid
                 const std::string& out_dir, bool json, bool quiet, bool tty) {
   const bearing::Case c = load(case_path, overrides);
   // Beyond the elastic limit the run is still made (a user may study it), with a warning.
-  const std::string warning = bearing::elastic_limit_warning(bearing::compute_info(c));
+  const std::string warning = bearing::elastic_limit_warning(
+      bearing::compute_info(c, bearing::InfoParts::without_stiffness));
   if (!warning.empty()) std::cerr << "bearing-sim: warning: " << warning << "\n";
   ProgressLine progress{tty, "run"};
   const auto start = std::chrono::steady_clock::now();

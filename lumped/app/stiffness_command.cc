@@ -72,8 +72,9 @@ CLI::App* add_stiffness_command(CLI::App& app, StiffnessOptions& o, const std::s
   auto* cmd = app.add_subcommand(
       "stiffness",
       "The bearing's 5x5 stiffness K = dF/dq of the inner ring (x, y, z and the tilts gx, gy) at "
-      "the case's operating point, from the 5-DOF static solution (rigid rings, zero speed, no "
-      "damping) under its loads: operation.load (with the rotor weight when operation.gravity), "
+      "the case's operating point, from the 5-DOF static solution (rigid rings, each ball's "
+      "centrifugal load at operation.speed with ball.centrifugal on, no damping) under its loads: "
+      "operation.load (with the rotor weight when operation.gravity), "
       "operation.axial_load and operation.moment, whatever model.kind; or at every point of a "
       "--vary grid. Writes DIR/stiffness.csv (per point the varied keys, the 15 k_ij with units, "
       "the displacement, q_max, loaded_balls, the load) and DIR/stiffness.json (also the full "

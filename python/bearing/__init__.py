@@ -108,7 +108,8 @@ def stiffness(case):
     [N, N*m]: ``operation.load`` (with the rotor weight when ``operation.gravity``),
     ``operation.axial_load`` and ``operation.moment``, whatever ``model.kind``. Units: K[:3, :3]
     N/m, K[:3, 3:] N/rad, K[3:, :3] N (= N*m/m), K[3:, 3:] N*m/rad; symmetric. Assumed: rigid
-    rings, zero speed (no centrifugal ball load), no damping. With no ball loaded (no load, the
+    rings, each ball's centrifugal load at ``operation.speed`` (``ball.centrifugal``, on by
+    default), the gyroscopic moment neglected, no damping. With no ball loaded (no load, the
     ring in the clearance) K is 0. The displacement, ball loads and contact angles:
     ``bearing.info(case)["stiffness"]``. Raises InputError or SolverError.
 

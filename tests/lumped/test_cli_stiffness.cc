@@ -27,8 +27,10 @@ const std::string kExample = std::string(BEARING_SOURCE_DIR) + "/examples/seed00
 // The 5-DOF solution from the library's own pieces, not through the pipeline's mapping.
 bearing::FiveDofSolution direct(const std::vector<bearing::Override>& sets) {
   const bearing::Case c = bearing::read_case_file(kExample, sets);
+  // ball.centrifugal is on by default: each ball's centrifugal load at the case's speed.
   const bearing::FiveDofBearing b =
-      bearing::five_dof_bearing(c.bearing, bearing::contact_constants(c), 0.0);
+      bearing::five_dof_bearing(c.bearing, bearing::contact_constants(c), 0.0,
+                                bearing::ball_centrifugal_load(c.bearing, c.operation.speed));
   bearing::Vector5 f;
   f << c.operation.load.x(), c.operation.load.y(), c.operation.axial_load, c.operation.moment.x(),
       c.operation.moment.y();
@@ -115,7 +117,7 @@ TEST(CliStiffness, OnePointEqualsTheDirectSolution) {
   EXPECT_EQ(j["units"]["stiffness"][3][4], "N*m/rad");
   EXPECT_EQ(j["units"]["stiffness"][0][3], "N/rad");
   EXPECT_EQ(j["units"]["stiffness"][3][0], "N");
-  EXPECT_NE(j["model"]["assumptions"].dump().find("zero speed"), std::string::npos);
+  EXPECT_NE(j["model"]["assumptions"].dump().find("centrifugal"), std::string::npos);
   // The matrix with its labels on stdout.
   for (const char* label : {"K = dF/dq", "Fx [N]", "My [N*m]", "gy [rad]", "N*m/rad"})
     EXPECT_NE(out.find(label), std::string::npos) << label << "\n" << out;
@@ -295,8 +297,9 @@ TEST(CliStiffness, RossTable) {
                                                    "cxy", "cyx", "cyy"}));
   ASSERT_EQ(ross.rows.size(), 3u);
   const double rpm = 2 * M_PI / 60;
-  const bearing::FiveDofSolution s = direct({});
   for (std::size_t r = 0; r < 3; ++r) {
+    const bearing::FiveDofSolution s = direct(
+        {bearing::parse_override("operation.speed=" + std::to_string(1000 + 1000 * r) + "rpm")});
     EXPECT_NEAR(ross.at(r, "frequency"), (1000 + 1000 * r) * rpm, 1e-9);
     EXPECT_EQ(ross.at(r, "kxx"), s.at.stiffness(0, 0));
     EXPECT_EQ(ross.at(r, "kyy"), s.at.stiffness(1, 1));
@@ -306,6 +309,29 @@ TEST(CliStiffness, RossTable) {
   ASSERT_EQ(sim("stiffness " + kExample + " --quiet --out " + d.string()), 0);
   EXPECT_FALSE(fs::exists(d / "stiffness_ross.csv"));
   EXPECT_TRUE(fs::exists(d / "stiffness.csv"));
+}
+
+// The issue's acceptance: over 0 to 20 000 rpm the matrix changes with speed once the
+// centrifugal load is on (ball.centrifugal, the default), and not at all with it off.
+TEST(CliStiffness, SpeedChangesTheMatrixOnlyWithTheCentrifugalLoad) {
+  const fs::path on = fresh_dir("stiffness_speed_on"), off = fresh_dir("stiffness_speed_off");
+  const std::string vary = " --vary operation.speed=0rpm:20000rpm:11 --quiet --out ";
+  ASSERT_EQ(sim("stiffness " + kExample + vary + on.string()), 0);
+  ASSERT_EQ(sim("stiffness " + kExample + " --set model.kind=balls --set ball.centrifugal=false" +
+                vary + off.string()),
+            0);
+  const Csv a = read_csv(on / "stiffness.csv"), b = read_csv(off / "stiffness.csv");
+  ASSERT_EQ(a.rows.size(), 11u);
+  ASSERT_EQ(b.rows.size(), 11u);
+  for (std::size_t r = 1; r < 11; ++r) {
+    EXPECT_NE(a.at(r, "k_yy [N/m]"), a.at(0, "k_yy [N/m]")) << r;
+    for (const char* k : kKColumns) EXPECT_EQ(b.at(r, k), b.at(0, k)) << r << " " << k;
+  }
+  // At 0 rpm the centrifugal load is 0, on or off: the same matrix.
+  for (const char* k : kKColumns) EXPECT_EQ(a.at(0, k), b.at(0, k)) << k;
+  // At 20 000 rpm the centrifugal load takes part of the load off the inner contacts: the
+  // radial stiffness differs by more than rounding.
+  EXPECT_GT(std::abs(a.at(10, "k_yy [N/m]") / a.at(0, "k_yy [N/m]") - 1), 1e-3);
 }
 
 }  // namespace

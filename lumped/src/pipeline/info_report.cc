@@ -43,7 +43,7 @@ double model_static_peak_load(ModelKind kind, const ModelInputs& in) {
 
 }  // namespace
 
-InfoReport compute_info(const Case& c) {
+InfoReport compute_info(const Case& c, InfoParts parts) {
   InfoReport r;
   r.input = c;
   r.contact = contact_constants(c);
@@ -75,6 +75,7 @@ InfoReport compute_info(const Case& c) {
   }
   if (c.housing.enabled)
     r.housing_modes = housing_modes(*make_dynamic_model(c.model.kind, static_model_inputs(c)));
+  if (parts == InfoParts::without_stiffness) return r;
   // A section of the report, not its purpose: a case the 5-DOF solution cannot take still gets
   // the rest, with the reason shown (`bearing-sim stiffness` fails on it instead).
   try {
@@ -316,7 +317,8 @@ std::string housing_text(const InfoReport& r) {
 // The 5-DOF stiffness at the case's loads, for info_text.
 std::string stiffness_info_text(const InfoReport& r) {
   std::ostringstream o;
-  o << "\nStiffness at the operating point (5-DOF static solution: rigid rings, zero speed, no "
+  o << "\nStiffness at the operating point (5-DOF static solution: rigid rings, the balls' "
+       "centrifugal load at the case's speed, no "
        "damping; every load of the case, whatever model.kind; `bearing-sim stiffness` for more)\n";
   if (!r.stiffness) return o.str() + "  not available: " + r.stiffness_error + "\n";
   const StiffnessPoint& p = *r.stiffness;
@@ -327,7 +329,8 @@ std::string stiffness_info_text(const InfoReport& r) {
     << "  displacement x = " << fixed(q(0) * 1e6, 4) << " um, y = " << fixed(q(1) * 1e6, 4)
     << " um, z = " << fixed(q(2) * 1e6, 4) << " um, gx = " << fixed(q(3) * 1e6, 4)
     << " urad, gy = " << fixed(q(4) * 1e6, 4) << " urad; " << p.loaded_balls()
-    << " balls loaded, the largest " << num(p.q_max()) << " N\n"
+    << (p.loaded_balls() == 1 ? " ball" : " balls") << " loaded, the largest " << num(p.q_max())
+    << " N\n"
     << stiffness_matrix_text(p.solution.at.stiffness);
   return o.str() + stiffness_note(p);
 }

@@ -31,8 +31,11 @@ Vector5 load_of(const Case& c, const ModelInputs& in) {
   return f;
 }
 
+// At the case's speed each ball carries its centrifugal load when ball.centrifugal is on (the
+// default), so K changes with operation.speed; at rest, or with it off, it does not.
 FiveDofBearing bearing_of(const ModelInputs& in) {
-  return five_dof_bearing(in.bearing, in.contact, in.cage_phase);
+  const double Fc = in.centrifugal ? ball_centrifugal_load(in.bearing, in.inner_speed) : 0.0;
+  return five_dof_bearing(in.bearing, in.contact, in.cage_phase, Fc);
 }
 
 }  // namespace

@@ -120,8 +120,9 @@ constexpr std::array<const char*, 5> kAssumptions = {
     "the 5-DOF static equilibrium of the inner ring (x, y, z, gx, gy) on Hertzian ball contacts "
     "Q = K delta^n, each ball's contact angle following the deflection (five_dof_static.h)",
     "rigid rings; the outer ring fixed",
-    "zero speed: no centrifugal ball load and no gyroscopic moment, so operation.speed does not "
-    "change K (the speed column is the case's, for the rotor model's table)",
+    "at operation.speed each ball carries its centrifugal load m_b w_c^2 d_m/2 (ball.centrifugal, "
+    "on by default) and has its own inner and outer contact angles (Jones); the gyroscopic "
+    "moment is neglected",
     "no damping: the bearing's damping is not modelled (ROSS's cxx..cyy are written as 0)",
     "K = dF/dq is the tangent stiffness at the equilibrium under the load F, symmetric; the "
     "force the bearing exerts on the ring for a small extra displacement dq is -K dq"};
@@ -247,8 +248,8 @@ std::string stiffness_note(const StiffnessPoint& p, const std::string& indent) {
 
 std::string stiffness_text(const StiffnessTable& t) {
   std::ostringstream o;
-  o << "Bearing stiffness (5-DOF static solution of the inner ring: rigid rings, zero speed, no "
-       "damping)\nCase: "
+  o << "Bearing stiffness (5-DOF static solution of the inner ring: rigid rings, the balls' "
+       "centrifugal load at the case's speed, no damping)\nCase: "
     << t.source << (t.bearing.empty() ? "" : " (" + t.bearing + ")") << "\n";
   if (t.rows.size() == 1) {
     const StiffnessPoint& p = t.rows.front().point;
@@ -267,10 +268,6 @@ std::string stiffness_text(const StiffnessTable& t) {
     return o.str();
   }
   o << t.rows.size() << " operating points; the main terms (every term: stiffness.csv)\n";
-  for (const auto& k : t.keys)
-    if (k.key == "operation.speed")
-      o << "note: the model is at zero speed (no centrifugal ball load yet), so K is the same at "
-           "every operation.speed\n";
   std::vector<std::string> head;
   for (const auto& k : t.keys) head.push_back(with_unit(k.key, k.unit));
   for (int i = 0; i < 5; ++i) head.push_back(with_unit(stiffness_name(i, i), stiffness_unit(i, i)));

@@ -60,8 +60,13 @@ struct InfoReport {
 /// kElasticPressureLimit (contact.h), naming both pressures; empty otherwise.
 std::string elastic_limit_warning(const InfoReport& report);
 
-/// Computes everything `info` shows. Throws InputError / SolverError.
-InfoReport compute_info(const Case& c);
+/// What compute_info leaves out: `run` asks for the elastic-limit warning only, and the 5-DOF
+/// stiffness (a Newton solve per ball at speed) is no part of a run's cost.
+enum class InfoParts { all, without_stiffness };
+
+/// Computes everything `info` shows (`parts`: all, or all but the stiffness section). Throws
+/// InputError / SolverError.
+InfoReport compute_info(const Case& c, InfoParts parts = InfoParts::all);
 
 /// JSON with the keys docs/bearing-sim.md documents: kinematics.{shaft,ftf,bpfo,bpfi,bsf} [Hz],
 /// contact.{inner,outer}.{sum_rho [1/m], f_rho, ellipticity, delta_star, K [N/m^n], exponent n},

@@ -8,8 +8,10 @@
 // displacement from the centred position and its tilts about +x and +y; F = (Fx, Fy, Fz, Mx, My)
 // [N, N, N, N m, N m] the load on it. K = ∂F/∂q, symmetric: N/m between forces and
 // displacements, N/rad between forces and tilts (= N m/m, moments and displacements), N m/rad
-// between moments and tilts. Assumed: rigid rings, the outer ring fixed, zero speed (no
-// centrifugal ball load, no gyroscopic moment: operation.speed does not enter), no damping.
+// between moments and tilts. Assumed: rigid rings, the outer ring fixed; at operation.speed each
+// ball carries its centrifugal load m_b ω_c² d_m/2 when ball.centrifugal is on (the default), so
+// that its inner and outer contact angles differ (Jones; five_dof_static.h); the gyroscopic
+// moment neglected; no damping.
 
 #include <array>
 #include <string>
@@ -37,7 +39,8 @@ std::string stiffness_name(int i, int j);
 Vector5 five_dof_load_of(const Case& c);
 
 /// The case's bearing with its contact law (contact_constants(c): a Hertz method, or the
-/// calibrated constants), ball 0 at the cage phase of its model inputs. Throws InputError naming
+/// calibrated constants), ball 0 at the cage phase of its model inputs, and each ball's
+/// centrifugal load at operation.speed when ball.centrifugal is on (ball_centrifugal_load). Throws InputError naming
 /// bearing.clearance when the clearance leaves no contact angle below 90°.
 FiveDofBearing five_dof_bearing_of(const Case& c);
 

@@ -21,7 +21,7 @@ struct StiffnessKey {
 /// One operating point: the varied keys' values (SI), the case's speed and its solution.
 struct StiffnessRow {
   std::vector<double> values;  ///< one per StiffnessTable::keys [SI]
-  double speed = 0;            ///< operation.speed [rad/s] (not used by the solution: zero speed)
+  double speed = 0;            ///< operation.speed [rad/s] (its centrifugal ball load enters K)
   StiffnessPoint point;
 };
 
