@@ -40,8 +40,8 @@ Vector5 five_dof_load_of(const Case& c);
 
 /// The case's bearing with its contact law (contact_constants(c): a Hertz method, or the
 /// calibrated constants), ball 0 at the cage phase of its model inputs, and each ball's
-/// centrifugal load at operation.speed when ball.centrifugal is on (ball_centrifugal_load). Throws InputError naming
-/// bearing.clearance when the clearance leaves no contact angle below 90°.
+/// centrifugal load at operation.speed when ball.centrifugal is on (ball_centrifugal_load). Throws
+/// InputError naming bearing.clearance when the clearance leaves no contact angle below 90°.
 FiveDofBearing five_dof_bearing_of(const Case& c);
 
 /// The 5-DOF static state at one operating point.
