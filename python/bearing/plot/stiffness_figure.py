@@ -147,7 +147,7 @@ def stiffness_figure(s):
                   "solid: diagonal, dashed: largest couplings" if len(varied) == 1 else
                   "circles: diagonal, squares: largest couplings")
         fig.suptitle("%s — bearing stiffness K = dF/dq %s (%s)\n%s · 5-DOF static solution: "
-                     "rigid rings, zero speed, no damping%s"
+                     "rigid rings, centrifugal ball load at speed, no damping%s"
                      % (s.name, against, legend, s.source, extra))
         fig.tight_layout()
     return fig

@@ -1,7 +1,7 @@
 #pragma once
 // The 5-DOF static solution of a deep-groove ball bearing's inner ring and its tangent stiffness
-// (issue 32, first part: no centrifugal ball load yet, so each ball's inner and outer contact
-// angles are equal, the quasi-static state at zero speed).
+// (issue 32): at rest, each ball on the line of its groove centres; at speed (below), each ball
+// its own centre between the races under its centrifugal load.
 //
 // Coordinates. The outer ring is fixed; the inner ring moves by q = (δx, δy, δz, γx, γy) [m, m, m,
 // rad, rad] from the concentric, axially centred position, and carries the load vector
