@@ -45,6 +45,24 @@ std::vector<Vector5> loads(const FiveDofBearing& b) {
   return out;
 }
 
+// K against central differences of the force at the equilibrium s (see the test below).
+void expect_stiffness_is_the_central_difference(const FiveDofBearing& b, const FiveDofSolution& s) {
+  double dmax = 0;
+  for (double d : s.at.approaches) dmax = std::max(dmax, d);
+  ASSERT_GT(dmax, 0);
+  const double h = 1e-4 * dmax;
+  Matrix5 numeric;
+  for (int i = 0; i < 5; ++i) {
+    Vector5 dq = Vector5::Zero();
+    dq(i) = i < 3 ? h : h / b.groove_radius;
+    numeric.col(i) = (five_dof_point(b, s.displacement + dq).force -
+                      five_dof_point(b, s.displacement - dq).force) /
+                     (2 * dq(i));
+  }
+  const double scale = s.at.stiffness.cwiseAbs().maxCoeff();
+  EXPECT_LE((numeric - s.at.stiffness).cwiseAbs().maxCoeff(), 1e-6 * scale);
+}
+
 // The analytic stiffness equals the central differences of the force at the equilibrium to
 // 1e-6 of its largest entry. Step h = 1e-4 of the largest ball deflection (tilts: h/ℜ_i): the
 // truncation error is ~ (h/δ)²/6 ≈ 2e-9 relative where a ball stays loaded; rounding adds
@@ -58,20 +76,7 @@ TEST(FiveDofStatic, StiffnessIsTheCentralDifferenceOfTheForceOnEveryPreset) {
                    std::to_string(F(2)) + ", " + std::to_string(F(3)) + ", " +
                    std::to_string(F(4)));
       const FiveDofSolution s = solve_five_dof(b, F);
-      double dmax = 0;
-      for (double d : s.at.approaches) dmax = std::max(dmax, d);
-      ASSERT_GT(dmax, 0);
-      const double h = 1e-4 * dmax;
-      Matrix5 numeric;
-      for (int i = 0; i < 5; ++i) {
-        Vector5 dq = Vector5::Zero();
-        dq(i) = i < 3 ? h : h / b.groove_radius;
-        numeric.col(i) = (five_dof_point(b, s.displacement + dq).force -
-                          five_dof_point(b, s.displacement - dq).force) /
-                         (2 * dq(i));
-      }
-      const double scale = s.at.stiffness.cwiseAbs().maxCoeff();
-      EXPECT_LE((numeric - s.at.stiffness).cwiseAbs().maxCoeff(), 1e-6 * scale);
+      expect_stiffness_is_the_central_difference(b, s);
     }
   }
 }
@@ -275,19 +280,7 @@ TEST(FiveDofStatic, StiffnessAtSpeedIsTheCentralDifferenceOfTheForce) {
     for (const Vector5& F : loads(b)) {
       SCOPED_TRACE(name);
       const FiveDofSolution s = solve_five_dof(b, F);
-      double dmax = 0;
-      for (double d : s.at.approaches) dmax = std::max(dmax, d);
-      const double h = 1e-4 * dmax;
-      Matrix5 numeric;
-      for (int i = 0; i < 5; ++i) {
-        Vector5 dq = Vector5::Zero();
-        dq(i) = i < 3 ? h : h / b.groove_radius;
-        numeric.col(i) = (five_dof_point(b, s.displacement + dq).force -
-                          five_dof_point(b, s.displacement - dq).force) /
-                         (2 * dq(i));
-      }
-      const double scale = s.at.stiffness.cwiseAbs().maxCoeff();
-      EXPECT_LE((numeric - s.at.stiffness).cwiseAbs().maxCoeff(), 1e-6 * scale);
+      expect_stiffness_is_the_central_difference(b, s);
       EXPECT_EQ((s.at.stiffness - s.at.stiffness.transpose()).cwiseAbs().maxCoeff(), 0.0);
     }
   }
@@ -360,6 +353,12 @@ TEST(BallPassStiffness, ARadialLoadRipplesWithThePitchAndParsevalHolds) {
 
 TEST(BallPassStiffness, NeedsFourSamples) {
   EXPECT_THROW(ball_pass_stiffness(of_preset("6308"), Vector5::Zero(), 3), InputError);
+}
+
+TEST(FiveDofStatic, ANonFiniteLoadIsAnInputError) {
+  Vector5 F = Vector5::Zero();
+  F(1) = std::nan("");
+  EXPECT_THROW(solve_five_dof(of_preset("6308"), F), InputError);
 }
 
 TEST(FiveDofStatic, NoLoadIsTheCentredPosition) {

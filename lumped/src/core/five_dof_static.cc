@@ -203,6 +203,11 @@ FiveDofSolution solve_five_dof(const FiveDofBearing& b, const Vector5& load, con
   const Vector5 S = scales(b);  // q = S q', F' = S F (moments over ℜ_i)
   Vector5 free;                 // 1 for a free DOF, 0 for a held one
   for (int i = 0; i < 5; ++i) free(i) = held[i] ? 0.0 : 1.0;
+  if (!load.allFinite())
+    throw InputError("5-DOF static solution: the load (" + format_number(load(0)) + ", " +
+                     format_number(load(1)) + ", " + format_number(load(2)) + " N; " +
+                     format_number(load(3)) + ", " + format_number(load(4)) +
+                     " N m) is not finite; allowed: finite forces and moments");
   const Vector5 Fs = S.cwiseProduct(load).cwiseProduct(free);
   const double Fn = Fs.norm();
   if (Fn == 0) {
@@ -233,7 +238,8 @@ FiveDofSolution solve_five_dof(const FiveDofBearing& b, const Vector5& load, con
   sol.displacement = S.cwiseProduct(qs);
   sol.at = five_dof_point(b, sol.displacement);
   sol.residual = at.gradient.norm() / Fn;
-  if (!(sol.residual <= 1e-10))
+  // A NaN anywhere in q or K fails here too: no non-finite number leaves the solution.
+  if (!(sol.residual <= 1e-10) || !sol.displacement.allFinite() || !sol.at.stiffness.allFinite())
     throw SolverError("5-DOF static solution: the load (" + format_number(load(0)) + ", " +
                       format_number(load(1)) + ", " + format_number(load(2)) + " N; " +
                       format_number(load(3)) + ", " + format_number(load(4)) +
