@@ -23,6 +23,8 @@ PHYSICS_FILES = [
     "lumped/src/core/excitation.cc", "lumped/src/core/local_defect.cc",
     "lumped/src/core/traction.cc", "lumped/src/core/bearing.cc", "lumped/src/core/material.cc",
     "lumped/src/core/numerics/roots.cc", "lumped/src/core/numerics/line_search.cc",
+    # the 5-DOF static solution and its stiffness (issue 32)
+    "lumped/src/core/five_dof_static.cc", "lumped/src/core/ball_pass_stiffness.cc",
     # the models
     "lumped/src/models/two_dof.cc", "lumped/src/models/three_dof.cc",
     "lumped/src/models/ball_dofs.cc", "lumped/src/models/contact_kernels.cc",

@@ -159,6 +159,7 @@ std::vector<Check> stiffness_checks() {
   std::vector<Check> all;
   for (const std::string& name : preset_names()) all.push_back(radial_zero_clearance(name));
   for (const std::string& name : preset_names()) all.push_back(axial_preload(name));
+  for (Check& c : stiffness_matrix_checks()) all.push_back(std::move(c));
   return all;
 }
 
