@@ -3,9 +3,10 @@
 // load distribution (Harris's K_r = 1.5 Z K J_r δ^{1/2}, J_r the load-distribution integral) and
 // the axial stiffness of a preloaded deep-groove bearing (the derivative of Harris's
 // F_z = Z K [A₀ (cos α₀ / cos α − 1)]^{3/2} sin α along the axial approach). The contact constant
-// of the references is the checks' own exact Hertz solution (hertz_reference.h). Its analytic
-// Hessian against central differences, its symmetry, definiteness and the 2-DOF/3-DOF reductions
-// are unit-test rows (FiveDofStatic, BallPassStiffness in checks/unit_tests.cc).
+// of the references is the checks' own exact Hertz solution (hertz_reference.h). The whole
+// matrix against central differences of the checks' own ring on balls, its definiteness and the
+// 2-DOF/3-DOF reductions are in stiffness_matrix.cc; at speed and over a ball pass the unit-test
+// rows judge (FiveDofStatic, BallPassStiffness in checks/unit_tests.cc).
 
 #include <cmath>
 #include <string>
