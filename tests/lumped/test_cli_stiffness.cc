@@ -1,8 +1,8 @@
 // bearing-sim stiffness end to end (issue 32): the files and their columns, the values against
 // a direct solve_five_dof, the grid of --vary, info's matrix, operation.moment (read by every
-// command, refused by run), the ball pass (stiffness_ball_pass.csv, stiffness.json's ball_pass)
-// against direct solves and the kinematics, and the errors: exit status, message, no output
-// folder.
+// command, refused by run), the ball pass (stiffness_ball_pass.csv, stiffness.json's ball_pass,
+// info's lines) against direct solves and the kinematics, and the errors: exit status, message,
+// no output folder.
 
 #include <cmath>
 #include <complex>
@@ -16,6 +16,7 @@
 
 #include "bearing/case_file.h"
 #include "bearing/five_dof_static.h"
+#include "bearing/info_report.h"
 #include "cli_helpers.h"
 
 namespace {
@@ -532,6 +533,49 @@ TEST(CliStiffness, BallPassZeroLeavesItOut) {
   EXPECT_FALSE(j.contains("ball_pass_definition"));
   EXPECT_EQ(out.find("ball pass"), std::string::npos) << out;
   EXPECT_EQ(out.find("BPFO"), std::string::npos) << out;
+}
+
+// info: under the matrix, the diagonal's range over one ball pass and its 1×BPFO amplitude, at
+// 16 cage angles: stiffness --ball-pass 16's numbers, to the bit.
+TEST(CliStiffness, InfoShowsTheBallPass) {
+  const fs::path d = fresh_dir("stiffness_info_ball_pass");
+  ASSERT_EQ(sim("stiffness " + kExample + " --ball-pass 16 --quiet --out " + d.string()), 0);
+  const auto expected = nlohmann::json::parse(read(d / "stiffness.json"))["points"][0]["ball_pass"];
+  std::string out;
+  ASSERT_EQ(sim("info --json " + kExample, &out), 0) << out;
+  const auto j = nlohmann::json::parse(out);
+  EXPECT_EQ(j["stiffness"]["ball_pass"], expected);
+  EXPECT_EQ(j["stiffness"]["ball_pass"]["bpfo"].get<double>(),
+            j["kinematics"]["bpfo"].get<double>());
+  EXPECT_EQ(j["units"]["stiffness.ball_pass.bpfo"], "Hz");
+  ASSERT_EQ(sim("info " + kExample, &out), 0) << out;
+  for (const char* s : {"over one ball pass (16 cage angles", "BPFO = 102.4 Hz", "1xBPFO",
+                        "k_yy [N/m]", "k_gy_gy [N*m/rad]"})
+    EXPECT_NE(out.find(s), std::string::npos) << s << "\n" << out;
+  // k_yy's line: its min and max over the pitch, and its amplitude at 1xBPFO.
+  const std::size_t line = out.find("  k_yy [N/m]");
+  ASSERT_NE(line, std::string::npos) << out;
+  std::istringstream row(out.substr(line + 12, out.find('\n', line) - line - 12));
+  double lo = 0, hi = 0, first = 0;
+  row >> lo >> hi >> first;
+  EXPECT_NEAR(lo, entry(expected["min"], 1, 1), 1e-3 * lo);
+  EXPECT_NEAR(hi, entry(expected["max"], 1, 1), 1e-3 * hi);
+  EXPECT_NEAR(first, entry(expected["harmonics"][0]["amplitude"], 1, 1), 1e-3 * first);
+}
+
+// `run` asks compute_info for the elastic-limit warning alone (lumped/app/bearing_sim.cc):
+// without_stiffness leaves the 5-DOF stiffness and its ball pass out, so no run pays for them.
+TEST(CliStiffness, RunsInfoPartHasNoStiffnessNorBallPass) {
+  const bearing::Case c = bearing::read_case_file(kExample);
+  const bearing::InfoReport r = bearing::compute_info(c, bearing::InfoParts::without_stiffness);
+  EXPECT_FALSE(r.stiffness.has_value());
+  EXPECT_EQ(r.stiffness_error, "");
+  EXPECT_EQ(r.ball_pass_error, "");
+  const bearing::InfoReport all = bearing::compute_info(c);
+  ASSERT_TRUE(all.stiffness.has_value());
+  ASSERT_TRUE(all.stiffness->ball_pass.has_value());
+  EXPECT_EQ(all.stiffness->ball_pass->samples.size(),
+            static_cast<std::size_t>(bearing::kInfoBallPassSamples));
 }
 
 }  // namespace
