@@ -16,7 +16,7 @@ const char* const kBallPassDefinition =
     "pitch from the case's cage phase phi_0 (cage_angles[0]: the static point), each its own "
     "equilibrium under the point's load; mean, min and max entry by entry; harmonics[m-1] "
     "the amplitude of each entry at m x BPFO, (2/N) |sum_k K_k exp(-2 pi i m k/N)|, "
-    "m = 1 ... N/2-1: in time K(t) = mean + sum_m amplitude_m cos(2 pi m BPFO t + phase_m), "
+    "every m < N/2: in time K(t) = mean + sum_m amplitude_m cos(2 pi m BPFO t + phase_m), "
     "the parametric excitation the dynamic models feel";
 
 namespace {

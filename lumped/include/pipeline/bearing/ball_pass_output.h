@@ -19,7 +19,7 @@ extern const char* const kBallPassDefinition;
 
 /// The ball pass of `p` (which has one) as JSON: samples (the count N), cage_angles [rad], bpfo
 /// [Hz], mean, min, max (5×5, the units of K), harmonics[] of {order m, frequency = m × bpfo
-/// [Hz], amplitude (5×5, the units of K)}, m = 1 … N/2 − 1.
+/// [Hz], amplitude (5×5, the units of K)}, every m < N/2.
 nlohmann::json ball_pass_json(const StiffnessPoint& p);
 
 /// The units of ball_pass_json's fields, as entries of a `units` object ("ball_pass.bpfo": "Hz",
