@@ -41,6 +41,7 @@ installed) into ``build/python/bearing``: ``PYTHONPATH=build/python /usr/bin/pyt
 """
 
 import importlib as _importlib
+import operator as _operator
 import os as _os
 
 __version__ = "0.1.0"
@@ -135,19 +136,19 @@ def ball_pass_stiffness(case, samples=32):
     - ``cage_angles`` [N]: the cage angles phi_k = phi_0 + k (2*pi/Z)/N [rad];
     - ``samples`` [N, 5, 5]: K at each (``samples[0]`` is ``stiffness(case)``, the case's phase);
     - ``mean``, ``min``, ``max`` [5, 5]: over the pitch, entry by entry;
-    - ``harmonics`` [N/2 - 1, 5, 5]: ``harmonics[m - 1]`` each entry's amplitude at m x BPFO,
-      (2/N) |sum_k K_k exp(-2*pi*i*m*k/N)|, m = 1 ... N/2 - 1;
+    - ``harmonics`` [(N - 1) // 2, 5, 5]: ``harmonics[m - 1]`` each entry's amplitude at m x BPFO,
+      (2/N) |sum_k K_k exp(-2*pi*i*m*k/N)|, every m < N/2 (m = 1 ... N/2 - 1 for an even N);
     - ``bpfo``: the BPFO at ``operation.speed`` [Hz] (outer ring fixed, pure rolling), so
       harmonic m lies at m * bpfo.
 
     Units of every matrix as :func:`stiffness`'s: [:3, :3] N/m, [:3, 3:] N/rad, [3:, :3] N,
-    [3:, 3:] N*m/rad. Raises InputError (``samples`` out of range, the case) or SolverError (an
-    equilibrium not reached at a cage angle).
+    [3:, 3:] N*m/rad. Raises TypeError (``samples`` not an integer), InputError (``samples`` out
+    of range, the case) or SolverError (an equilibrium not reached at a cage angle).
 
     >>> bp = bearing.ball_pass_stiffness(bearing.Case.default(), samples=32)
     >>> bp["max"][1, 1] - bp["min"][1, 1], bp["harmonics"][0, 1, 1]   # k_yy ripple [N/m]
     """
-    return _bearing.ball_pass_stiffness(_case(case), int(samples))
+    return _bearing.ball_pass_stiffness(_case(case), _operator.index(samples))
 
 
 def run(case):

@@ -235,6 +235,10 @@ class Stiffness(unittest.TestCase):
                 bearing.ball_pass_stiffness(case, samples=bad)
             self.assertIn("samples = %d" % bad, str(e.exception))
             self.assertIn("from 4 to 4096", str(e.exception))
+        with self.assertRaises(TypeError):
+            bearing.ball_pass_stiffness(case, samples=16.5)
+        self.assertEqual(bearing.ball_pass_stiffness(case, np.int64(4))["samples"].shape,
+                         (4, 5, 5))
 
     def test_errors_raise_as_the_cli_exits(self):
         with self.assertRaises(bearing.InputError) as e:
