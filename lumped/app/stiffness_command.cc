@@ -3,9 +3,11 @@
 
 #include "stiffness_command.h"
 
+#include <charconv>
 #include <cstdio>
 #include <iostream>
 #include <memory>
+#include <system_error>
 
 #include "bearing/case_file.h"
 #include "bearing/errors.h"
@@ -36,15 +38,29 @@ std::string point_name(std::size_t i, std::size_t n, const std::vector<bearing::
          ")";
 }
 
-// One point's case and solution; its errors name the point.
+// --ball-pass: an integer 4 … kMaxBallPassSamples, or 0 (no ball pass).
+int ball_pass_samples(const std::string& text) {
+  int n = -1;
+  const char* end = text.data() + text.size();
+  const auto [ptr, ec] = std::from_chars(text.data(), end, n);
+  if (text.empty() || ec != std::errc() || ptr != end || (n != 0 && n < 4) ||
+      n > bearing::kMaxBallPassSamples)
+    throw InputError("--ball-pass " + text + ": allowed an integer from 4 to " +
+                     std::to_string(bearing::kMaxBallPassSamples) +
+                     " (cage angles through one ball pitch), or 0 to leave the ball pass out");
+  return n;
+}
+
+// One point's case and solution (with its ball pass at `samples` cage angles, 0: none); its
+// errors name the point.
 bearing::StiffnessRow solve(const bearing::SweepBase& base, const bearing::SweepPoint& p,
-                            const std::string& where) {
+                            int samples, const std::string& where) {
   try {
     const bearing::Case c = bearing::load_sweep_case(base, p.overrides);
     bearing::StiffnessRow row;
     row.values = p.values;
     row.speed = c.operation.speed;
-    row.point = bearing::stiffness_point(c);
+    row.point = bearing::stiffness_point(c, samples);
     return row;
   } catch (const InputError& e) {
     throw InputError(where + ": " + e.what());
@@ -77,9 +93,11 @@ CLI::App* add_stiffness_command(CLI::App& app, StiffnessOptions& o, const std::s
       "operation.load (with the rotor weight when operation.gravity), "
       "operation.axial_load and operation.moment, whatever model.kind; or at every point of a "
       "--vary grid. Writes DIR/stiffness.csv (per point the varied keys, the 15 k_ij with units, "
-      "the displacement, q_max, loaded_balls, the load) and DIR/stiffness.json (also the full "
-      "matrix, each ball's load and contact angle, the units and assumptions), all or nothing; "
-      "prints the matrix (one point) or the main terms (a grid).");
+      "the displacement, q_max, loaded_balls, the load), DIR/stiffness.json (also the full "
+      "matrix, each ball's load and contact angle, the ball pass, the units and assumptions) and "
+      "DIR/stiffness_ball_pass.csv (per point and k_ij its static value, mean, min, max and "
+      "amplitudes at 1xBPFO, 2xBPFO, ... over one ball pass), all or nothing; prints the matrix "
+      "(one point) or the main terms (a grid), and the ball pass's range.");
   cmd->add_option("CASE", o.case_path, case_help);
   cmd->add_option("--set", o.sets, "Override one case-file value (repeat for more)")
       ->type_name("TABLE.KEY=VALUE")
@@ -95,6 +113,13 @@ CLI::App* add_stiffness_command(CLI::App& app, StiffnessOptions& o, const std::s
                   "stiffness_ross.csv, the table ROSS's BearingElement reads (frequency [rad/s], "
                   "kxx, kxy, kyx, kyy [N/m], damping 0; the points may vary operation.speed only)")
       ->capture_default_str();
+  cmd->add_option("--ball-pass", o.ball_pass,
+                  "Cage angles through one ball pitch at which K is solved, each its own "
+                  "equilibrium under the point's load: its mean, min, max and BPFO harmonics, the "
+                  "parametric excitation (an integer from 4 to 4096; 0: leave it out, no "
+                  "stiffness_ball_pass.csv)")
+      ->type_name("N")
+      ->capture_default_str();
   cmd->add_flag("--quiet", o.quiet, "Print nothing on success");
   return cmd;
 }
@@ -104,6 +129,7 @@ int stiffness_command(const StiffnessOptions& o) {
     throw InputError("--format " + o.format +
                      ": allowed csv (stiffness.csv and stiffness.json) or ross (also "
                      "stiffness_ross.csv, ROSS's BearingElement table)");
+  const int samples = ball_pass_samples(o.ball_pass);
   std::vector<bearing::Override> overrides;
   for (const auto& s : o.sets) overrides.push_back(bearing::parse_override(s));
   const bearing::SweepBase base = bearing::sweep_base(o.case_path, overrides);
@@ -113,11 +139,12 @@ int stiffness_command(const StiffnessOptions& o) {
       grid ? grid->keys() : std::vector<bearing::SweepKey>{};
   bearing::StiffnessTable table;
   table.source = base.source;
+  table.ball_pass_samples = samples;
   for (const auto& k : keys)
     table.keys.push_back({k.key, k.integer ? "" : std::string(bearing::si_unit(k.dimension))});
   for (std::size_t i = 0; i < n; ++i) {
     const bearing::SweepPoint p = grid ? grid->point(i) : bearing::SweepPoint{};
-    table.rows.push_back(solve(base, p, point_name(i, n, keys, p)));
+    table.rows.push_back(solve(base, p, samples, point_name(i, n, keys, p)));
   }
   table.bearing = bearing::load_sweep_case(base, {}).bearing.designation;
   bearing::write_stiffness(o.out_dir, table, o.format == "ross");

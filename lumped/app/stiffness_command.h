@@ -16,6 +16,9 @@ struct StiffnessOptions {
   std::string case_path, out_dir;
   std::vector<std::string> sets, vary;
   std::string format = "csv";  ///< "csv" (stiffness.csv and .json) | "ross" (also ROSS's table)
+  /// Cage angles a pitch of each point's ball pass, as given: an integer 4 … 4096, or 0 for none
+  /// (checked by stiffness_command).
+  std::string ball_pass = "32";
   bool quiet = false;
 };
 

@@ -27,6 +27,8 @@ API
               ``case.set(key, value)`` (as ``--set``), ``case.to_toml()``
 ``info``      ``bearing-sim info --json`` as a dict
 ``stiffness`` the bearing's 5x5 stiffness at the case's operating point (``bearing-sim stiffness``)
+``ball_pass_stiffness`` that stiffness over one ball pass: its samples, mean, range and BPFO
+              harmonics (the parametric excitation)
 ``run``       ``bearing-sim run``: a ``Result`` (``.t``, channels, ``.spectrum``, ``.summary``)
 ``sweep``     ``bearing-sim sweep``: the rows of sweep.csv (list of dicts or pandas DataFrame)
 ``analyse``   a measured record (NumPy array, SI) analysed: an ``Analysis`` (``.summary``, spectra)
@@ -39,6 +41,7 @@ installed) into ``build/python/bearing``: ``PYTHONPATH=build/python /usr/bin/pyt
 """
 
 import importlib as _importlib
+import operator as _operator
 import os as _os
 
 __version__ = "0.1.0"
@@ -70,8 +73,8 @@ else:
         "A numerical procedure that did not reach its answer, e.g. a blow-up; the message says "
         "why and what to change (bearing-sim exits with status 3).")
 
-__all__ = ["Case", "Result", "Analysis", "InputError", "SolverError", "info", "stiffness", "run",
-           "sweep", "analyse", "presets", "keys", "keys_help"]
+__all__ = ["Case", "Result", "Analysis", "InputError", "SolverError", "info", "stiffness",
+           "ball_pass_stiffness", "run", "sweep", "analyse", "presets", "keys", "keys_help"]
 
 
 def _case(case):
@@ -117,6 +120,35 @@ def stiffness(case):
     >>> k[1, 1]                                   # k_yy [N/m]
     """
     return _bearing.stiffness(_case(case))
+
+
+def ball_pass_stiffness(case, samples=32):
+    """The bearing's stiffness over one ball pass: a dict of NumPy arrays (float64, SI).
+
+    ``case``: a :class:`Case`, or the path of a case file. As the cage turns, the balls pass the
+    load zone and K (the matrix of :func:`stiffness`) varies with the cage angle; the ball set
+    repeats after one pitch 2*pi/Z, so K is periodic at the ball-pass frequency over the outer
+    race (BPFO): the parametric excitation the dynamic models feel. K is solved at ``samples``
+    cage angles (an integer from 4 to 4096; as ``bearing-sim stiffness --ball-pass N``) through
+    one pitch from the case's cage phase, each its own equilibrium under the same load, at the
+    case's speed (each ball's centrifugal load). Keys:
+
+    - ``cage_angles`` [N]: the cage angles phi_k = phi_0 + k (2*pi/Z)/N [rad];
+    - ``samples`` [N, 5, 5]: K at each (``samples[0]`` is ``stiffness(case)``, the case's phase);
+    - ``mean``, ``min``, ``max`` [5, 5]: over the pitch, entry by entry;
+    - ``harmonics`` [(N - 1) // 2, 5, 5]: ``harmonics[m - 1]`` each entry's amplitude at m x BPFO,
+      (2/N) |sum_k K_k exp(-2*pi*i*m*k/N)|, every m < N/2 (m = 1 ... N/2 - 1 for an even N);
+    - ``bpfo``: the BPFO at ``operation.speed`` [Hz] (outer ring fixed, pure rolling), so
+      harmonic m lies at m * bpfo.
+
+    Units of every matrix as :func:`stiffness`'s: [:3, :3] N/m, [:3, 3:] N/rad, [3:, :3] N,
+    [3:, 3:] N*m/rad. Raises TypeError (``samples`` not an integer), InputError (``samples`` out
+    of range, the case) or SolverError (an equilibrium not reached at a cage angle).
+
+    >>> bp = bearing.ball_pass_stiffness(bearing.Case.default(), samples=32)
+    >>> bp["max"][1, 1] - bp["min"][1, 1], bp["harmonics"][0, 1, 1]   # k_yy ripple [N/m]
+    """
+    return _bearing.ball_pass_stiffness(_case(case), _operator.index(samples))
 
 
 def run(case):

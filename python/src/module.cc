@@ -261,6 +261,50 @@ py::list sweep(const CaseHandle& c, const py::dict& vary, int jobs) {
   return sweep_rows(axes, rows);
 }
 
+// A matrix as a new 5×5 NumPy array.
+py::array_t<double> matrix_array(const bearing::Matrix5& K) {
+  py::array_t<double> a(std::vector<py::ssize_t>{5, 5});
+  auto out = a.mutable_unchecked<2>();
+  for (py::ssize_t i = 0; i < 5; ++i)
+    for (py::ssize_t j = 0; j < 5; ++j) out(i, j) = K(i, j);
+  return a;
+}
+
+// Matrices as a new n×5×5 NumPy array.
+py::array_t<double> matrices_array(const std::vector<bearing::Matrix5>& Ks) {
+  py::array_t<double> a(std::vector<py::ssize_t>{static_cast<py::ssize_t>(Ks.size()), 5, 5});
+  auto out = a.mutable_unchecked<3>();
+  for (py::ssize_t k = 0; k < out.shape(0); ++k)
+    for (py::ssize_t i = 0; i < 5; ++i)
+      for (py::ssize_t j = 0; j < 5; ++j) out(k, i, j) = Ks[k](i, j);
+  return a;
+}
+
+// bearing.ball_pass_stiffness: the case's point with its ball pass, as NumPy arrays.
+py::dict ball_pass_stiffness(const CaseHandle& c, int samples) {
+  if (samples < 4 || samples > bearing::kMaxBallPassSamples)
+    throw bearing::InputError(
+        "samples = " + std::to_string(samples) + ": allowed an integer from 4 to " +
+        std::to_string(bearing::kMaxBallPassSamples) + " (cage angles through one ball pitch)");
+  const bearing::Case input = c.resolved;
+  bearing::StiffnessPoint p;
+  {
+    py::gil_scoped_release release;
+    p = bearing::stiffness_point(input, samples);
+  }
+  const bearing::BallPassStiffness& b = *p.ball_pass;
+  py::dict out;
+  out["cage_angles"] =
+      py::array_t<double>(static_cast<py::ssize_t>(b.cage_angles.size()), b.cage_angles.data());
+  out["samples"] = matrices_array(b.samples);
+  out["mean"] = matrix_array(b.mean);
+  out["min"] = matrix_array(b.min);
+  out["max"] = matrix_array(b.max);
+  out["harmonics"] = matrices_array(b.harmonics);
+  out["bpfo"] = p.bpfo;
+  return out;
+}
+
 void bind_case(py::module_& m);
 void bind_result(py::module_& m);
 
@@ -296,16 +340,16 @@ PYBIND11_MODULE(_bearing, m) {
         bearing::StiffnessPoint p;
         {
           py::gil_scoped_release release;
-          p = bearing::stiffness_point(input);
+          p = bearing::stiffness_point(input, 0);  // the static matrix alone
         }
-        py::array_t<double> k(std::vector<py::ssize_t>{5, 5});
-        auto out = k.mutable_unchecked<2>();
-        for (py::ssize_t i = 0; i < 5; ++i)
-          for (py::ssize_t j = 0; j < 5; ++j) out(i, j) = p.solution.at.stiffness(i, j);
-        return k;
+        return matrix_array(p.solution.at.stiffness);
       },
       py::arg("case"),
       "The 5x5 stiffness K = dF/dq at the case's operating point (bearing/stiffness.h), SI.");
+  m.def("ball_pass_stiffness", &ball_pass_stiffness, py::arg("case"),
+        py::arg("samples") = bearing::kBallPassSamples,
+        "K over one ball pass at `samples` cage angles (bearing/ball_pass_stiffness.h), SI: a "
+        "dict of NumPy arrays.");
   m.def("run", &run_case, py::arg("case"),
         "Simulates and analyses a case as `bearing-sim run` does (GIL released).");
   m.def("sweep", &sweep, py::arg("case"), py::arg("vary"), py::arg("jobs") = 0,

@@ -17,10 +17,11 @@ set(number_keys
   "contact outer sum_rho" "contact outer f_rho" "contact outer ellipticity"
   "contact outer delta_star" "contact outer K"
   "contact inner exponent" "contact outer exponent"
-  "contact K" "contact exponent" "static q_max" "stiffness q_max")
+  "contact K" "contact exponent" "static q_max" "stiffness q_max" "stiffness ball_pass bpfo")
 set(array_keys "static deflection" "static ball_loads" "stiffness displacement"
   "stiffness matrix 0" "stiffness matrix 1" "stiffness matrix 2" "stiffness matrix 3"
-  "stiffness matrix 4")
+  "stiffness matrix 4" "stiffness ball_pass cage_angles" "stiffness ball_pass min 1"
+  "stiffness ball_pass max 1" "stiffness ball_pass harmonics 0 amplitude 1")
 
 foreach(case IN LISTS cases)
   execute_process(COMMAND "${BEARING_SIM}" info ${case} --json

@@ -1,8 +1,11 @@
 // bearing-sim stiffness end to end (issue 32): the files and their columns, the values against
 // a direct solve_five_dof, the grid of --vary, info's matrix, operation.moment (read by every
-// command, refused by run), and the errors: exit status, message, no output folder.
+// command, refused by run), the ball pass (stiffness_ball_pass.csv, stiffness.json's ball_pass,
+// info's lines) against direct solves and the kinematics, and the errors: exit status, message,
+// no output folder.
 
 #include <cmath>
+#include <complex>
 #include <filesystem>
 #include <sstream>
 #include <string>
@@ -13,6 +16,7 @@
 
 #include "bearing/case_file.h"
 #include "bearing/five_dof_static.h"
+#include "bearing/info_report.h"
 #include "cli_helpers.h"
 
 namespace {
@@ -24,12 +28,13 @@ using bearing::test::sim;
 
 const std::string kExample = std::string(BEARING_SOURCE_DIR) + "/examples/seed003_6308.toml";
 
-// The 5-DOF solution from the library's own pieces, not through the pipeline's mapping.
-bearing::FiveDofSolution direct(const std::vector<bearing::Override>& sets) {
+// The 5-DOF solution from the library's own pieces, not through the pipeline's mapping: ball 0
+// at `phase` [rad] (the example's cage phase is 0).
+bearing::FiveDofSolution direct(const std::vector<bearing::Override>& sets, double phase = 0.0) {
   const bearing::Case c = bearing::read_case_file(kExample, sets);
   // ball.centrifugal is on by default: each ball's centrifugal load at the case's speed.
   const bearing::FiveDofBearing b =
-      bearing::five_dof_bearing(c.bearing, bearing::contact_constants(c), 0.0,
+      bearing::five_dof_bearing(c.bearing, bearing::contact_constants(c), phase,
                                 bearing::ball_centrifugal_load(c.bearing, c.operation.speed));
   bearing::Vector5 f;
   f << c.operation.load.x(), c.operation.load.y(), c.operation.axial_load, c.operation.moment.x(),
@@ -248,6 +253,11 @@ TEST(CliStiffness, InputErrorsLeaveNoFolder) {
       {"--vary operation.axial_load=0:200:3 --format ross",
        {"--format ross", "operation.speed only", "operation.axial_load"}},
       {"--vary operation.axial_load=0:1e6:100001", {"from 1 to 100000"}},
+      {"--ball-pass 3", {"--ball-pass 3", "from 4 to 4096", "or 0"}},
+      {"--ball-pass 4097", {"--ball-pass 4097", "from 4 to 4096", "or 0"}},
+      {"--ball-pass -1", {"--ball-pass -1", "from 4 to 4096"}},
+      {"--ball-pass 16.5", {"--ball-pass 16.5", "an integer from 4 to 4096"}},
+      {"--ball-pass x", {"--ball-pass x", "an integer from 4 to 4096"}},
   };
   for (const Bad& b : bad) {
     const fs::path d = fresh_dir("stiffness_bad");
@@ -332,6 +342,240 @@ TEST(CliStiffness, SpeedChangesTheMatrixOnlyWithTheCentrifugalLoad) {
   // At 20 000 rpm the centrifugal load takes part of the load off the inner contacts: the
   // radial stiffness differs by more than rounding.
   EXPECT_GT(std::abs(a.at(10, "k_yy [N/m]") / a.at(0, "k_yy [N/m]") - 1), 1e-3);
+}
+
+// stiffness_ball_pass.csv as rows of text cells, by column name.
+struct LongCsv {
+  std::vector<std::string> header;
+  std::vector<std::vector<std::string>> rows;
+  std::size_t column(const std::string& name) const {
+    for (std::size_t c = 0; c < header.size(); ++c)
+      if (header[c] == name) return c;
+    ADD_FAILURE() << "no column " << name;
+    return 0;
+  }
+  std::string text(std::size_t row, const std::string& name) const {
+    return rows.at(row).at(column(name));
+  }
+  double at(std::size_t row, const std::string& name) const { return std::stod(text(row, name)); }
+};
+
+LongCsv read_long_csv(const fs::path& p) {
+  const Csv csv = read_csv(p);
+  return {csv.header, csv.rows};
+}
+
+// K_ij of a JSON 5×5 matrix.
+double entry(const nlohmann::json& K, int i, int j) {
+  return K.at(i).at(j).get<double>();
+}
+
+// The ball pass of a grid over the speed (a radial load in the clearance: one or two balls carry
+// it, so K ripples strongly): stiffness_ball_pass.csv, stiffness.csv and stiffness.json agree to
+// the bit, the static value lies in the range, the mean too, and the stdout table shows it.
+TEST(CliStiffness, BallPassFilesAgree) {
+  const fs::path d = fresh_dir("stiffness_ball_pass");
+  std::string out;
+  ASSERT_EQ(sim("stiffness " + kExample +
+                    " --vary operation.speed=0rpm:20000rpm:3 --ball-pass 16 --out " + d.string(),
+                &out),
+            0)
+      << out;
+  const Csv wide = read_csv(d / "stiffness.csv");
+  const LongCsv bp = read_long_csv(d / "stiffness_ball_pass.csv");
+  std::vector<std::string> header = {
+      "operation.speed [rad/s]", "bpfo [Hz]", "entry", "unit", "static", "mean", "min", "max"};
+  for (int m = 1; m <= 7; ++m) header.push_back(std::to_string(m) + "xBPFO");  // N/2 - 1
+  EXPECT_EQ(bp.header, header);
+  ASSERT_EQ(bp.rows.size(), 3u * 15u);
+  const auto j = nlohmann::json::parse(read(d / "stiffness.json"));
+  EXPECT_NE(j.value("ball_pass_definition", "").find("cage angles"), std::string::npos);
+  EXPECT_EQ(j["units"]["ball_pass.bpfo"], "Hz");
+  EXPECT_EQ(j["units"]["ball_pass.cage_angles"], "rad");
+  for (std::size_t p = 0; p < 3; ++p) {
+    const auto& b = j["points"][p]["ball_pass"];
+    ASSERT_TRUE(b.is_object()) << p;
+    EXPECT_EQ(b["samples"], 16);
+    ASSERT_EQ(b["cage_angles"].size(), 16u);
+    EXPECT_EQ(b["cage_angles"][0].get<double>(), 0.0);  // from the case's cage phase
+    EXPECT_NEAR(b["cage_angles"][15].get<double>(), 2 * M_PI / 8 * 15 / 16, 1e-15);
+    ASSERT_EQ(b["harmonics"].size(), 7u);
+    const double bpfo = b["bpfo"].get<double>();
+    int n = 0;
+    for (int i = 0; i < 5; ++i)
+      for (int k = i; k < 5; ++k, ++n) {
+        const std::size_t r = p * 15 + n;
+        const std::string name = std::string(kKColumns[n]);
+        EXPECT_EQ(bp.text(r, "entry") + " [" + bp.text(r, "unit") + "]", name);
+        EXPECT_EQ(bp.at(r, "operation.speed [rad/s]"), wide.at(p, "operation.speed [rad/s]"));
+        EXPECT_EQ(bp.at(r, "bpfo [Hz]"), bpfo);
+        const double st = bp.at(r, "static"), mean = bp.at(r, "mean"), lo = bp.at(r, "min"),
+                     hi = bp.at(r, "max");
+        EXPECT_EQ(st, wide.at(p, name)) << name;  // stiffness.csv's value, to the bit
+        EXPECT_EQ(mean, entry(b["mean"], i, k)) << name;
+        EXPECT_EQ(lo, entry(b["min"], i, k)) << name;
+        EXPECT_EQ(hi, entry(b["max"], i, k)) << name;
+        EXPECT_EQ(entry(b["min"], k, i), lo) << name;  // symmetric
+        const double slack = 1e-12 * std::max(std::abs(lo), std::abs(hi));
+        EXPECT_LE(lo, mean + slack) << name;
+        EXPECT_LE(mean, hi + slack) << name;
+        EXPECT_LE(lo, st) << name;
+        EXPECT_LE(st, hi) << name;
+        for (int m = 1; m <= 7; ++m) {
+          const auto& h = b["harmonics"][m - 1];
+          EXPECT_EQ(h["order"], m);
+          EXPECT_EQ(h["frequency"].get<double>(), m * bpfo);
+          EXPECT_EQ(bp.at(r, std::to_string(m) + "xBPFO"), entry(h["amplitude"], i, k)) << name;
+        }
+      }
+    // The radial load in the clearance ripples k_yy by far more than rounding.
+    EXPECT_GT(entry(b["max"], 1, 1) - entry(b["min"], 1, 1), 0.01 * entry(b["mean"], 1, 1));
+    EXPECT_GT(entry(b["harmonics"][0]["amplitude"], 1, 1), 0.001 * entry(b["mean"], 1, 1));
+  }
+  for (const char* s : {"Over one ball pass", "16 cage angles", "BPFO [Hz]", "k_yy [N/m]", "1xBPFO",
+                        "stiffness_ball_pass.csv"})
+    EXPECT_NE(out.find(s), std::string::npos) << s << "\n" << out;
+}
+
+// The mean, range and first harmonic against direct solves at the same cage angles, at the
+// case's speed (2000 rpm: the centrifugal load in each), without clearance under a radial load;
+// a pure axial load loads every ball alike, so K does not ripple at all.
+TEST(CliStiffness, BallPassEqualsDirectSolvesAndAnAxialLoadDoesNotRipple) {
+  const fs::path d = fresh_dir("stiffness_ball_pass_direct");
+  const std::vector<std::string> sets = {"bearing.clearance=0", "operation.load=[0, -500]"};
+  ASSERT_EQ(sim("stiffness " + kExample +
+                " --set bearing.clearance=0 --set 'operation.load=[0, -500]' --ball-pass 8 "
+                "--quiet --out " +
+                d.string()),
+            0);
+  std::vector<bearing::Override> overrides;
+  for (const auto& s : sets) overrides.push_back(bearing::parse_override(s));
+  const int N = 8, Z = 8;
+  bearing::Matrix5 mean = bearing::Matrix5::Zero(), lo, hi;
+  std::complex<double> first = 0;  // k_yy's DFT at m = 1
+  for (int k = 0; k < N; ++k) {
+    const bearing::Matrix5 K = direct(overrides, 2 * M_PI / Z * k / N).at.stiffness;
+    mean += K / N;
+    lo = k ? lo.cwiseMin(K) : K;
+    hi = k ? hi.cwiseMax(K) : K;
+    first += K(1, 1) * std::polar(1.0, -2 * M_PI * k / N);
+  }
+  const auto b = nlohmann::json::parse(read(d / "stiffness.json"))["points"][0]["ball_pass"];
+  for (int i = 0; i < 5; ++i)
+    for (int j = 0; j < 5; ++j) {
+      const double scale = 1e-12 * mean.cwiseAbs().maxCoeff();
+      EXPECT_NEAR(entry(b["mean"], i, j), mean(i, j), scale) << i << j;
+      EXPECT_NEAR(entry(b["min"], i, j), lo(i, j), scale) << i << j;
+      EXPECT_NEAR(entry(b["max"], i, j), hi(i, j), scale) << i << j;
+    }
+  EXPECT_GT(hi(1, 1) - lo(1, 1), 1e-3 * mean(1, 1));  // it does ripple
+  EXPECT_NEAR(entry(b["harmonics"][0]["amplitude"], 1, 1), 2.0 / N * std::abs(first),
+              1e-12 * mean(1, 1));
+
+  const fs::path a = fresh_dir("stiffness_ball_pass_axial");
+  ASSERT_EQ(sim("stiffness " + kExample +
+                " --set 'operation.load=[0, 0]' --set operation.axial_load=300 --quiet --out " +
+                a.string()),
+            0);
+  const LongCsv bp = read_long_csv(a / "stiffness_ball_pass.csv");
+  ASSERT_EQ(bp.rows.size(), 15u);
+  const double k_zz = bp.at(9, "mean");
+  ASSERT_EQ(bp.text(9, "entry"), "k_zz");
+  ASSERT_GT(k_zz, 1e6);
+  for (std::size_t r = 0; r < 15; ++r) {
+    EXPECT_LE(bp.at(r, "max") - bp.at(r, "min"), 1e-9 * k_zz) << bp.text(r, "entry");
+    for (int m = 1; m <= 15; ++m)
+      EXPECT_LE(std::abs(bp.at(r, std::to_string(m) + "xBPFO")), 1e-9 * k_zz)
+          << bp.text(r, "entry") << " " << m;
+  }
+}
+
+// The BPFO is the kinematics' at the case's speed, outer ring fixed: Z/2 f_r (1 − D cos α/d_m)
+// with α = 0 for this deep-groove bearing under no axial load, and harmonic m lies at m × BPFO.
+TEST(CliStiffness, BallPassBpfoIsTheKinematicOne) {
+  const fs::path d = fresh_dir("stiffness_bpfo");
+  ASSERT_EQ(
+      sim("stiffness " + kExample +
+          " --vary operation.speed=1000rpm:20000rpm:2 --ball-pass 4 --quiet --out " + d.string()),
+      0);
+  const bearing::Case c = bearing::read_case_file(kExample);
+  ASSERT_EQ(c.bearing.contact_angle, 0.0);
+  const auto j = nlohmann::json::parse(read(d / "stiffness.json"));
+  for (int p = 0; p < 2; ++p) {
+    const double rpm = p ? 20000.0 : 1000.0;
+    const double fr = rpm / 60.0;
+    const double bpfo =
+        c.bearing.balls / 2.0 * fr * (1 - c.bearing.ball_diameter / c.bearing.pitch_diameter);
+    const auto& b = j["points"][p]["ball_pass"];
+    EXPECT_NEAR(b["bpfo"].get<double>(), bpfo, 1e-12 * bpfo) << rpm;
+    ASSERT_EQ(b["harmonics"].size(), 1u);  // N = 4: m = 1 alone
+    EXPECT_EQ(b["harmonics"][0]["frequency"].get<double>(), b["bpfo"].get<double>());
+  }
+  // Seed 003's Table 2 gives 102.4 Hz at 2000 rpm: half of it at 1000 rpm.
+  EXPECT_NEAR(j["points"][0]["ball_pass"]["bpfo"].get<double>(), 51.2, 0.05);
+}
+
+// --ball-pass 0: no ball-pass file (an earlier call's removed), nothing of it in stiffness.json
+// or on stdout; the other files as with it.
+TEST(CliStiffness, BallPassZeroLeavesItOut) {
+  const fs::path d = fresh_dir("stiffness_no_ball_pass");
+  ASSERT_EQ(sim("stiffness " + kExample + " --quiet --out " + d.string()), 0);
+  ASSERT_TRUE(fs::exists(d / "stiffness_ball_pass.csv"));  // the default: 32 cage angles
+  const std::string csv = read(d / "stiffness.csv");
+  EXPECT_EQ(nlohmann::json::parse(read(d / "stiffness.json"))["points"][0]["ball_pass"]["samples"],
+            32);
+  std::string out;
+  ASSERT_EQ(sim("stiffness " + kExample + " --ball-pass 0 --out " + d.string(), &out), 0) << out;
+  EXPECT_FALSE(fs::exists(d / "stiffness_ball_pass.csv"));
+  EXPECT_EQ(read(d / "stiffness.csv"), csv);
+  const auto j = nlohmann::json::parse(read(d / "stiffness.json"));
+  EXPECT_FALSE(j["points"][0].contains("ball_pass"));
+  EXPECT_FALSE(j.contains("ball_pass_definition"));
+  EXPECT_EQ(out.find("ball pass"), std::string::npos) << out;
+  EXPECT_EQ(out.find("BPFO"), std::string::npos) << out;
+}
+
+// info: under the matrix, the diagonal's range over one ball pass and its 1×BPFO amplitude, at
+// 16 cage angles: stiffness --ball-pass 16's numbers, to the bit.
+TEST(CliStiffness, InfoShowsTheBallPass) {
+  const fs::path d = fresh_dir("stiffness_info_ball_pass");
+  ASSERT_EQ(sim("stiffness " + kExample + " --ball-pass 16 --quiet --out " + d.string()), 0);
+  const auto expected = nlohmann::json::parse(read(d / "stiffness.json"))["points"][0]["ball_pass"];
+  std::string out;
+  ASSERT_EQ(sim("info --json " + kExample, &out), 0) << out;
+  const auto j = nlohmann::json::parse(out);
+  EXPECT_EQ(j["stiffness"]["ball_pass"], expected);
+  EXPECT_EQ(j["stiffness"]["ball_pass"]["bpfo"].get<double>(),
+            j["kinematics"]["bpfo"].get<double>());
+  EXPECT_EQ(j["units"]["stiffness.ball_pass.bpfo"], "Hz");
+  ASSERT_EQ(sim("info " + kExample, &out), 0) << out;
+  for (const char* s : {"over one ball pass (16 cage angles", "BPFO = 102.4 Hz", "1xBPFO",
+                        "k_yy [N/m]", "k_gy_gy [N*m/rad]"})
+    EXPECT_NE(out.find(s), std::string::npos) << s << "\n" << out;
+  // k_yy's line: its min and max over the pitch, and its amplitude at 1xBPFO.
+  const std::size_t line = out.find("  k_yy [N/m]");
+  ASSERT_NE(line, std::string::npos) << out;
+  std::istringstream row(out.substr(line + 12, out.find('\n', line) - line - 12));
+  double lo = 0, hi = 0, first = 0;
+  row >> lo >> hi >> first;
+  EXPECT_NEAR(lo, entry(expected["min"], 1, 1), 1e-3 * lo);
+  EXPECT_NEAR(hi, entry(expected["max"], 1, 1), 1e-3 * hi);
+  EXPECT_NEAR(first, entry(expected["harmonics"][0]["amplitude"], 1, 1), 1e-3 * first);
+}
+
+// `run` asks compute_info for the elastic-limit warning alone (lumped/app/bearing_sim.cc):
+// without_stiffness leaves the 5-DOF stiffness and its ball pass out, so no run pays for them.
+TEST(CliStiffness, RunsInfoPartHasNoStiffnessNorBallPass) {
+  const bearing::Case c = bearing::read_case_file(kExample);
+  const bearing::InfoReport r = bearing::compute_info(c, bearing::InfoParts::without_stiffness);
+  EXPECT_FALSE(r.stiffness.has_value());
+  EXPECT_EQ(r.stiffness_error, "");
+  EXPECT_EQ(r.ball_pass_error, "");
+  const bearing::InfoReport all = bearing::compute_info(c);
+  ASSERT_TRUE(all.stiffness.has_value());
+  ASSERT_TRUE(all.stiffness->ball_pass.has_value());
+  EXPECT_EQ(all.stiffness->ball_pass->samples.size(),
+            static_cast<std::size_t>(bearing::kInfoBallPassSamples));
 }
 
 }  // namespace

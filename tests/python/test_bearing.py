@@ -194,6 +194,52 @@ class Stiffness(unittest.TestCase):
         self.assertEqual(bearing.stiffness(example).tolist(),
                          bearing.stiffness(bearing.Case.from_file(example)).tolist())
 
+    def test_ball_pass(self):
+        """bearing.ball_pass_stiffness: its shapes, its mean, range and harmonics those of its own
+        samples, samples[0] the static matrix (the case's cage phase), the BPFO info's, and the
+        numbers of the CLI's stiffness.json."""
+        example = str(EXAMPLES / "seed003_6308.toml")  # 20 N in the clearance: K ripples
+        case = bearing.Case.from_file(example)
+        n = 16
+        bp = bearing.ball_pass_stiffness(case, samples=n)
+        self.assertEqual(sorted(bp), ["bpfo", "cage_angles", "harmonics", "max", "mean", "min",
+                                      "samples"])
+        self.assertEqual(bp["cage_angles"].shape, (n,))
+        self.assertEqual(bp["samples"].shape, (n, 5, 5))
+        for key in ("mean", "min", "max"):
+            self.assertEqual(bp[key].shape, (5, 5))
+        self.assertEqual(bp["harmonics"].shape, (n // 2 - 1, 5, 5))
+        np.testing.assert_allclose(bp["mean"], bp["samples"].mean(axis=0), rtol=1e-12,
+                                   atol=1e-12 * np.abs(bp["mean"]).max())
+        np.testing.assert_array_equal(bp["min"], bp["samples"].min(axis=0))
+        np.testing.assert_array_equal(bp["max"], bp["samples"].max(axis=0))
+        amplitude = 2.0 / n * np.abs(np.fft.fft(bp["samples"], axis=0))[1:n // 2]
+        np.testing.assert_allclose(bp["harmonics"], amplitude, rtol=1e-9,
+                                   atol=1e-12 * np.abs(bp["mean"]).max())
+        np.testing.assert_array_equal(bp["samples"][0], bearing.stiffness(case))
+        self.assertGreater(bp["max"][1, 1] - bp["min"][1, 1], 0.01 * bp["mean"][1, 1])
+        pitch = 2 * np.pi / 8
+        np.testing.assert_allclose(bp["cage_angles"], pitch * np.arange(n) / n, rtol=0,
+                                   atol=1e-15)
+        self.assertEqual(bp["bpfo"], bearing.info(case)["kinematics"]["bpfo"])
+        with tempfile.TemporaryDirectory() as tmp:
+            cli("stiffness", example, "--ball-pass", str(n), "--out", tmp, "--quiet")
+            with open(pathlib.Path(tmp) / "stiffness.json") as f:
+                point = json.load(f)["points"][0]["ball_pass"]
+        for key in ("mean", "min", "max", "cage_angles"):
+            self.assertEqual(bp[key].tolist(), point[key], key)
+        self.assertEqual(bp["harmonics"].tolist(), [h["amplitude"] for h in point["harmonics"]])
+        self.assertEqual(bearing.ball_pass_stiffness(example)["samples"].shape, (32, 5, 5))
+        for bad in (3, 4097):
+            with self.assertRaises(bearing.InputError) as e:
+                bearing.ball_pass_stiffness(case, samples=bad)
+            self.assertIn("samples = %d" % bad, str(e.exception))
+            self.assertIn("from 4 to 4096", str(e.exception))
+        with self.assertRaises(TypeError):
+            bearing.ball_pass_stiffness(case, samples=16.5)
+        self.assertEqual(bearing.ball_pass_stiffness(case, np.int64(4))["samples"].shape,
+                         (4, 5, 5))
+
     def test_errors_raise_as_the_cli_exits(self):
         with self.assertRaises(bearing.InputError) as e:
             bearing.stiffness(bearing.Case.default().set("bearing.clearance", "1.3 mm"))

@@ -470,13 +470,41 @@ def case_stiffness(args, plot):
     check(bool(couplings),
           "stiffness: the largest couplings drawn too (%s)" % ", ".join(couplings))
     check("k_xy" not in drawn, "stiffness: a coupling at round-off (k_xy) is not drawn")
+    # The diagonal's range over one ball pass: a band from stiffness.json's min to its max.
+    with open(os.path.join(folder, "stiffness.json")) as f:
+        passes = [p["ball_pass"] for p in json.load(f)["points"]]
+    for i, name in enumerate(("k_xx", "k_yy", "k_zz", "k_gx_gx", "k_gy_gy")):
+        lo = np.array([b["min"][i][i] for b in passes])
+        hi = np.array([b["max"][i][i] for b in passes])
+        band = artist(fig, "ball_pass:" + name)
+        outline = band.get_paths()[0].vertices
+        check(all(any(np.array_equal(v, [xi, y]) for v in outline)
+                  for xi, a, b in zip(x, lo, hi) for y in (a, b)),
+              "stiffness: %s's ball-pass band runs from stiffness.json's min to its max" % name)
+        check(np.all(lo <= data["%s [%s]" % (name, plot.term_unit(i, i))]) and
+              np.all(data["%s [%s]" % (name, plot.term_unit(i, i))] <= hi),
+              "stiffness: %s lies in its ball-pass band" % name)
+    check(passes[0]["max"][1][1] > passes[0]["min"][1][1],
+          "stiffness: without a preload the band has a width")
+    bare = os.path.join(args.work, "bare")
+    run_sim(args, "stiffness", "--vary", "operation.axial_load=0:200:3", "--ball-pass", "0",
+            "--quiet", "--out", bare)
+    bare_fig = plot.stiffness_figure(plot.load_stiffness(bare))
+    check(not bare_fig.findobj(lambda a: (a.get_gid() or "").startswith("ball_pass:")),
+          "stiffness: --ball-pass 0, no band")
     one = os.path.join(args.work, "one")
     run_sim(args, "stiffness", "--set", "operation.axial_load=100", "--quiet", "--out", one)
     check(plot_cli(args, one).returncode == 0, "bearing-plot of one point exits 0")
     check_files(plot, os.path.join(one, "plots"), ["stiffness"])
-    bar = artist(plot.stiffness_figure(plot.load_stiffness(one)), "stiffness:k_zz")
+    one_fig = plot.stiffness_figure(plot.load_stiffness(one))
+    bar = artist(one_fig, "stiffness:k_zz")
     check(bar.get_height() == csv_columns(os.path.join(one, "stiffness.csv"))["k_zz [N/m]"][0],
           "stiffness (one point): the k_zz bar is stiffness.csv's value")
+    with open(os.path.join(one, "stiffness.json")) as f:
+        one_pass = json.load(f)["points"][0]["ball_pass"]
+    segment = artist(one_fig, "ball_pass:k_zz").get_segments()[0]
+    check(same(segment[:, 1], [one_pass["min"][2][2], one_pass["max"][2][2]]),
+          "stiffness (one point): k_zz's ball-pass bar spans stiffness.json's min to max")
 
 
 # --- contact ----------------------------------------------------------------------------------

@@ -29,17 +29,14 @@ BallPassStiffness ball_pass_stiffness(const FiveDofBearing& b, const Vector5& lo
     r.min = r.min.cwiseMin(K);
     r.max = r.max.cwiseMax(K);
   }
-  // The DFT of each entry's samples, harmonic by harmonic (N is small: 32 by default).
+  // The DFT of each entry's samples, harmonic by harmonic (N is small: 32 by default; at most
+  // 4096 from bearing-sim, O(N²)): each factor e^{−2πi m k/N} computed once for the 25 entries.
   for (int m = 1; 2 * m < samples; ++m) {
-    Matrix5 amplitude;
-    for (int i = 0; i < 5; ++i)
-      for (int j = 0; j < 5; ++j) {
-        std::complex<double> sum = 0;
-        for (int k = 0; k < samples; ++k)
-          sum += r.samples[k](i, j) * std::polar(1.0, -two_pi * m * k / samples);
-        amplitude(i, j) = 2.0 / samples * std::abs(sum);
-      }
-    r.harmonics.push_back(amplitude);
+    Eigen::Matrix<std::complex<double>, 5, 5> sum =
+        Eigen::Matrix<std::complex<double>, 5, 5>::Zero();
+    for (int k = 0; k < samples; ++k)
+      sum += r.samples[k].cast<std::complex<double>>() * std::polar(1.0, -two_pi * m * k / samples);
+    r.harmonics.push_back(2.0 / samples * sum.cwiseAbs());
   }
   return r;
 }

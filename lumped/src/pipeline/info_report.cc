@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <sstream>
 
+#include "bearing/ball_pass_output.h"
 #include "bearing/constants.h"
 #include "bearing/errors.h"
 #include "bearing/json_helpers.h"
@@ -77,9 +78,15 @@ InfoReport compute_info(const Case& c, InfoParts parts) {
     r.housing_modes = housing_modes(*make_dynamic_model(c.model.kind, static_model_inputs(c)));
   if (parts == InfoParts::without_stiffness) return r;
   // A section of the report, not its purpose: a case the 5-DOF solution cannot take still gets
-  // the rest, with the reason shown (`bearing-sim stiffness` fails on it instead).
+  // the rest, with the reason shown (`bearing-sim stiffness` fails on it instead); an equilibrium
+  // not reached at another cage angle leaves the matrix, without its ball pass.
   try {
-    r.stiffness = stiffness_point(c);
+    try {
+      r.stiffness = stiffness_point(c, kInfoBallPassSamples);
+    } catch (const SolverError& e) {
+      r.stiffness = stiffness_point(c, 0);
+      r.ball_pass_error = e.what();
+    }
   } catch (const InputError& e) {
     r.stiffness_error = e.what();
   } catch (const SolverError& e) {
@@ -105,15 +112,20 @@ nlohmann::json stiffness_info_json(const InfoReport& r) {
     matrix.push_back(row);
     units.push_back(unit);
   }
-  return {{"dofs", kStiffnessDofs},
-          {"load", vec(p.load)},
-          {"displacement", vec(p.solution.displacement)},
-          {"matrix", matrix},
-          {"matrix_units", units},
-          {"q_max", p.q_max()},
-          {"loaded_balls", p.loaded_balls()},
-          {"ball_loads", p.solution.at.ball_loads},
-          {"contact_angles", p.solution.at.contact_angles}};
+  json j = {{"dofs", kStiffnessDofs},
+            {"load", vec(p.load)},
+            {"displacement", vec(p.solution.displacement)},
+            {"matrix", matrix},
+            {"matrix_units", units},
+            {"q_max", p.q_max()},
+            {"loaded_balls", p.loaded_balls()},
+            {"ball_loads", p.solution.at.ball_loads},
+            {"contact_angles", p.solution.at.contact_angles}};
+  if (p.ball_pass)
+    j["ball_pass"] = ball_pass_json(p);
+  else
+    j["ball_pass"] = {{"error", r.ball_pass_error}};
+  return j;
 }
 
 }  // namespace
@@ -228,6 +240,10 @@ nlohmann::json info_json(const InfoReport& r) {
     j["units"]["stiffness.q_max"] = "N";
     j["units"]["stiffness.ball_loads"] = "N";
     j["units"]["stiffness.contact_angles"] = "rad";
+    if (r.stiffness->ball_pass) {
+      const json units = ball_pass_units_json("stiffness.matrix_units");
+      for (const auto& [key, unit] : units.items()) j["units"]["stiffness." + key] = unit;
+    }
   }
   if (cal) {
     j["units"]["contact.calibration.load_range"] = "N";
@@ -331,8 +347,12 @@ std::string stiffness_info_text(const InfoReport& r) {
     << " urad, gy = " << fixed(q(4) * 1e6, 4) << " urad; " << p.loaded_balls()
     << (p.loaded_balls() == 1 ? " ball" : " balls") << " loaded, the largest " << num(p.q_max())
     << " N\n"
-    << stiffness_matrix_text(p.solution.at.stiffness);
-  return o.str() + stiffness_note(p);
+    << stiffness_matrix_text(p.solution.at.stiffness) << stiffness_note(p);
+  if (p.ball_pass)
+    o << ball_pass_diagonal_text(p);
+  else
+    o << "  over one ball pass: not available: " << r.ball_pass_error << "\n";
+  return o.str();
 }
 
 std::string defects_text(const InfoReport& r) {

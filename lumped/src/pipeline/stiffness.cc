@@ -4,6 +4,8 @@
 
 #include <algorithm>
 
+#include "bearing/errors.h"
+#include "bearing/kinematics.h"
 #include "bearing/simulation.h"
 
 namespace bearing {
@@ -62,13 +64,22 @@ bool StiffnessPoint::elastic() const {
   return !(std::max(inner_peak_pressure, outer_peak_pressure) > kElasticPressureLimit);
 }
 
-StiffnessPoint stiffness_point(const Case& c) {
+StiffnessPoint stiffness_point(const Case& c, int ball_pass_samples) {
+  if (ball_pass_samples != 0 && (ball_pass_samples < 4 || ball_pass_samples > kMaxBallPassSamples))
+    throw InputError("ball-pass samples = " + std::to_string(ball_pass_samples) +
+                     ": allowed 4 to " + std::to_string(kMaxBallPassSamples) +
+                     " cage angles a pitch, or 0 for none");
   const ModelInputs in = model_inputs(c);
+  const FiveDofBearing b = bearing_of(in);
   StiffnessPoint p;
   p.load = load_of(c, in);
-  p.solution = solve_five_dof(bearing_of(in), p.load);
+  p.solution = solve_five_dof(b, p.load);
   p.inner_peak_pressure = in.contact.inner.peak_pressure(p.q_max());
   p.outer_peak_pressure = in.contact.outer.peak_pressure(p.q_max());
+  // The outer ring is fixed (ModelInputs::inner_speed): BPFO = Z f_c, the rate the cage turns
+  // one pitch at.
+  p.bpfo = bearing_frequencies(in.bearing, in.inner_speed).bpfo;
+  if (ball_pass_samples > 0) p.ball_pass = ball_pass_stiffness(b, p.load, ball_pass_samples);
   return p;
 }
 

@@ -10,19 +10,15 @@
 #include <sstream>
 
 #include "bearing/atomic_file_set.h"
+#include "bearing/ball_pass_output.h"
 #include "bearing/errors.h"
 #include "bearing/json_helpers.h"
 #include "bearing/units.h"
 
 namespace bearing {
 
-namespace {
-
-constexpr std::array<const char*, 5> kLoadNames = {"Fx", "Fy", "Fz", "Mx", "My"};
-
-// The shortest "%.*g" text that reads back as exactly `v`: the files hold the solver's doubles
-// bit for bit (format_number allows 2 ulp).
-std::string exact(double v) {
+// format_number allows 2 ulp: not enough for files that hold the solver's doubles bit for bit.
+std::string stiffness_number(double v) {
   if (v == 0) v = 0;  // "0", not "-0"
   char buf[64];
   for (int digits = 1; digits <= 17; ++digits) {
@@ -31,6 +27,20 @@ std::string exact(double v) {
   }
   return buf;
 }
+
+nlohmann::json stiffness_matrix_json(const Matrix5& K) {
+  nlohmann::json rows = nlohmann::json::array();
+  for (int i = 0; i < 5; ++i) {
+    nlohmann::json row = nlohmann::json::array();
+    for (int j = 0; j < 5; ++j) row.push_back(K(i, j));
+    rows.push_back(row);
+  }
+  return rows;
+}
+
+namespace {
+
+constexpr std::array<const char*, 5> kLoadNames = {"Fx", "Fy", "Fz", "Mx", "My"};
 
 std::string with_unit(const std::string& name, const std::string& unit) {
   return name + " [" + (unit.empty() ? "-" : unit) + "]";
@@ -68,52 +78,51 @@ nlohmann::json vector_json(const Vector5& v) {
   return nlohmann::json(std::vector<double>(v.data(), v.data() + 5));
 }
 
-nlohmann::json matrix_json(const Matrix5& K) {
-  nlohmann::json rows = nlohmann::json::array();
-  for (int i = 0; i < 5; ++i) rows.push_back(vector_json(K.row(i).transpose()));
-  return rows;
-}
-
 nlohmann::json point_json(const StiffnessTable& t, const StiffnessRow& r) {
   const FiveDofSolution& s = r.point.solution;
   nlohmann::json values = nlohmann::json::object();
   for (std::size_t k = 0; k < t.keys.size(); ++k) values[t.keys[k].key] = r.values[k];
-  return {{"values", values},
-          {"speed", r.speed},
-          {"load", vector_json(r.point.load)},
-          {"displacement", vector_json(s.displacement)},
-          {"stiffness", matrix_json(s.at.stiffness)},
-          {"q_max", r.point.q_max()},
-          {"loaded_balls", r.point.loaded_balls()},
-          {"ball_angles", s.at.ball_angles},
-          {"ball_loads", s.at.ball_loads},
-          {"contact_angles", s.at.contact_angles},
-          {"peak_pressure",
-           {{"inner", r.point.inner_peak_pressure}, {"outer", r.point.outer_peak_pressure}}},
-          {"elastic", r.point.elastic()},
-          {"residual", s.residual},
-          {"iterations", s.iterations}};
+  nlohmann::json j = {
+      {"values", values},
+      {"speed", r.speed},
+      {"load", vector_json(r.point.load)},
+      {"displacement", vector_json(s.displacement)},
+      {"stiffness", stiffness_matrix_json(s.at.stiffness)},
+      {"q_max", r.point.q_max()},
+      {"loaded_balls", r.point.loaded_balls()},
+      {"ball_angles", s.at.ball_angles},
+      {"ball_loads", s.at.ball_loads},
+      {"contact_angles", s.at.contact_angles},
+      {"peak_pressure",
+       {{"inner", r.point.inner_peak_pressure}, {"outer", r.point.outer_peak_pressure}}},
+      {"elastic", r.point.elastic()},
+      {"residual", s.residual},
+      {"iterations", s.iterations}};
+  if (r.point.ball_pass) j["ball_pass"] = ball_pass_json(r.point);
+  return j;
 }
 
-nlohmann::json units_json() {
+nlohmann::json units_json(bool ball_pass) {
   nlohmann::json k = nlohmann::json::array();
   for (int i = 0; i < 5; ++i) {
     nlohmann::json row = nlohmann::json::array();
     for (int j = 0; j < 5; ++j) row.push_back(stiffness_unit(i, j));
     k.push_back(row);
   }
-  return {{"values", "SI, the unit of each key in varied[]"},
-          {"speed", "rad/s"},
-          {"load", kStiffnessLoadUnits},
-          {"displacement", kStiffnessDofUnits},
-          {"stiffness", k},
-          {"q_max", "N"},
-          {"ball_angles", "rad"},
-          {"ball_loads", "N"},
-          {"contact_angles", "rad"},
-          {"peak_pressure", "Pa"},
-          {"pressure_limit", "Pa"},
-          {"residual", "1"}};
+  nlohmann::json u = {{"values", "SI, the unit of each key in varied[]"},
+                      {"speed", "rad/s"},
+                      {"load", kStiffnessLoadUnits},
+                      {"displacement", kStiffnessDofUnits},
+                      {"stiffness", k},
+                      {"q_max", "N"},
+                      {"ball_angles", "rad"},
+                      {"ball_loads", "N"},
+                      {"contact_angles", "rad"},
+                      {"peak_pressure", "Pa"},
+                      {"pressure_limit", "Pa"},
+                      {"residual", "1"}};
+  if (ball_pass) u.update(ball_pass_units_json("units.stiffness"));
+  return u;
 }
 
 constexpr std::array<const char*, 5> kAssumptions = {
@@ -145,13 +154,13 @@ std::string stiffness_csv(const StiffnessTable& t) {
   for (const StiffnessRow& r : t.rows) {
     const FiveDofSolution& s = r.point.solution;
     std::vector<std::string> cells;
-    for (double v : r.values) cells.push_back(exact(v));
+    for (double v : r.values) cells.push_back(stiffness_number(v));
     for (int i = 0; i < 5; ++i)
-      for (int j = i; j < 5; ++j) cells.push_back(exact(s.at.stiffness(i, j)));
-    for (int i = 0; i < 5; ++i) cells.push_back(exact(s.displacement(i)));
-    cells.push_back(exact(r.point.q_max()));
+      for (int j = i; j < 5; ++j) cells.push_back(stiffness_number(s.at.stiffness(i, j)));
+    for (int i = 0; i < 5; ++i) cells.push_back(stiffness_number(s.displacement(i)));
+    cells.push_back(stiffness_number(r.point.q_max()));
     cells.push_back(std::to_string(r.point.loaded_balls()));
-    for (int i = 0; i < 5; ++i) cells.push_back(exact(r.point.load(i)));
+    for (int i = 0; i < 5; ++i) cells.push_back(stiffness_number(r.point.load(i)));
     for (std::size_t c = 0; c < cells.size(); ++c) o << (c ? "," : "") << cells[c];
     o << "\n";
   }
@@ -175,7 +184,8 @@ nlohmann::json stiffness_json(const StiffnessTable& t) {
             {"pressure_limit", kElasticPressureLimit},
             {"varied", varied},
             {"points", points},
-            {"units", units_json()}};
+            {"units", units_json(t.ball_pass_samples > 0)}};
+  if (t.ball_pass_samples > 0) j["ball_pass_definition"] = kBallPassDefinition;
   require_finite(j);
   return j;
 }
@@ -264,7 +274,7 @@ std::string stiffness_text(const StiffnessTable& t) {
       << "Balls: " << p.loaded_balls() << " of " << p.solution.at.ball_loads.size()
       << " loaded, the largest load " << num(p.q_max()) << " N\n\n"
       << stiffness_matrix_text(p.solution.at.stiffness);
-    o << stiffness_note(p);
+    o << stiffness_note(p) << ball_pass_text(t);
     return o.str();
   }
   o << t.rows.size() << " operating points; the main terms (every term: stiffness.csv)\n";
@@ -294,7 +304,7 @@ std::string stiffness_text(const StiffnessTable& t) {
   if (singular)
     o << "note: where fewer than 3 balls are loaded K is singular (a ball stiffens the ring in two "
          "directions only; no ball: K = 0)\n";
-  return o.str();
+  return o.str() + ball_pass_text(t);
 }
 
 std::string stiffness_ross_csv(const StiffnessTable& t) {
@@ -317,8 +327,9 @@ std::string stiffness_ross_csv(const StiffnessTable& t) {
   o << "frequency,kxx,kxy,kyx,kyy,cxx,cxy,cyx,cyy\n";
   for (const StiffnessRow* r : rows) {
     const Matrix5& K = r->point.solution.at.stiffness;
-    o << exact(r->speed) << "," << exact(K(0, 0)) << "," << exact(K(0, 1)) << "," << exact(K(1, 0))
-      << "," << exact(K(1, 1)) << ",0,0,0,0\n";
+    o << stiffness_number(r->speed) << "," << stiffness_number(K(0, 0)) << ","
+      << stiffness_number(K(0, 1)) << "," << stiffness_number(K(1, 0)) << ","
+      << stiffness_number(K(1, 1)) << ",0,0,0,0\n";
   }
   return o.str();
 }
@@ -329,15 +340,19 @@ void write_stiffness(const std::string& dir, const StiffnessTable& t, bool ross)
   const std::string csv = stiffness_csv(t);
   const std::string json = stiffness_json(t).dump(2) + "\n";
   const std::string ross_csv = ross ? stiffness_ross_csv(t) : std::string();
+  const bool ball_pass = t.ball_pass_samples > 0;
+  const std::string ball_pass_table = ball_pass ? ball_pass_csv(t) : std::string();
   std::error_code ec;
   fs::create_directories(dir, ec);
   if (ec) throw InputError("--out " + dir + ": cannot create the folder (" + ec.message() + ")");
   std::vector<std::string> names = {"stiffness.csv", "stiffness.json"};
-  std::vector<std::string> others;  // an earlier call's ROSS table that this one does not write
+  std::vector<std::string> others;  // an earlier call's tables that this one does not write
+  (ball_pass ? names : others).push_back("stiffness_ball_pass.csv");
   (ross ? names : others).push_back("stiffness_ross.csv");
   AtomicFileSet files(dir, names, others, "--out " + dir);
   files.write("stiffness.csv", csv);
   files.write("stiffness.json", json);
+  if (ball_pass) files.write("stiffness_ball_pass.csv", ball_pass_table);
   if (ross) files.write("stiffness_ross.csv", ross_csv);
   files.commit();
 }

@@ -1,5 +1,6 @@
 """The figure of a `bearing-sim stiffness` folder: the bearing's stiffness terms against the varied
-key, one panel per unit (docs/rotordynamics.md)."""
+key, one panel per unit, with each diagonal term's range over one ball pass as a band when
+stiffness.json has it (docs/rotordynamics.md)."""
 
 import csv
 import json
@@ -55,14 +56,30 @@ class Stiffness:
         self.keys = [_COLUMN.match(h).group("name") if _COLUMN.match(h) else h
                      for h in header[:header.index("k_xx [N/m]")]]
         self.source = ""
+        # The diagonal terms' range over one ball pass: {name: (min, max)}, one value per row
+        # (stiffness.json's points[].ball_pass, in stiffness.csv's row order); {} without it.
+        self.ball_pass = {}
+        self.ball_pass_samples = 0
         meta = os.path.join(folder, "stiffness.json")
         if os.path.exists(meta):
             try:
                 with open(meta) as f:
-                    case = json.load(f).get("case", {})
+                    doc = json.load(f)
+                case = doc.get("case", {})
                 self.source = "%s (%s)" % (case.get("source", ""), case.get("bearing", ""))
-            except (OSError, ValueError):
-                pass
+                self._read_ball_pass(doc.get("points", []), len(rows) - 1)
+            except (OSError, ValueError, KeyError, TypeError, IndexError):
+                self.ball_pass = {}
+
+    def _read_ball_pass(self, points, rows):
+        passes = [p.get("ball_pass") for p in points]
+        if not passes or len(passes) != rows or any(b is None for b in passes):
+            return
+        for i in range(5):
+            lo = np.array([float(b["min"][i][i]) for b in passes])
+            hi = np.array([float(b["max"][i][i]) for b in passes])
+            self.ball_pass[term_name(i, i)] = (lo, hi)
+        self.ball_pass_samples = int(passes[0]["samples"])
 
     def __getitem__(self, name):
         return self.columns[name][1]
@@ -103,6 +120,22 @@ def panel_terms(s, unit):
     return diagonal, off[:OFF_DIAGONAL_SHOWN]
 
 
+def _draw_ball_pass(ax, s, name, x, color, joined):
+    """A diagonal term's range over one ball pass: a band along a joined curve, a vertical bar at
+    each unjoined point or on one point's bar (gid "ball_pass:<name>")."""
+    if name not in s.ball_pass:
+        return
+    lo, hi = s.ball_pass[name]
+    if x is None:
+        band = ax.vlines([name], lo, hi, color="k", lw=3, alpha=0.6)
+    elif joined:
+        order = np.argsort(x, kind="stable")
+        band = ax.fill_between(x[order], lo[order], hi[order], color=color, alpha=0.25, lw=0)
+    else:
+        band = ax.vlines(x, lo, hi, color=color, alpha=0.5)
+    band.set_gid("ball_pass:" + name)
+
+
 def _draw_panel(ax, s, unit, x, xlabel, joined=True):
     diagonal, off = panel_terms(s, unit)
     for name in diagonal + off:
@@ -111,10 +144,14 @@ def _draw_panel(ax, s, unit, x, xlabel, joined=True):
         if x is None:  # one point: its terms as bars
             bars = ax.bar([name], s[name], color="C0" if name in diagonal else "C1")
             bars.patches[0].set_gid("stiffness:" + name)
+            if name in diagonal:
+                _draw_ball_pass(ax, s, name, None, None, joined)
             continue
         order = np.argsort(x, kind="stable")
         line, = ax.plot(x[order], s[name][order], style, ms=4, label=name)
         line.set_gid("stiffness:" + name)
+        if name in diagonal:
+            _draw_ball_pass(ax, s, name, x, line.get_color(), joined)
     ax.set_ylabel("K [%s]" % SHOWN_UNIT[unit])
     ax.ticklabel_format(axis="y", style="sci", scilimits=(-3, 4))
     if x is not None:
@@ -146,7 +183,11 @@ def stiffness_figure(s):
         legend = ("blue: diagonal, orange: largest couplings" if key is None else
                   "solid: diagonal, dashed: largest couplings" if len(varied) == 1 else
                   "circles: diagonal, squares: largest couplings")
-        fig.suptitle("%s — bearing stiffness K = dF/dq %s (%s)\n%s · 5-DOF static solution: "
+        if s.ball_pass:
+            legend += ("; %s: the diagonal's range over one ball pass (%d cage angles)"
+                       % ("black bars" if key is None else "bands" if len(varied) <= 1
+                          else "vertical bars", s.ball_pass_samples))
+        fig.suptitle("%s — bearing stiffness K = dF/dq %s\n(%s)\n%s · 5-DOF static solution: "
                      "rigid rings, centrifugal ball load at speed, no damping%s"
                      % (s.name, against, legend, s.source, extra))
         fig.tight_layout()

@@ -52,16 +52,25 @@ struct InfoReport {
   /// The 5-DOF static state and stiffness at the case's loads, radial, axial and moments
   /// together, whatever the model kind (stiffness.h); empty when it has none, with the reason in
   /// stiffness_error (a clearance beyond the 5-DOF geometry, no equilibrium reached).
+  /// Its ball pass at kInfoBallPassSamples cage angles (StiffnessPoint::ball_pass) too, or,
+  /// when an equilibrium at another cage angle is not reached, none, with the reason in
+  /// ball_pass_error.
   std::optional<StiffnessPoint> stiffness;
   std::string stiffness_error;
+  std::string ball_pass_error;
 };
+
+/// Cage angles a pitch of info's ball pass: a few, so that info stays fast (`bearing-sim
+/// stiffness --ball-pass N` for more).
+constexpr int kInfoBallPassSamples = 16;
 
 /// The warning `info` and `run` give when the static load's peak Hertz pressure passes
 /// kElasticPressureLimit (contact.h), naming both pressures; empty otherwise.
 std::string elastic_limit_warning(const InfoReport& report);
 
 /// What compute_info leaves out: `run` asks for the elastic-limit warning only, and the 5-DOF
-/// stiffness (a Newton solve per ball at speed) is no part of a run's cost.
+/// stiffness and its ball pass (a Newton solve per ball at speed, at each cage angle) are no part
+/// of a run's cost.
 enum class InfoParts { all, without_stiffness };
 
 /// Computes everything `info` shows (`parts`: all, or all but the stiffness section). Throws
@@ -79,7 +88,8 @@ InfoReport compute_info(const Case& c, InfoParts parts = InfoParts::all);
 /// with [housing], housing.{mass [kg], frequency [Hz], damping_ratio, stiffness [N/m], damping
 /// [N s/m], modes[].{frequency [Hz], housing_share}}; stiffness.{dofs, load [N, N m],
 /// displacement [m, rad], matrix (5×5 K = dF/dq) [N/m, N/rad, N m/rad], q_max [N],
-/// loaded_balls} (stiffness.h), or null with stiffness_error saying why.
+/// loaded_balls, ball_pass (ball_pass_json, at kInfoBallPassSamples cage angles; {error} when it
+/// could not be solved)} (stiffness.h), or {error} saying why.
 /// Throws SolverError if any value is not finite.
 nlohmann::json info_json(const InfoReport& report);
 

@@ -14,8 +14,10 @@
 // moment neglected; no damping.
 
 #include <array>
+#include <optional>
 #include <string>
 
+#include "bearing/ball_pass_stiffness.h"
 #include "bearing/case_file.h"
 #include "bearing/five_dof_static.h"
 
@@ -44,10 +46,23 @@ Vector5 five_dof_load_of(const Case& c);
 /// InputError naming bearing.clearance when the clearance leaves no contact angle below 90°.
 FiveDofBearing five_dof_bearing_of(const Case& c);
 
+/// Cage angles a ball pitch of the ball-pass stiffness `bearing-sim stiffness` and
+/// `bearing.ball_pass_stiffness` take by default, and the most they accept (each one a solve).
+constexpr int kBallPassSamples = 32;
+constexpr int kMaxBallPassSamples = 4096;
+
 /// The 5-DOF static state at one operating point.
 struct StiffnessPoint {
   Vector5 load = Vector5::Zero();  ///< F = (Fx, Fy, Fz, Mx, My) [N, N, N, N m, N m]
   FiveDofSolution solution;        ///< q [m, rad], K [N/m, N/rad, N m/rad], the balls
+  /// K over one ball pitch from the case's cage phase (ball_pass_stiffness.h), each cage angle
+  /// its own equilibrium under `load`, the bearing the same (the centrifugal load at speed):
+  /// its samples[0] is solution.at.stiffness. Empty when not asked for.
+  std::optional<BallPassStiffness> ball_pass;
+  /// The ball-pass frequency over the outer race at the case's speed, outer ring fixed, pure
+  /// rolling at the free contact angle (kinematics.h) [Hz]: the period of K in time is 1/bpfo,
+  /// its m-th harmonic at m × bpfo.
+  double bpfo = 0;
   /// Peak Hertz pressure of the most loaded ball at the inner and outer race [Pa]; beyond
   /// kElasticPressureLimit (contact.h) the elastic contact law, and so K, does not hold.
   double inner_peak_pressure = 0, outer_peak_pressure = 0;
@@ -59,7 +74,9 @@ struct StiffnessPoint {
 };
 
 /// Solves the case's operating point: five_dof_bearing_of(c) under five_dof_load_of(c), every
-/// DOF free. Throws InputError (clearance) or SolverError (no equilibrium reached).
-StiffnessPoint stiffness_point(const Case& c);
+/// DOF free; with `ball_pass_samples` > 0 also its ball pass at that many cage angles (4 …
+/// kMaxBallPassSamples; 0: the static matrix alone). Throws InputError (clearance, a sample count
+/// out of range) or SolverError (no equilibrium reached, at any cage angle).
+StiffnessPoint stiffness_point(const Case& c, int ball_pass_samples = kBallPassSamples);
 
 }  // namespace bearing

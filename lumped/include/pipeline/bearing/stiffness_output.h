@@ -1,7 +1,8 @@
 #pragma once
 // The files and tables of `bearing-sim stiffness` (docs/bearing-sim.md, "stiffness"): one row per
-// operating point in stiffness.csv, everything in stiffness.json, a readable table, and the table
-// ROSS's BearingElement reads (stiffness_ross.csv). Written all or nothing (atomic_file_set.h).
+// operating point in stiffness.csv, everything in stiffness.json, a readable table, the table
+// ROSS's BearingElement reads (stiffness_ross.csv) and the ball pass (ball_pass_output.h). Written
+// all or nothing (atomic_file_set.h).
 
 #include <string>
 #include <vector>
@@ -31,7 +32,17 @@ struct StiffnessTable {
   std::string bearing;             ///< its designation ("6308")
   std::vector<StiffnessKey> keys;  ///< the varied keys, in column order (none: one point)
   std::vector<StiffnessRow> rows;  ///< the points, the first key varying slowest
+  /// Cage angles a pitch of every row's ball pass (StiffnessPoint::ball_pass, each row has one);
+  /// 0: none, the rows are static points alone.
+  int ball_pass_samples = 0;
 };
+
+/// The shortest "%.*g" text that reads back as exactly `v` ("0" for −0): the stiffness files hold
+/// the solver's doubles bit for bit.
+std::string stiffness_number(double v);
+
+/// K as a JSON array of its 5 rows (rows F, columns q).
+nlohmann::json stiffness_matrix_json(const Matrix5& K);
 
 /// stiffness.csv: per point the varied keys ("operation.axial_load [N]"), the 15 K_ij with
 /// i ≤ j ("k_xx [N/m]", …, "k_x_gx [N/rad]", …, "k_gy_gy [N*m/rad]"), the displacement ("x [m]",
@@ -41,8 +52,8 @@ std::string stiffness_csv(const StiffnessTable& t);
 
 /// stiffness.json: the case, what the model assumes, the DOFs and units, and per point the
 /// varied values, load, displacement, the full 5×5 matrix, each ball's angle, load and contact
-/// angle, the peak Hertz pressures and whether they are within the elastic limit. Throws
-/// SolverError naming the first non-finite value.
+/// angle, the peak Hertz pressures and whether they are within the elastic limit, and with a ball
+/// pass its object (ball_pass_json). Throws SolverError naming the first non-finite value.
 nlohmann::json stiffness_json(const StiffnessTable& t);
 
 /// The matrix K with row (Fx [N] … My [N*m]) and column (x [m] … gy [rad]) labels and the units of
@@ -59,7 +70,8 @@ std::string stiffness_note(const StiffnessPoint& p, const std::string& indent = 
 std::string stiffness_elastic_warning(const StiffnessTable& t);
 
 /// The readable table: for one point its load, displacement, balls and matrix; for several, the
-/// main terms (diagonal, q_max, loaded balls) per point.
+/// main terms (diagonal, q_max, loaded balls) per point; then, with a ball pass, its table
+/// (ball_pass_text).
 std::string stiffness_text(const StiffnessTable& t);
 
 /// stiffness_ross.csv, the table ROSS's BearingElement reads (its from_table column names):
@@ -69,9 +81,11 @@ std::string stiffness_text(const StiffnessTable& t);
 /// the varied keys or the repeated speed otherwise.
 std::string stiffness_ross_csv(const StiffnessTable& t);
 
-/// Writes dir/stiffness.csv and stiffness.json, with `ross` also stiffness_ross.csv, all or
-/// nothing (the folder is created only once every file's text is made). Throws InputError (the
-/// folder cannot be made, ROSS's table impossible) or OutputError.
+/// Writes dir/stiffness.csv and stiffness.json, with a ball pass (t.ball_pass_samples > 0)
+/// stiffness_ball_pass.csv, with `ross` stiffness_ross.csv, all or nothing (the folder is
+/// created only once every file's text is made); removes the ball-pass and ROSS files an earlier
+/// call left that this one does not write. Throws InputError (the folder cannot be made, ROSS's
+/// table impossible), SolverError (a non-finite value) or OutputError.
 void write_stiffness(const std::string& dir, const StiffnessTable& t, bool ross);
 
 }  // namespace bearing
