@@ -344,6 +344,37 @@ TEST(CliStiffness, SpeedChangesTheMatrixOnlyWithTheCentrifugalLoad) {
   EXPECT_GT(std::abs(a.at(10, "k_yy [N/m]") / a.at(0, "k_yy [N/m]") - 1), 1e-3);
 }
 
+// At speed each ball's outer contact carries its centrifugal load as well, at its own angle:
+// stiffness.json reports both races' loads and angles (the direct solution's), and the outer
+// race's peak pressure is that of its own largest load, not of the inner one's.
+TEST(CliStiffness, OuterContactsAtSpeedCarryTheCentrifugalLoad) {
+  for (const std::string speed : {"0rpm", "20000rpm"}) {
+    SCOPED_TRACE(speed);
+    const fs::path d = fresh_dir("stiffness_outer_" + speed);
+    ASSERT_EQ(sim("stiffness " + kExample + " --set operation.speed=" + speed +
+                  " --ball-pass 0 --quiet --out " + d.string()),
+              0);
+    const nlohmann::json p = nlohmann::json::parse(read(d / "stiffness.json"))["points"][0];
+    const bearing::FiveDofSolution s =
+        direct({bearing::parse_override("operation.speed=" + speed)});
+    const auto outer = p["outer_ball_loads"].get<std::vector<double>>();
+    ASSERT_EQ(outer, s.at.outer_loads);
+    ASSERT_EQ(p["outer_contact_angles"].get<std::vector<double>>(), s.at.outer_contact_angles);
+    const auto inner = p["ball_loads"].get<std::vector<double>>();
+    double outer_max = 0;
+    for (std::size_t j = 0; j < outer.size(); ++j) {
+      if (speed == "0rpm")
+        EXPECT_EQ(outer[j], inner[j]) << j;
+      else
+        EXPECT_GT(outer[j], inner[j]) << j;  // F_c presses every ball on the outer race
+      outer_max = std::max(outer_max, outer[j]);
+    }
+    const bearing::Case c = bearing::read_case_file(kExample, {});
+    EXPECT_EQ(p["peak_pressure"]["outer"].get<double>(),
+              bearing::contact_constants(c).outer.peak_pressure(outer_max));
+  }
+}
+
 // stiffness_ball_pass.csv as rows of text cells, by column name.
 struct LongCsv {
   std::vector<std::string> header;

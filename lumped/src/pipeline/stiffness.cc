@@ -55,6 +55,11 @@ double StiffnessPoint::q_max() const {
   return q.empty() ? 0.0 : *std::max_element(q.begin(), q.end());
 }
 
+double StiffnessPoint::outer_q_max() const {
+  const auto& q = solution.at.outer_loads;
+  return q.empty() ? 0.0 : *std::max_element(q.begin(), q.end());
+}
+
 int StiffnessPoint::loaded_balls() const {
   const auto& q = solution.at.ball_loads;
   return static_cast<int>(std::count_if(q.begin(), q.end(), [](double v) { return v > 0; }));
@@ -74,8 +79,10 @@ StiffnessPoint stiffness_point(const Case& c, int ball_pass_samples) {
   StiffnessPoint p;
   p.load = load_of(c, in);
   p.solution = solve_five_dof(b, p.load);
+  // At speed the outer contacts carry the centrifugal load as well: each race's pressure from its
+  // own largest load.
   p.inner_peak_pressure = in.contact.inner.peak_pressure(p.q_max());
-  p.outer_peak_pressure = in.contact.outer.peak_pressure(p.q_max());
+  p.outer_peak_pressure = in.contact.outer.peak_pressure(p.outer_q_max());
   // The outer ring is fixed (ModelInputs::inner_speed): BPFO = Z f_c, the rate the cage turns
   // one pitch at.
   p.bpfo = bearing_frequencies(in.bearing, in.inner_speed).bpfo;

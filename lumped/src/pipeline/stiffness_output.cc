@@ -93,6 +93,8 @@ nlohmann::json point_json(const StiffnessTable& t, const StiffnessRow& r) {
       {"ball_angles", s.at.ball_angles},
       {"ball_loads", s.at.ball_loads},
       {"contact_angles", s.at.contact_angles},
+      {"outer_ball_loads", s.at.outer_loads},
+      {"outer_contact_angles", s.at.outer_contact_angles},
       {"peak_pressure",
        {{"inner", r.point.inner_peak_pressure}, {"outer", r.point.outer_peak_pressure}}},
       {"elastic", r.point.elastic()},
@@ -118,6 +120,8 @@ nlohmann::json units_json(bool ball_pass) {
                       {"ball_angles", "rad"},
                       {"ball_loads", "N"},
                       {"contact_angles", "rad"},
+                      {"outer_ball_loads", "N"},
+                      {"outer_contact_angles", "rad"},
                       {"peak_pressure", "Pa"},
                       {"pressure_limit", "Pa"},
                       {"residual", "1"}};

@@ -63,12 +63,15 @@ struct StiffnessPoint {
   /// rolling at the free contact angle (kinematics.h) [Hz]: the period of K in time is 1/bpfo,
   /// its m-th harmonic at m × bpfo.
   double bpfo = 0;
-  /// Peak Hertz pressure of the most loaded ball at the inner and outer race [Pa]; beyond
+  /// Peak Hertz pressure of the most loaded contact at the inner and outer race [Pa]; beyond
   /// kElasticPressureLimit (contact.h) the elastic contact law, and so K, does not hold.
   double inner_peak_pressure = 0, outer_peak_pressure = 0;
   bool elastic() const;
   /// The largest ball load [N] (0: no ball loaded, e.g. no load, K = 0).
   double q_max() const;
+  /// The largest load of an outer contact [N]: q_max at rest, more at speed (each ball's
+  /// centrifugal load presses it on the outer race).
+  double outer_q_max() const;
   /// The balls that carry a load.
   int loaded_balls() const;
 };
