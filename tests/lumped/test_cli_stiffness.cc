@@ -375,6 +375,37 @@ TEST(CliStiffness, OuterContactsAtSpeedCarryTheCentrifugalLoad) {
   }
 }
 
+// docs/bearing-stiffness.md's bearing that is no preset (its inner geometry in the case file):
+// every point is the direct solution of that geometry, bit for bit, and from 500 N of axial
+// load on every ball carries load (the comparison the page describes needs a full set).
+TEST(CliStiffness, CustomBearingExampleIsSolvedFromItsGeometry) {
+  const std::string example =
+      std::string(BEARING_SOURCE_DIR) + "/examples/stiffness_custom_bearing.toml";
+  const fs::path d = fresh_dir("stiffness_custom");
+  ASSERT_EQ(
+      sim("stiffness " + example +
+          " --vary operation.axial_load=0N:2000N:5 --ball-pass 0 --quiet --out " + d.string()),
+      0);
+  const nlohmann::json points = nlohmann::json::parse(read(d / "stiffness.json"))["points"];
+  ASSERT_EQ(points.size(), 5u);
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    const double Fz = 500.0 * static_cast<double>(i);
+    const bearing::Case c = bearing::read_case_file(
+        example, {bearing::parse_override("operation.axial_load=" + std::to_string(Fz))});
+    ASSERT_EQ(c.bearing.balls, 10);
+    const bearing::FiveDofBearing b =
+        bearing::five_dof_bearing(c.bearing, bearing::contact_constants(c), 0.0);
+    bearing::Vector5 f;
+    f << c.operation.load.x(), c.operation.load.y(), Fz, c.operation.moment.x(),
+        c.operation.moment.y();
+    const bearing::FiveDofSolution s = bearing::solve_five_dof(b, f);
+    for (int r = 0; r < 5; ++r)
+      for (int k = 0; k < 5; ++k)
+        EXPECT_EQ(points[i]["stiffness"][r][k].get<double>(), s.at.stiffness(r, k)) << i;
+    if (Fz >= 500) EXPECT_EQ(points[i]["loaded_balls"].get<int>(), 10) << i;
+  }
+}
+
 // stiffness_ball_pass.csv as rows of text cells, by column name.
 struct LongCsv {
   std::vector<std::string> header;
