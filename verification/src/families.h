@@ -14,9 +14,8 @@ std::vector<Check> hertz_fe_convergence_checks();  ///< checks/hertz_fe_converge
 std::vector<Check> hertz_groove_checks();          ///< checks/hertz_groove.cc: FE groove vs Hertz
 std::vector<Check> static_load_checks();  ///< checks/static_load.cc: kinematics, load distribution
 std::vector<Check> stiffness_checks();    ///< checks/stiffness.cc: 5-DOF stiffness, closed forms
-std::vector<Check> stiffness_matrix_checks();  ///< checks/stiffness_matrix.cc: within stiffness
-std::vector<Check> dynamics_checks();          ///< checks/dynamics.cc: conservation, limits, orders
-std::vector<Check> dynamics_spectra_checks();  ///< checks/dynamics_spectra.cc: lines, reductions
+std::vector<Check> dynamics_checks();     ///< checks/dynamics.cc: conservation, limits, orders
+std::vector<Check> dynamics_spectra_checks();   ///< checks/dynamics_spectra.cc: lines, reductions
 std::vector<Check> dynamics_jacobian_checks();  ///< checks/dynamics_jacobian.cc: 2-DOF Jacobian
 std::vector<Check> fault_checks();              ///< checks/faults.cc: spalls, envelope lines
 std::vector<Check> acoustics_checks();          ///< checks/acoustics.cc: sources vs closed forms
