@@ -33,7 +33,8 @@ struct RingOnBalls {
   double nearest_kink(const Vector5& q) const;
   /// The q with load(q) = F in the DOFs not held (held ones stay as in `start`), by Newton on
   /// the central-difference stiffness with step 1e-4 of nearest_kink, the step halved until the
-  /// residual falls, to |residual| ≤ 1e-12 |F| (moments over inner_rho). The energy is convex,
+  /// energy or the residual falls, to |residual| ≤ 1e-12 |F| (moments over inner_rho; the load's
+  /// rounding, ε A₀/δ relative, keeps it from much less). The energy is convex,
   /// so the root is the same from any start. Throws std::runtime_error when it is not reached.
   Vector5 equilibrium(const Vector5& F, Vector5 start, const std::array<bool, 5>& held = {}) const;
 };
