@@ -207,7 +207,8 @@ struct MatrixPair {
 //    ∂δ/∂q's own curvature is 1/L ≤ 1/(A0 − P_d/2), smaller by (k/A0)², left out;
 //  - rounding: δ = L − A₀ is formed to ε A₀, so each difference quotient to ε A₀/(2h);
 //  - the two equilibria, each balanced to 1e-12 |F|: they differ by ≤ 2e-12 |F|/λ_min, which
-//    moves K_j ∝ δ^{1/2} by half of that over k.
+//    moves each ball's K_j ∝ δ^{1/2} by half of that over k.
+// (A ball's K_j is positive semidefinite and K their sum, so max|K_j| ≤ max|K|.)
 MatrixPair matrices(const Context& ctx, const Bearing& b) {
   const Bearing seen = ctx.bearing(b);
   const FiveDofBearing f = five_dof_bearing(seen, ctx.contact(seen, HertzMethod::exact), kPhase);
@@ -226,8 +227,8 @@ MatrixPair matrices(const Context& ctx, const Bearing& b) {
       Eigen::SelfAdjointEigenSolver<Matrix5>(0.5 * (m.reference + m.reference.transpose()))
           .eigenvalues()(0);
   const double eps = std::numeric_limits<double>::epsilon();
-  m.bound = b.balls * (h * h / (24 * m.kink * m.kink) + eps * r.A0 / (2 * h)) +
-            0.5 * 2e-12 * S.cwiseProduct(F).norm() / (lmin * m.kink);
+  m.bound = b.balls * (h * h / (24 * m.kink * m.kink) + eps * r.A0 / (2 * h) +
+                       0.5 * 2e-12 * S.cwiseProduct(F).norm() / (lmin * m.kink));
   return m;
 }
 
