@@ -21,12 +21,16 @@
 #include "bearing/errors.h"
 #include "bearing/hertz.h"
 #include "bearing/units.h"
+#include "json_document.h"
 
 namespace bearing {
 
 namespace {
 
-using nlohmann::json;
+using json_document::article;
+using json_document::json;
+using json_document::Reader;
+using json_document::shown_json;
 
 // The `units` object: written as is, and a file declaring other units is refused.
 constexpr std::pair<const char*, const char*> kUnits[] = {{"K", "N/m^exponent"},
@@ -59,76 +63,8 @@ json race_json(const RaceLaw& law, const RaceFitRecord& fit) {
   return j;
 }
 
-// A JSON value as it appears in the file, shortened for a one-line message.
-std::string shown_json(const json& j) {
-  std::string s = j.dump();
-  if (s.size() > 60) s = s.substr(0, 57) + "...";
-  return s;
-}
-
-std::string article(const json& j) {
-  const std::string t = j.type_name();
-  return (t == "array" || t == "object" ? "an " : "a ") + t;
-}
-
-std::string dotted(const std::string& path, const char* key) {
-  return path.empty() ? std::string(key) : path + "." + key;
-}
-
-const json* member(const json& obj, const char* key) {
-  const auto it = obj.find(key);
-  return it == obj.end() ? nullptr : &*it;
-}
-
-// Reads the members of one JSON object, naming them by their dotted path in messages.
-class Reader {
- public:
-  Reader(const json& obj, std::string path, const std::string& shown)
-      : obj_(obj), path_(std::move(path)), shown_(shown) {}
-
-  [[noreturn]] void fail(const std::string& what) const { throw InputError(shown_ + ": " + what); }
-  std::string name(const char* key) const { return dotted(path_, key); }
-
-  /// A member that must be an object.
-  Reader object(const char* key) const {
-    const json* v = member(obj_, key);
-    if (!v)
-      fail(name(key) + " is missing (a calibration file written by bearing-fem calibrate has it)");
-    if (!v->is_object())
-      fail(name(key) + " = " + shown_json(*v) + ": expected an object, got " + article(*v));
-    return Reader(*v, name(key), shown_);
-  }
-
-  /// A required finite number; `unit` is named in messages.
-  double number(const char* key, const std::string& unit) const {
-    const json* v = member(obj_, key);
-    const std::string in = unit.empty() ? "" : " in " + unit;
-    if (!v) fail(name(key) + " is missing: expected a number" + in);
-    if (!v->is_number())
-      fail(name(key) + " = " + shown_json(*v) + ": expected a number" + in + ", got " +
-           article(*v));
-    const double d = v->get<double>();
-    if (!std::isfinite(d))
-      fail(name(key) + " = " + format_number(d) + ": must be a finite number" + in);
-    return d;
-  }
-
-  /// An optional string ("" if absent).
-  std::string text(const char* key) const {
-    const json* v = member(obj_, key);
-    if (!v) return "";
-    if (!v->is_string())
-      fail(name(key) + " = " + shown_json(*v) + ": expected a string, got " + article(*v));
-    return v->get<std::string>();
-  }
-
-  const json* get(const char* key) const { return member(obj_, key); }
-
- private:
-  const json& obj_;
-  std::string path_;
-  const std::string& shown_;
-};
+// What a calibration file is, for messages.
+const std::string kWhatFile = "a calibration file written by bearing-fem calibrate";
 
 RaceLaw read_race(const Reader& top, const char* race) {
   const Reader r = top.object(race);
@@ -194,8 +130,9 @@ void check_units(const Reader& top) {
   if (!u) return;
   if (!u->is_object())
     top.fail("units = " + shown_json(*u) + ": expected an object, got " + article(*u));
+  const Reader units = top.object("units");
   for (const auto& [key, unit] : kUnits) {
-    const json* v = member(*u, key);
+    const json* v = units.get(key);
     if (v && !(v->is_string() && v->get<std::string>() == unit))
       top.fail(std::string("units.") + key + " = " + shown_json(*v) + ": expected \"" + unit +
                "\" (calibration files are in SI units)");
@@ -225,65 +162,9 @@ std::string calibration_text(const CalibrationDocument& doc) {
 
 ContactCalibration parse_calibration(std::string_view json_text, const std::string& path,
                                      const std::string& shown) {
-  // The parser callback tracks the key path, so that a number beyond the range of a double
-  // (which the parser rejects itself) can be named.
-  std::vector<std::string> where;
-  const auto key_path = [&where] {
-    std::string key;
-    for (const auto& w : where)
-      if (!w.empty()) key += (key.empty() ? "" : ".") + w;
-    return key;
-  };
-  // A file is 4 levels deep; deeper nesting is refused while it is read, before a message would
-  // print it (recursively: a few 100 kB of "[[[[" overflowed the stack).
-  constexpr std::size_t kMaxDepth = 64;
-  const json::parser_callback_t track = [&](int depth, json::parse_event_t event, json& parsed) {
-    switch (event) {
-      case json::parse_event_t::object_start:
-      case json::parse_event_t::array_start:
-        if (static_cast<std::size_t>(depth) >= kMaxDepth)
-          throw InputError(shown + ": " +
-                           (key_path().empty() ? std::string("a value") : key_path()) +
-                           " is nested deeper than " + std::to_string(kMaxDepth) +
-                           " levels (a calibration file has 4)");
-        where.emplace_back();
-        break;
-      case json::parse_event_t::object_end:
-      case json::parse_event_t::array_end:
-        if (!where.empty()) where.pop_back();
-        break;
-      case json::parse_event_t::key:
-        if (!where.empty()) where.back() = parsed.get<std::string>();
-        break;
-      default:
-        break;
-    }
-    return true;
-  };
-  // nlohmann's messages start with "[json.exception.<kind>.<id>] ".
-  const auto message = [](const json::exception& e) {
-    std::string what = e.what();
-    if (const auto end = what.find("] "); what.rfind("[json.exception", 0) == 0 && end != what.npos)
-      what.erase(0, end + 2);
-    std::replace(what.begin(), what.end(), '\n', ' ');
-    return what;
-  };
-  json doc;
-  try {
-    doc = json::parse(json_text.begin(), json_text.end(), track);
-  } catch (const json::out_of_range& e) {  // 406: a number overflowing a double
-    const std::string key = key_path();
-    throw InputError(shown + ": " + (key.empty() ? std::string("a number") : key) + ": " +
-                     message(e) + "; every number must be finite");
-  } catch (const json::exception& e) {
-    throw InputError(shown + ": not valid JSON (" + message(e) + ")");
-  }
-  if (!doc.is_object())
-    throw InputError(shown +
-                     ": expected a JSON object (a calibration file written by bearing-fem "
-                     "calibrate), got " +
-                     article(doc));
-  const Reader top(doc, "", shown);
+  // A file is 4 levels deep.
+  const json doc = json_document::parse(json_text, shown, kWhatFile, 4);
+  const Reader top(doc, "", shown, kWhatFile);
 
   const json* format = top.get("format");
   if (!format)
@@ -328,19 +209,9 @@ ContactCalibration parse_calibration(std::string_view json_text, const std::stri
 }
 
 ContactCalibration read_calibration(const std::string& path, const std::string& shown) {
-  namespace fs = std::filesystem;
-  std::error_code ec;
-  fs::path absolute = fs::absolute(path, ec);
-  if (ec) absolute = path;
-  absolute = absolute.lexically_normal();
-  std::ifstream in(absolute, std::ios::binary);
-  if (!in)
-    throw InputError(shown + ": cannot read " + absolute.string() + " (" + std::strerror(errno) +
-                     ")");
-  std::ostringstream text;
-  text << in.rdbuf();
-  if (in.bad()) throw InputError(shown + ": cannot read " + absolute.string());
-  return parse_calibration(text.str(), absolute.string(), shown);
+  std::string absolute;
+  const std::string text = json_document::read_text(path, shown, absolute);
+  return parse_calibration(text, absolute, shown);
 }
 
 void check_calibration_bearing(const ContactCalibration& cal, const Bearing& b,
