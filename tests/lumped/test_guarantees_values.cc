@@ -184,7 +184,7 @@ std::string CaseDraw::housing(const bearing::ModelDescriptor& kind) {
   const auto u = [&](double lo, double hi) {
     return std::uniform_real_distribution<double>(lo, hi)(housing_rng_);
   };
-  if (!kind.housing || u(0, 1) >= 0.3) return "";
+  if (!kind.housing() || u(0, 1) >= 0.3) return "";
   std::ostringstream t;
   t << "[housing]\n";
   for (const char* key : {"housing.mass", "housing.frequency", "housing.damping_ratio"})

@@ -340,10 +340,12 @@ std::vector<Key> ball_keys() {
   };
 }
 
-// A [housing] key: range-checked, and if `required` refused when missing, only when the table is
-// there (absent, the housing is off and its keys keep their defaults, unchecked). A missing
-// required key lands as NaN (the reader takes finite numbers only) and is reported by the check,
-// after the table's unknown keys, so `mas = "1 kg"` is answered with "did you mean mass".
+// A [housing] key of the resonator: range-checked, and if `required` refused when missing, only
+// when the table is there and gives no modes file (absent, the housing is off and its keys keep
+// their defaults, unchecked; with modes, the modes stand in for mass and frequency, which must
+// then be absent). A missing required key lands as NaN (the reader takes finite numbers only)
+// and is reported by the check, after the table's unknown keys, so `mas = "1 kg"` is answered
+// with "did you mean mass".
 template <class At>
 Key housing_quantity(std::string name, Dimension dim, std::string help, At at, const Limit& limit,
                      bool required) {
@@ -352,40 +354,72 @@ Key housing_quantity(std::string name, Dimension dim, std::string help, At at, c
         return c.housing.enabled && required ? std::numeric_limits<double>::quiet_NaN() : at(c);
       });
   require_own_limit(limit, k.name);
-  k.check = [at, key = k.name, dim, limit](const Case& c) {
+  k.check = [at, key = k.name, dim, limit, required](const Case& c) {
     if (!c.housing.enabled) return;
+    if (c.housing.modal() && required) {
+      if (!std::isnan(at(c)))
+        throw InputError(key + " = " + fmt_si(at(c), dim) +
+                         ": give either mass and frequency (one resonator) or modes (the "
+                         "structure's modes file), not both");
+      return;
+    }
     if (std::isnan(at(c)))
       throw InputError(key +
                        " is missing: [housing] needs mass and frequency (the resonance the "
-                       "sensor sees), e.g. mass = \"1 kg\", frequency = \"3 kHz\"");
+                       "sensor sees), e.g. mass = \"1 kg\", frequency = \"3 kHz\", or modes = "
+                       "\"modes.json\" (bearing-fem modes)");
     check_limit(limit, key, at(c), dim);
   };
+  const auto write = k.write;
+  if (required)
+    k.write = [write](std::ostream& o, const Case& c) {
+      if (!c.housing.modal()) write(o, c);
+    };
   return k;
 }
 
 std::vector<Key> housing_keys() {
   Key t = table("housing",
-                "the outer ring on its own support, and the sensor's resonance (2dof, 3dof); "
-                "present: on");
+                "the outer ring on its own support: one resonator (mass, frequency) or the "
+                "structure's FE modes (modes), and the sensors (2dof, 3dof); present: on");
   // The table's presence turns the housing on.
   t.before = [](const TableReader& r, Case& c) { c.housing.enabled = r.present(); };
-  t.after = [](Case& c) { check_housing_supported(c.model.kind, c.housing); };
+  t.after = [](Case& c) {
+    check_housing_supported(c.model.kind, c.housing);
+    check_housing_table(c);
+  };
   t.written = [](const Case& c) { return c.housing.enabled; };
+  Key damping = housing_quantity(
+      "housing.damping_ratio", D::dimensionless,
+      "damping ratio in [0, 1) of the resonance, or of each mode: one number for all, or an "
+      "array, one per mode (default 0.05)",
+      [](auto& c) -> auto& { return c.housing.damping_ratio; }, limits::housing_damping_ratio,
+      false);
+  damping.read = read_housing_damping;
+  damping.write = write_housing_damping;
+  Key modes = described("housing.modes", Kind::text, D::dimensionless,
+                        "the structure's natural modes, modes.json of bearing-fem modes (relative "
+                        "to the case file), instead of mass and frequency");
+  modes.read = read_housing_modes;
+  modes.write = write_housing_modes;
+  Key sensors = described("housing.sensors", Kind::text, D::dimensionless,
+                          "with modes: the modes file's sensors written, e.g. [\"top\"] (default: "
+                          "all); channels x_<name>, vx_<name>, ax_<name>, ...");
+  sensors.read = read_housing_sensors;
+  sensors.write = write_housing_sensors;
   return {
       t,
       housing_quantity(
           "housing.mass", D::mass,
-          "modal mass of the outer ring with its housing and sensor, m_h (required)",
+          "modal mass of the outer ring with its housing and sensor, m_h (required without modes)",
           [](auto& c) -> auto& { return c.housing.mass; }, limits::housing_mass, true),
       housing_quantity(
           "housing.frequency", D::frequency,
-          "natural frequency f_h of the housing on its support alone (required)",
+          "natural frequency f_h of the housing on its support alone (required without modes)",
           [](auto& c) -> auto& { return c.housing.frequency; }, limits::housing_frequency, true),
-      housing_quantity(
-          "housing.damping_ratio", D::dimensionless,
-          "damping ratio of the housing's resonance in [0, 1) (default 0.05)",
-          [](auto& c) -> auto& { return c.housing.damping_ratio; }, limits::housing_damping_ratio,
-          false),
+      damping,
+      modes,
+      sensors,
   };
 }
 

@@ -39,6 +39,17 @@ void read_envelope_band(TableReader& r, Case& c, const ReadContext& context);
 void check_envelope_band(const Case& c);
 void write_envelope_band(std::ostream& o, const Case& c);
 
+/// [housing] (housing_rules.cc): modes = "modes.json" (bearing-fem modes), read now relative to
+/// the case file; damping_ratio, one number or one per mode; sensors, the modes file's sensors a
+/// run writes; and the table's rules (the resonator or the modes, check_housing).
+void read_housing_modes(TableReader& r, Case& c, const ReadContext& context);
+void write_housing_modes(std::ostream& o, const Case& c);
+void read_housing_damping(TableReader& r, Case& c, const ReadContext& context);
+void write_housing_damping(std::ostream& o, const Case& c);
+void read_housing_sensors(TableReader& r, Case& c, const ReadContext& context);
+void write_housing_sensors(std::ostream& o, const Case& c);
+void check_housing_table(Case& c);
+
 /// solver.transient against solver.duration, and the number of output samples.
 void check_solver_times(Case& c);
 

@@ -1,11 +1,17 @@
 // The housing carrying the outer ring (housing.h): the bearing model evaluated at the rings'
-// relative position, its force on the inner ring plus the ring loads, its reaction on the housing.
+// relative position, its force on the inner ring plus the ring loads, its reaction on the
+// support's DOFs (the resonator's x_h, y_h, or the structure's modal coordinates η_k).
 //
-// Jacobian. With f_b(q_r, v_r), q_r = q − P q_h (P puts x_h, y_h on the ring's x, y) and B = the
-// x, y rows of the bearing's ∂f_b/∂q_r (n columns), B_xy its x, y columns:
-//     ring:    ∂f/∂q = ∂f_b/∂q_r,         ∂f/∂q_h = −(∂f_b/∂q_r) P
-//     housing: ∂f_h/∂q = −B,              ∂f_h/∂q_h = B_xy − k_h I
-// and the same for v with c_h.
+// The support, either way: M uncoupled DOFs p_k of mass m_k, stiffness k_k and damping c_k that
+// move the seat by S p (S: 2 × M, the seat's x, y motion per unit p_k). The resonator: M = 2,
+// m = m_h, k = k_h, c = c_h, S = I. The modes: m = 1, k = ω_k², c = 2 ζ_k ω_k, S = (s_k,x; s_k,y).
+// Each DOF is driven by the bearing's reaction −f_b,xy projected on its seat motion, Sᵀ(−f_b,xy).
+//
+// Jacobian. With f_b(q_r, v_r), q_r = q − P p (P: n × M, S in the ring's x, y rows, 0 below)
+// and B = the x, y rows of the bearing's ∂f_b/∂q_r (n columns), B_xy its x, y columns:
+//     ring:    ∂f/∂q = ∂f_b/∂q_r,         ∂f/∂p = −(∂f_b/∂q_r) P
+//     support: ∂f_p/∂q = −Sᵀ B,           ∂f_p/∂p = Sᵀ B_xy S − diag(k)
+// and the same for v with c. With S = I these are the resonator's.
 
 #include "bearing/models/housing.h"
 
@@ -19,8 +25,9 @@
 #include <Eigen/Dense>
 
 #include "bearing/constants.h"
+#include "bearing/errors.h"
 #include "bearing/limits.h"
-#include "phasor.h"
+#include "housed_model.h"
 
 namespace bearing {
 
@@ -33,172 +40,113 @@ double Housing::damping() const {
   return 2.0 * damping_ratio * mass * two_pi * frequency;
 }
 
+double Housing::mode_damping_ratio(int k) const {
+  return damping_ratios.empty() ? damping_ratio : damping_ratios.at(static_cast<std::size_t>(k));
+}
+
+std::vector<const StructureSensor*> Housing::written_sensors() const {
+  std::vector<const StructureSensor*> out;
+  if (!modes) return out;
+  for (const StructureSensor& s : modes->sensors)
+    if (sensors.empty() || std::find(sensors.begin(), sensors.end(), s.name) != sensors.end())
+      out.push_back(&s);
+  return out;
+}
+
+int Housing::support_dofs() const {
+  return modes ? modes->count() : 2;
+}
+
+void check_housing(const Housing& h) {
+  if (!h.modes) {
+    limits::housing_mass.check(h.mass);
+    limits::housing_frequency.check(h.frequency);
+    limits::housing_damping_ratio.check(h.damping_ratio);
+    return;
+  }
+  const StructureModes& m = *h.modes;
+  const std::string file = "housing.modes = \"" + h.modes_file + "\"";
+  if (m.free)
+    throw InputError(file +
+                     ": the structure is free-free (no surface held), so it cannot carry the "
+                     "bearing: its rigid-body motion is not in the file, and the bearing's load "
+                     "would drive it away; compute the modes with [boundary] fixed = [...]");
+  limits::housing_damping_ratio.check(h.damping_ratio);
+  if (!h.damping_ratios.empty() && h.damping_ratios.size() != static_cast<std::size_t>(m.count()))
+    throw InputError("housing.damping_ratio has " + std::to_string(h.damping_ratios.size()) +
+                     " entries: give one for all modes, or one per mode (" + file + " has " +
+                     std::to_string(m.count()) + ")");
+  for (std::size_t k = 0; k < h.damping_ratios.size(); ++k)
+    if (!limits::housing_damping_ratio.contains(h.damping_ratios[k]))
+      throw InputError("housing.damping_ratio[" + std::to_string(k) +
+                       "] = " + format_number(h.damping_ratios[k]) + ": " +
+                       limits::housing_damping_ratio.allowed);
+  for (const std::string& name : h.sensors)
+    if (!m.sensor(name)) {
+      std::string known;
+      for (const StructureSensor& s : m.sensors) known += (known.empty() ? "" : ", ") + s.name;
+      throw InputError("housing.sensors: \"" + name + "\" is not a sensor of " + file +
+                       (known.empty() ? " (it has none)" : " (it has: " + known + ")"));
+    }
+}
+
+namespace detail {
+
 namespace {
 
-constexpr int kMaxRingDofs = 8;  // the bearing's DOFs (2 or 3); the work arrays live on the stack
+Support resonator(const Housing& h) {
+  Support s;
+  s.dofs = 2;
+  s.mass = {h.mass, h.mass};
+  s.stiffness = {h.stiffness(), h.stiffness()};
+  s.damping = {h.damping(), h.damping()};
+  s.sx = {1.0, 0.0};
+  s.sy = {0.0, 1.0};
+  s.names = {"x_housing", "y_housing"};
+  return s;
+}
 
-class HousingModel final : public BearingModel {
- public:
-  HousingModel(std::unique_ptr<BearingModel> bearing, const RingLoad& load, const Housing& h,
-               std::vector<double> start)
-      : bearing_(std::move(bearing)),
-        n_(bearing_->dofs()),
-        load_(load),
-        mass_(h.mass),
-        stiffness_(h.stiffness()),
-        damping_(h.damping()),
-        start_(std::move(start)) {
-    if (n_ < 2 || n_ > kMaxRingDofs || bearing_->dof_names().size() != static_cast<std::size_t>(n_))
-      throw std::logic_error("housing: the bearing model must have the ring's DOFs only (2 to " +
-                             std::to_string(kMaxRingDofs) + ", x and y first)");
-    if (start_.size() != static_cast<std::size_t>(n_))
-      throw std::logic_error("housing: the static start has the wrong number of entries");
+Support structure_modes(const Housing& h) {
+  const StructureModes& m = *h.modes;
+  Support s;
+  s.dofs = m.count();
+  // Unit modal masses; k and c in the resonator's association with m = 1 (Housing::stiffness,
+  // ::damping), so a modes file of the resonator's two modes gives its bits for a mass of a
+  // power of two (test_housing_modes.cc).
+  for (int k = 0; k < s.dofs; ++k) {
+    const double f = m.frequencies[static_cast<std::size_t>(k)], w = two_pi * f;
+    s.mass.push_back(1.0);
+    s.stiffness.push_back(w * w);
+    s.damping.push_back(2.0 * h.mode_damping_ratio(k) * two_pi * f);
   }
-
-  int dofs() const override { return n_ + 2; }
-  void mass(double* m) const override {
-    bearing_->mass(m);
-    m[n_] = m[n_ + 1] = mass_;
-  }
-
-  // The bearing keeps its frame in the workspace; the housing keeps nothing.
-  std::unique_ptr<Workspace> make_workspace() const override { return bearing_->make_workspace(); }
-  void force(double t, const double* q, const double* v, double* f) const override {
-    force_with(nullptr, t, q, v, f);
-  }
-  void force_with(Workspace* workspace, double t, const double* q, const double* v,
-                  double* f) const override {
-    std::array<double, kMaxRingDofs> qr{}, vr{};
-    relative(q, qr.data());
-    relative(v, vr.data());
-    bearing_->force_with(workspace, t, qr.data(), vr.data(), f);  // f_b on the ring
-    const double bx = f[0], by = f[1];
-    f[0] += load_.constant.x();
-    f[1] += load_.constant.y();
-    if (load_.unbalance_force != 0.0) {
-      const detail::Phasor shaft = detail::phasor(load_.shaft_speed * t);
-      f[0] += load_.unbalance_force * shaft.c;
-      f[1] += load_.unbalance_force * shaft.s;
+  s.sx = m.seat[0];
+  s.sy = m.seat[1];
+  static const char* const kAxes[] = {"x", "y", "z"};
+  for (const StructureSensor* sensor : h.written_sensors())
+    for (int a = 0; a < 3; ++a) {
+      SensorRow row{std::string(kAxes[a]) + "_" + sensor->name, {}};
+      for (int k = 0; k < s.dofs; ++k)
+        row.terms.emplace_back(k, sensor->shape[static_cast<std::size_t>(a)][k]);
+      s.sensors.push_back(std::move(row));
     }
-    f[n_] = -bx - stiffness_ * q[n_] - damping_ * v[n_];
-    f[n_ + 1] = -by - stiffness_ * q[n_ + 1] - damping_ * v[n_ + 1];
-  }
-
-  void force_jacobian(double t, const double* q, const double* v, double* dfdq,
-                      double* dfdv) const override {
-    std::array<double, kMaxRingDofs> qr{}, vr{};
-    relative(q, qr.data());
-    relative(v, vr.data());
-    std::array<double, kMaxRingDofs * kMaxRingDofs> bq{}, bv{};
-    bearing_->force_jacobian(t, qr.data(), vr.data(), bq.data(), bv.data());
-    couple(bq.data(), stiffness_, dfdq);
-    couple(bv.data(), damping_, dfdv);
-  }
-
-  bool cyclic(int i) const override { return i < n_ && bearing_->cyclic(i); }
-  int switching_count() const override { return bearing_->switching_count(); }
-  void switching_functions(double t, const double* q, double* g) const override {
-    std::array<double, kMaxRingDofs> qr{};
-    relative(q, qr.data());
-    bearing_->switching_functions(t, qr.data(), g);
-  }
-
-  std::vector<std::string> dof_names() const override {
-    std::vector<std::string> names = bearing_->dof_names();
-    names.emplace_back("x_housing");
-    names.emplace_back("y_housing");
-    return names;
-  }
-  int balls() const override { return bearing_->balls(); }
-  double cage_speed() const override { return bearing_->cage_speed(); }
-  bool has_ball_dofs() const override { return bearing_->has_ball_dofs(); }
-
-  void ball_loads(double t, const double* q, double* loads) const override {
-    std::array<double, kMaxRingDofs> qr{};
-    relative(q, qr.data());
-    bearing_->ball_loads(t, qr.data(), loads);
-  }
-  void ball_approaches(double t, const double* q, double* approaches) const override {
-    std::array<double, kMaxRingDofs> qr{};
-    relative(q, qr.data());
-    bearing_->ball_approaches(t, qr.data(), approaches);
-  }
-  void ball_motion(double t, const double* q, const double* v, double* r,
-                   double* vr) const override {
-    std::array<double, kMaxRingDofs> qr{}, vrel{};
-    relative(q, qr.data());
-    relative(v, vrel.data());
-    bearing_->ball_motion(t, qr.data(), vrel.data(), r, vr);
-  }
-  void ball_dynamics(double t, const double* q, const double* v, double* spin, double* outer_load,
-                     double* friction_inner, double* friction_outer) const override {
-    std::array<double, kMaxRingDofs> qr{}, vr{};
-    relative(q, qr.data());
-    relative(v, vr.data());
-    bearing_->ball_dynamics(t, qr.data(), vr.data(), spin, outer_load, friction_inner,
-                            friction_outer);
-  }
-
-  // The contacts' energy at the relative position and the housing's spring.
-  double potential_energy(double t, const double* q) const override {
-    std::array<double, kMaxRingDofs> qr{};
-    relative(q, qr.data());
-    const double xh = q[n_], yh = q[n_ + 1];
-    return bearing_->potential_energy(t, qr.data()) + 0.5 * stiffness_ * (xh * xh + yh * yh);
-  }
-
-  // The relative static position, shifted by the housing's deflection k_h q_h = F.
-  std::vector<double> initial_displacement() const override {
-    const Eigen::Vector2d qh = load_.constant / stiffness_;
-    std::vector<double> q = start_;
-    q[0] += qh.x();
-    q[1] += qh.y();
-    q.push_back(qh.x());
-    q.push_back(qh.y());
-    return q;
-  }
-  std::vector<double> initial_velocity() const override {
-    std::vector<double> v = bearing_->initial_velocity();
-    v.push_back(0.0);
-    v.push_back(0.0);
-    return v;
-  }
-
- private:
-  // The ring's entries of a full state relative to the housing's (n entries).
-  void relative(const double* full, double* ring) const {
-    for (int i = 0; i < n_; ++i) ring[i] = full[i];
-    ring[0] -= full[n_];
-    ring[1] -= full[n_ + 1];
-  }
-
-  // The (n + 2)² Jacobian block from the bearing's n² one `b` and the housing's own coefficient
-  // (k_h for ∂/∂q, c_h for ∂/∂v); see the file comment.
-  void couple(const double* b, double own, double* out) const {
-    const int N = n_ + 2;
-    for (int i = 0; i < n_; ++i) {
-      for (int j = 0; j < n_; ++j) out[i * N + j] = b[i * n_ + j];
-      out[i * N + n_] = -b[i * n_ + 0];
-      out[i * N + n_ + 1] = -b[i * n_ + 1];
-    }
-    for (int a = 0; a < 2; ++a) {
-      double* row = out + (n_ + a) * N;
-      for (int j = 0; j < n_; ++j) row[j] = -b[a * n_ + j];
-      row[n_] = b[a * n_ + 0] - (a == 0 ? own : 0.0);
-      row[n_ + 1] = b[a * n_ + 1] - (a == 1 ? own : 0.0);
-    }
-  }
-
-  std::unique_ptr<BearingModel> bearing_;
-  int n_;  // the bearing's DOFs
-  RingLoad load_;
-  double mass_, stiffness_, damping_;  // m_h [kg], k_h [N/m], c_h [N s/m]
-  std::vector<double> start_;          // the relative static position q_r [m]
-};
+  return s;
+}
 
 }  // namespace
 
-std::vector<HousingMode> housing_modes(const BearingModel& model) {
+Support make_support(const Housing& housing, ContactLoop loop) {
+  check_housing(housing);
+  Support s = housing.modal() ? structure_modes(housing) : resonator(housing);
+  s.kernels = support_kernels(loop);
+  const std::size_t blocks = (static_cast<std::size_t>(s.dofs) + 7) / 8;
+  s.sx.resize(8 * blocks, 0.0);
+  s.sy.resize(8 * blocks, 0.0);
+  return s;
+}
+
+}  // namespace detail
+
+std::vector<HousingMode> housing_modes(const BearingModel& model, int support_dofs) {
   const int n = model.dofs();
   const std::vector<double> q = model.initial_displacement();
   const std::vector<double> v(static_cast<std::size_t>(n), 0.0);
@@ -218,7 +166,7 @@ std::vector<HousingMode> housing_modes(const BearingModel& model) {
     const Eigen::VectorXd phi = eig.eigenvectors().col(k);  // φᵀ M φ = 1
     HousingMode mode;
     mode.frequency = std::sqrt(std::max(eig.eigenvalues()(k), 0.0)) / two_pi;
-    for (int i = n - 2; i < n; ++i) mode.housing_share += M(i, i) * phi(i) * phi(i);
+    for (int i = n - support_dofs; i < n; ++i) mode.housing_share += M(i, i) * phi(i) * phi(i);
     modes.push_back(mode);
   }
   return modes;
@@ -227,10 +175,8 @@ std::vector<HousingMode> housing_modes(const BearingModel& model) {
 std::unique_ptr<BearingModel> make_housing_model(std::unique_ptr<BearingModel> bearing,
                                                  const RingLoad& load, const Housing& housing,
                                                  std::vector<double> start) {
-  limits::housing_mass.check(housing.mass);
-  limits::housing_frequency.check(housing.frequency);
-  limits::housing_damping_ratio.check(housing.damping_ratio);
-  return std::make_unique<HousingModel>(std::move(bearing), load, housing, std::move(start));
+  return std::make_unique<detail::HousedModel<BearingModel>>(
+      std::move(bearing), load, detail::make_support(housing, ContactLoop::simd), std::move(start));
 }
 
 }  // namespace bearing

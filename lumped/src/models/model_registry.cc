@@ -37,27 +37,28 @@ const std::vector<ModelDescriptor>& model_registry() {
        {},
        false,
        false,
-       true,
        free_angle,
        make_two_dof_model,
        nullptr,
-       make_two_dof_rk4},
+       make_two_dof_rk4,
+       make_two_dof_housed,
+       make_two_dof_housed_rk4},
       {ModelKind::three_dof,
        "x, y and the axial z under an axial load or preload (seed 001)",
        {},
        false,
        true,
-       true,
        loaded_angle,
        make_three_dof_model,
        nullptr,
-       make_three_dof_rk4},
+       make_three_dof_rk4,
+       make_three_dof_housed,
+       make_three_dof_housed_rk4},
       {ModelKind::balls,
        "ball DOFs, cage slip and traction (seed 004)",
        {"cage", "ball"},
        true,
        true,
-       false,
        ball_angle,
        [](const ModelInputs& in) -> std::unique_ptr<BearingModel> {
          return make_ball_dof_model(in);
@@ -67,7 +68,6 @@ const std::vector<ModelDescriptor>& model_registry() {
       {ModelKind::quasi_static,
        "equilibrium per output instant, no inertia (seed 000)",
        {},
-       false,
        false,
        false,
        free_angle,
@@ -112,10 +112,10 @@ void check_axial_load_supported(ModelKind kind, double axial_load, double radial
 }
 
 void check_housing_supported(ModelKind kind, const Housing& housing) {
-  if (!housing.enabled || model_descriptor(kind).housing) return;
+  if (!housing.enabled || model_descriptor(kind).housing()) return;
   std::string carriers;
   for (const ModelDescriptor& d : model_registry())
-    if (d.housing)
+    if (d.housing())
       carriers +=
           std::string(carriers.empty() ? "" : " or ") + "\"" + name_of(kModelKinds, d.kind) + "\"";
   const std::string why =
@@ -144,8 +144,7 @@ std::unique_ptr<BearingModel> make_dynamic_model(ModelKind kind, const ModelInpu
   load.constant = inputs.radial_load();
   load.unbalance_force = inputs.unbalance * inputs.inner_speed * inputs.inner_speed;
   load.shaft_speed = inputs.inner_speed;
-  return make_housing_model(d.dynamic(bearing_only), load, inputs.housing,
-                            d.dynamic(inputs)->initial_displacement());
+  return d.housed(bearing_only, load, inputs.housing, d.dynamic(inputs)->initial_displacement());
 }
 
 std::unique_ptr<ModelRun> make_run(ModelKind kind, const ModelInputs& inputs,
@@ -156,7 +155,7 @@ std::unique_ptr<ModelRun> make_run(ModelKind kind, const ModelInputs& inputs,
   check_housing_supported(kind, inputs.housing);
   if (d.dynamic)
     return make_dynamic_run(make_dynamic_model(kind, inputs), inputs, solver,
-                            d.contact_angle(inputs), inputs.housing.enabled ? nullptr : d.rk4);
+                            d.contact_angle(inputs), inputs.housing.enabled ? d.housed_rk4 : d.rk4);
   return d.run(inputs, solver);
 }
 

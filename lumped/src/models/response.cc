@@ -34,7 +34,9 @@ std::vector<double> Response::steady(const std::string& name) const {
 Response lay_out_response(const ModelOutputs& model, const OutputRequest& request,
                           const OutputTimes& times) {
   Response out;
-  const std::vector<std::string> dofs = model.dof_names();
+  // The named DOFs, then the sensor rows (ring channels alike: each derivative's in one block).
+  std::vector<std::string> dofs = model.dof_names();
+  for (const SensorRow& row : model.sensor_rows()) dofs.push_back(row.name);
   static const char* const kPrefix[] = {"", "v", "a"};
   static const char* const kUnit[] = {"m", "m/s", "m/s^2"};
   for (int derivative = 0; derivative < 3; ++derivative)
@@ -71,7 +73,12 @@ Response lay_out_response(const ModelOutputs& model, const OutputRequest& reques
 
 ResponseRecorder::ResponseRecorder(const ModelOutputs& model, const OutputRequest& request,
                                    Response& response)
-    : model_(model), fields_(request.fields()), out_(response), balls_(model.balls()) {}
+    : model_(model),
+      fields_(request.fields()),
+      out_(response),
+      balls_(model.balls()),
+      named_(model.dof_names().size()),
+      sensors_(model.sensor_rows()) {}
 
 void ResponseRecorder::operator()(double t, const double* q, const double* v, const double* a) {
   if (k_ >= out_.time.size()) throw std::logic_error("ResponseRecorder: more samples than times");
@@ -80,10 +87,16 @@ void ResponseRecorder::operator()(double t, const double* q, const double* v, co
     const Channel& ch = out_.channels[i];
     const auto dof = static_cast<std::size_t>(ch.index);
     double value = 0;
-    if (ch.group == ChannelGroup::ring)
-      value = ch.derivative == 0 ? q[dof] : ch.derivative == 1 ? v[dof] : a[dof];
-    else
+    if (ch.group == ChannelGroup::ring) {
+      const double* x = ch.derivative == 0 ? q : ch.derivative == 1 ? v : a;
+      if (dof < named_) {
+        value = x[dof];
+      } else {
+        for (const auto& [i, weight] : sensors_[dof - named_].terms) value += weight * x[i];
+      }
+    } else {
       value = balls_[ch.field][dof];
+    }
     out_.values[i][k_] = value;
   }
   ++k_;

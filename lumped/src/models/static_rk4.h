@@ -13,6 +13,8 @@
 #include <memory>
 #include <stdexcept>
 #include <string>
+#include <type_traits>
+#include <utility>
 #include <vector>
 
 #include "bearing/solvers/integrator.h"
@@ -20,6 +22,13 @@
 #include "frame_workspace.h"
 
 namespace bearing::detail {
+
+/// Whether Model says where its DOFs split between one at a time and vectors (rk4_loop.h).
+template <class M, class = void>
+struct HasWideFrom : std::false_type {};
+template <class M>
+struct HasWideFrom<M, std::void_t<decltype(std::declval<const M&>().wide_from())>>
+    : std::true_type {};
 
 /// RK4 (IntegratorSettings::dt, max_displacement) on systems of type Model (a FrameForce model
 /// with kDofs DOFs, or 0: a count known at run time) only: integrate() throws std::logic_error for
@@ -76,6 +85,15 @@ class StaticRk4 final : public Integrator {
       angles.resize(times.size());
       model.time_angles(times.data(), static_cast<int>(times.size()), angles.data(), scratch);
       next = 0;
+    }
+
+    // The model's split of its DOFs (rk4_loop.h): Model::wide_from() where it has one, else
+    // vectorised throughout from kRk4WideDofs DOFs on.
+    int wide_from(int n) const {
+      if constexpr (HasWideFrom<Model>::value)
+        return model.wide_from();
+      else
+        return n >= solvers_detail::kRk4WideDofs ? 0 : n;
     }
 
     void operator()(double t, const double* q, const double* v, double* f) {

@@ -13,6 +13,7 @@
 #include "bearing/kinematics.h"
 #include "bearing/static_load.h"
 #include "frame_force.h"
+#include "housed_model.h"
 #include "model_input_checks.h"
 #include "static_rk4.h"
 
@@ -159,6 +160,17 @@ std::unique_ptr<BearingModel> make_two_dof_model(const ModelInputs& inputs) {
 
 std::unique_ptr<Integrator> make_two_dof_rk4(const IntegratorSettings& settings) {
   return std::make_unique<detail::StaticRk4<TwoDofModel, 2>>(settings);
+}
+
+std::unique_ptr<BearingModel> make_two_dof_housed(const ModelInputs& bearing_only,
+                                                  const RingLoad& load, const Housing& housing,
+                                                  std::vector<double> start) {
+  return detail::make_housed(TwoDofModel(bearing_only), load, housing, bearing_only.contact_loop,
+                             std::move(start));
+}
+
+std::unique_ptr<Integrator> make_two_dof_housed_rk4(const IntegratorSettings& settings) {
+  return std::make_unique<detail::StaticRk4<detail::HousedModel<TwoDofModel>, 0>>(settings);
 }
 
 }  // namespace bearing

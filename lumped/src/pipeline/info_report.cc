@@ -75,7 +75,8 @@ InfoReport compute_info(const Case& c, InfoParts parts) {
     r.defects.push_back(info);
   }
   if (c.housing.enabled)
-    r.housing_modes = housing_modes(*make_dynamic_model(c.model.kind, static_model_inputs(c)));
+    r.housing_modes = housing_modes(*make_dynamic_model(c.model.kind, static_model_inputs(c)),
+                                    c.housing.support_dofs());
   if (parts == InfoParts::without_stiffness) return r;
   // A section of the report, not its purpose: a case the 5-DOF solution cannot take still gets
   // the rest, with the reason shown (`bearing-sim stiffness` fails on it instead); an equilibrium
@@ -189,12 +190,8 @@ nlohmann::json info_json(const InfoReport& r) {
     json modes = json::array();
     for (const HousingMode& m : r.housing_modes)
       modes.push_back({{"frequency", m.frequency}, {"housing_share", m.housing_share}});
-    j["housing"] = {{"mass", h.mass},
-                    {"frequency", h.frequency},
-                    {"damping_ratio", h.damping_ratio},
-                    {"stiffness", h.stiffness()},
-                    {"damping", h.damping()},
-                    {"modes", modes}};
+    j["housing"] = housing_json(h);
+    j["housing"]["modes"] = modes;
   }
   // K is in N/m^n with the exponent n beside it (1.5 for the Hertz methods).
   const std::string k_unit = cal ? "N/m^exponent" : "N/m^1.5";
@@ -224,11 +221,7 @@ nlohmann::json info_json(const InfoReport& r) {
     j["units"]["defects.max_step"] = "s";
   }
   if (r.input.housing.enabled) {
-    j["units"]["housing.mass"] = "kg";
-    j["units"]["housing.frequency"] = "Hz";
-    j["units"]["housing.damping_ratio"] = "1";
-    j["units"]["housing.stiffness"] = "N/m";
-    j["units"]["housing.damping"] = "N s/m";
+    add_housing_units(r.input.housing, j["units"]);
     j["units"]["housing.modes.frequency"] = "Hz";
     j["units"]["housing.modes.housing_share"] = "1";
   }
@@ -319,10 +312,21 @@ std::string housing_text(const InfoReport& r) {
   const Housing& h = r.input.housing;
   if (!h.enabled) return "";
   std::ostringstream o;
-  o << "\nHousing (outer ring on its support)\n  m_h = " << num(h.mass)
-    << " kg, f_h = " << num(h.frequency) << " Hz alone, damping ratio " << num(h.damping_ratio)
-    << ": k_h = " << num(h.stiffness(), 4) << " N/m, c_h = " << num(h.damping(), 4) << " N s/m\n"
-    << "  with the bearing, linearised at the static state (undamped), the modes:\n";
+  if (h.modal()) {
+    const StructureModes& m = *h.modes;
+    o << "\nHousing (outer ring on the structure's modes, " << m.path << ")\n  " << m.count()
+      << " modes, " << num(m.frequencies.front(), 5) << " to " << num(m.frequencies.back(), 5)
+      << " Hz alone; damping ratio "
+      << (h.damping_ratios.empty() ? num(h.damping_ratio) : std::string("one per mode"))
+      << "; sensors:";
+    for (const StructureSensor* s : h.written_sensors()) o << " " << s->name;
+    o << "\n  with the bearing, linearised at the static state (undamped), the modes:\n";
+  } else {
+    o << "\nHousing (outer ring on its support)\n  m_h = " << num(h.mass)
+      << " kg, f_h = " << num(h.frequency) << " Hz alone, damping ratio " << num(h.damping_ratio)
+      << ": k_h = " << num(h.stiffness(), 4) << " N/m, c_h = " << num(h.damping(), 4) << " N s/m\n"
+      << "  with the bearing, linearised at the static state (undamped), the modes:\n";
+  }
   o << "  " << rpad("frequency [Hz]", 16) << rpad("housing share", 16) << "\n";
   for (const HousingMode& m : r.housing_modes)
     o << "  " << rpad(num(m.frequency, 5), 16) << rpad(fixed(100 * m.housing_share, 1) + " %", 16)

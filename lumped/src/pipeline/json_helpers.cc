@@ -23,6 +23,39 @@ nlohmann::json calibration_json(const ContactCalibration& cal, const ContactCons
   return j;
 }
 
+nlohmann::json housing_json(const Housing& h) {
+  using nlohmann::json;
+  if (!h.modal())
+    return {{"mass", h.mass},
+            {"frequency", h.frequency},
+            {"damping_ratio", h.damping_ratio},
+            {"stiffness", h.stiffness()},
+            {"damping", h.damping()}};
+  const StructureModes& m = *h.modes;
+  json zeta = json::array(), sensors = json::array();
+  for (int k = 0; k < m.count(); ++k) zeta.push_back(h.mode_damping_ratio(k));
+  for (const StructureSensor* s : h.written_sensors())
+    sensors.push_back({{"name", s->name}, {"point", s->point}});
+  return {{"structure", m.path},
+          {"frequencies", m.frequencies},
+          {"damping_ratios", zeta},
+          {"sensors", sensors}};
+}
+
+void add_housing_units(const Housing& h, nlohmann::json& units) {
+  if (!h.modal()) {
+    units["housing.mass"] = "kg";
+    units["housing.frequency"] = "Hz";
+    units["housing.damping_ratio"] = "1";
+    units["housing.stiffness"] = "N/m";
+    units["housing.damping"] = "N s/m";
+    return;
+  }
+  units["housing.frequencies"] = "Hz";
+  units["housing.damping_ratios"] = "1";
+  units["housing.sensors.point"] = "m";
+}
+
 void require_finite(const nlohmann::json& j, const std::string& path) {
   if (j.is_number_float() && !std::isfinite(j.get<double>()))
     throw SolverError("result " + path + " is not finite (" + std::to_string(j.get<double>()) +

@@ -163,12 +163,7 @@ nlohmann::json summary_json(const Case& c, const SimulationResult& r, const RunS
                  {"ball_damping", c.ball.damping},
                  {"centrifugal", c.ball.centrifugal}};
   // The outer ring's support as it ran (housing.h); absent when the outer ring is fixed.
-  if (c.housing.enabled)
-    j["housing"] = {{"mass", c.housing.mass},
-                    {"frequency", c.housing.frequency},
-                    {"damping_ratio", c.housing.damping_ratio},
-                    {"stiffness", c.housing.stiffness()},
-                    {"damping", c.housing.damping()}};
+  if (c.housing.enabled) j["housing"] = housing_json(c.housing);
   j["channels"] = json::object();
   j["peaks"] = json::object();
   for (const auto& ch : s.channels) {
@@ -233,13 +228,7 @@ nlohmann::json summary_json(const Case& c, const SimulationResult& r, const RunS
     j["units"]["cage.ball_inertia"] = "kg m^2";
     j["units"]["cage.ball_damping"] = "N s/m";
   }
-  if (c.housing.enabled) {
-    j["units"]["housing.mass"] = "kg";
-    j["units"]["housing.frequency"] = "Hz";
-    j["units"]["housing.damping_ratio"] = "1";
-    j["units"]["housing.stiffness"] = "N/m";
-    j["units"]["housing.damping"] = "N s/m";
-  }
+  if (c.housing.enabled) add_housing_units(c.housing, j["units"]);
   if (!s.envelopes.empty()) {
     j["envelope"] = envelope_json(s.envelopes);
     add_envelope_units(j["units"]);
@@ -281,7 +270,12 @@ std::string summary_text(const Case& c, const SimulationResult& r, const RunSumm
                   c.ball.centrifugal ? "on" : "off");
     o << buf;
   }
-  if (c.housing.enabled) {
+  if (c.housing.enabled && c.housing.modal()) {
+    const StructureModes& m = *c.housing.modes;
+    std::snprintf(buf, sizeof buf, "Housing: %d structure modes, %.4g to %.4g Hz alone (%s)\n",
+                  m.count(), m.frequencies.front(), m.frequencies.back(), m.path.c_str());
+    o << buf;
+  } else if (c.housing.enabled) {
     std::snprintf(buf, sizeof buf,
                   "Housing: %.4g kg at %.4g Hz on its support alone, damping ratio %.4g "
                   "(k %.4g N/m, c %.4g N s/m)\n",

@@ -18,8 +18,8 @@ struct Channel {
   std::string name;  ///< "x", "vy", "Q3", ...
   std::string unit;  ///< SI unit
   ChannelGroup group = ChannelGroup::ring;
-  int index = 0;                      ///< ring: the DOF (0 = x); ball: the ball, 0-based
-  int derivative = 0;                 ///< ring: 0 displacement, 1 velocity, 2 acceleration
+  int index = 0;       ///< ring: the DOF (0 = x), past the named DOFs a sensor row; ball: the ball
+  int derivative = 0;  ///< ring: 0 displacement, 1 velocity, 2 acceleration
   BallField field = BallField::load;  ///< ball: which quantity
 };
 
@@ -77,8 +77,8 @@ struct Response {
 Response lay_out_response(const ModelOutputs& model, const OutputRequest& request,
                           const OutputTimes& times);
 
-/// Fills a laid-out response one output instant at a time, in order: the ring's q, v, a, then
-/// the requested ball fields from the model.
+/// Fills a laid-out response one output instant at a time, in order: the ring's q, v, a (the
+/// named DOFs', then the model's sensor rows'), then the requested ball fields from the model.
 class ResponseRecorder {
  public:
   ResponseRecorder(const ModelOutputs& model, const OutputRequest& request, Response& response);
@@ -91,6 +91,8 @@ class ResponseRecorder {
   BallFields fields_;
   Response& out_;
   BallState balls_;
+  std::size_t named_;               // the named DOFs; ring channels past them are sensor rows
+  std::vector<SensorRow> sensors_;  // model_.sensor_rows()
   std::size_t k_ = 0;
 };
 

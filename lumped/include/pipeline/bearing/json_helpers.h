@@ -1,6 +1,7 @@
 #pragma once
 // JSON pieces shared by the result writers (`bearing-sim info --json` and run's summary.json):
-// the check that nothing non-finite is written, and a calibrated law's provenance as both show it.
+// the check that nothing non-finite is written, and a calibrated law's provenance and the housing
+// as both show them.
 
 #include <string>
 
@@ -8,6 +9,7 @@
 
 #include "bearing/calibration.h"
 #include "bearing/contact.h"
+#include "bearing/models/housing.h"
 
 namespace bearing {
 
@@ -15,6 +17,12 @@ namespace bearing {
 /// load_range [N] (null if the file has none), fit_residual.{inner,outer} (the FE fit's; null if
 /// not given), series_fit_residual (the ball's law, 0 if exact)}.
 nlohmann::json calibration_json(const ContactCalibration& cal, const ContactConstants& cc);
+
+/// The housing as it ran: the resonator {mass, frequency, damping_ratio, stiffness, damping}, or
+/// the structure's modes {structure (the modes file), frequencies [Hz], damping_ratios, sensors}.
+nlohmann::json housing_json(const Housing& housing);
+/// Their units, into a summary's or info's `units` (keys "housing.<key>").
+void add_housing_units(const Housing& housing, nlohmann::json& units);
 
 /// Throws SolverError naming the JSON path of the first NaN or infinity in `j`.
 void require_finite(const nlohmann::json& j, const std::string& path = "");

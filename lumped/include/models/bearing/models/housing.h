@@ -56,6 +56,26 @@
 // not diagonal), nor the quasi-static one (no inertia, no resonance): both refuse [housing]
 // (ModelDescriptor::housing).
 //
+// The modal transfer path (issue 40 §3; docs/model.md, "The transfer path"). With
+// `housing.modes = "DIR/modes.json"` (bearing-fem modes: the structure's natural modes from
+// finite elements, structure_modes.h) the one body above becomes the structure's M modes. Their
+// coordinates η_k [kg^½ m], mass-normalised (unit modal mass), are the support's DOFs; the seat,
+// and with it the outer ring, moves by the sum of the modes, and each mode is driven by the
+// bearing's reaction projected on its seat motion s_k = (s_k,x, s_k,y) [kg^-½]:
+//     q_h = Σ_k s_k η_k,     η̈_k + 2 ζ_k ω_k η̇_k + ω_k² η_k = −s_k · f_b,xy(t, q_r, q̇_r)
+// with ω_k = 2π f_k and ζ_k housing.damping_ratio (one for all modes, or one per mode). The
+// resonator above is the case of two modes at f_h with s = (1/√m_h, 0) and (0, 1/√m_h), η = √m_h
+// q_h (a modes file holding them reproduces it: tests/lumped/test_housing_modes.cc). A sensor
+// ψ (a point of the structure) moves by u = Σ_k ψ_k η_k, and the run writes its x, y, z
+// displacement, velocity and acceleration: x_<sensor>, vx_<sensor>, ax_<sensor>, …
+// Choices, stated: the seat moves in x and y only (its axial motion and tilts, in the file, are
+// left out: the rings of the 2-DOF and 3-DOF models do not tilt, and the 3-DOF model's axial
+// force includes the applied F_z, which a moving seat would have to carry statically); the outer
+// ring's own mass is not added to the structure's (mesh the ring with the housing if it
+// matters); the modes are truncated at the file's last one, without residual flexibility (the
+// static start is the truncated modes' own equilibrium, η_k = s_k · F/ω_k²); a free-free
+// structure cannot carry the bearing and is refused.
+//
 // Limits (tests/lumped/test_housing.cc): with the inner ring's force prescribed the housing is
 // the single-DOF oscillator, peak displacement at f_h sqrt(1 − 2ζ²), free decay at
 // f_h sqrt(1 − ζ²) with logarithmic decrement 2πζ/sqrt(1 − ζ²); its energy E_h = ½ m_h |q̇_h|² +
@@ -64,25 +84,42 @@
 // vanishes with it, and the outer ring floats.)
 
 #include <memory>
+#include <optional>
+#include <string>
 #include <vector>
 
 #include <Eigen/Dense>
 
 #include "bearing/models/bearing_model.h"
+#include "bearing/structure_modes.h"
 
 namespace bearing {
 
-/// The [housing] table, in SI. Its presence turns it on.
+/// The [housing] table, in SI. Its presence turns it on: the resonator (mass, frequency) or the
+/// structure's modes (modes), never both.
 struct Housing {
   bool enabled = false;
-  double mass = 0.0;            ///< m_h, the outer ring and its carrier [kg] (required)
-  double frequency = 0.0;       ///< f_h, natural frequency on the support alone [Hz] (required)
-  double damping_ratio = 0.05;  ///< ζ_h [-]: a bolted machine structure's few per cent
+  double mass = 0.0;            ///< m_h, the outer ring and its carrier [kg] (the resonator)
+  double frequency = 0.0;       ///< f_h, natural frequency on the support alone [Hz] (resonator)
+  double damping_ratio = 0.05;  ///< ζ_h [-], and every mode's unless damping_ratios: a bolted
+                                ///< machine structure's few per cent
+  /// The modal transfer path: housing.modes as given (relative to the case file), and the file.
+  std::string modes_file;
+  std::optional<StructureModes> modes;  ///< read when the case is read; empty: the resonator
+  std::vector<double> damping_ratios;   ///< ζ_k per mode [-] (empty: damping_ratio for all)
+  std::vector<std::string> sensors;     ///< the sensors a run writes (empty: all in the file)
 
-  /// k_h = m_h (2π f_h)² [N/m].
+  bool modal() const { return modes.has_value(); }
+  /// k_h = m_h (2π f_h)² [N/m] (the resonator).
   double stiffness() const;
-  /// c_h = 2 ζ_h m_h (2π f_h) [N s/m].
+  /// c_h = 2 ζ_h m_h (2π f_h) [N s/m] (the resonator).
   double damping() const;
+  /// ζ_k of mode k [-].
+  double mode_damping_ratio(int k) const;
+  /// The sensors a run writes, in the file's order (all when `sensors` is empty).
+  std::vector<const StructureSensor*> written_sensors() const;
+  /// The support's DOFs: 2 for the resonator, the modes' count.
+  int support_dofs() const;
 };
 
 /// The loads applied to the inner ring alone, which the housing takes only through the bearing.
@@ -92,12 +129,18 @@ struct RingLoad {
   double shaft_speed = 0.0;                            ///< ω_i [rad/s]: F_u turns at ω_i t
 };
 
+/// Checks the [housing] values: the resonator's mass, frequency and damping ratio, or the
+/// modes' damping ratios (one or one per mode), the sensors (named in the file) and a held
+/// structure. Throws InputError naming the key, the value and the allowed range.
+void check_housing(const Housing& housing);
+
 /// The bearing model `bearing` carried by the housing. `bearing` must be built without the ring
 /// loads (its force is f_b, what the bearing exerts on the inner ring), its DOFs the ring's only
 /// (dof_names().size() == dofs() ≤ 8, x and y first); `start` is the relative static position
-/// q_r, from the same model built with the loads. DOFs: the bearing's, then x_housing, y_housing
-/// [m]. Throws InputError naming housing.mass, housing.frequency or housing.damping_ratio out of
-/// range, std::logic_error for a model it cannot carry.
+/// q_r, from the same model built with the loads. DOFs: the bearing's, then the support's:
+/// x_housing, y_housing [m] (the resonator) or η_1 … η_M [kg^½ m] (the modes: not named, so not
+/// written; the sensors are). Throws InputError as check_housing, std::logic_error for a model
+/// it cannot carry.
 std::unique_ptr<BearingModel> make_housing_model(std::unique_ptr<BearingModel> bearing,
                                                  const RingLoad& load, const Housing& housing,
                                                  std::vector<double> start);
@@ -108,11 +151,12 @@ struct HousingMode {
   double housing_share = 0.0;  ///< the housing's share of the mode's kinetic energy [0, 1]
 };
 
-/// The undamped natural modes of `model` (make_housing_model's) linearised at its static start
-/// (initial_displacement) at t = 0, ascending: the eigenproblem K φ = ω² M φ with K = −∂f/∂q
-/// symmetrised. What a case's f_h becomes once the housing carries the bearing (its sensor's
+/// The undamped natural modes of `model` (make_housing_model's, whose support has
+/// `support_dofs` DOFs, the last ones) linearised at its static start (initial_displacement) at
+/// t = 0, ascending: the eigenproblem K φ = ω² M φ with K = −∂f/∂q symmetrised. What a case's
+/// f_h (or the structure's modes) become once the housing carries the bearing (its sensor's
 /// resonance is the mode with the largest housing share). A mode of zero stiffness (a free DOF,
 /// e.g. an unloaded ring) has frequency 0.
-std::vector<HousingMode> housing_modes(const BearingModel& model);
+std::vector<HousingMode> housing_modes(const BearingModel& model, int support_dofs = 2);
 
 }  // namespace bearing

@@ -5,6 +5,7 @@
 
 #include <cstddef>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace bearing {
@@ -49,6 +50,14 @@ struct BallState {
   std::vector<std::vector<double>> values;
 };
 
+/// A linear output of the state beyond the named DOFs: Σ weight × state[dof] over its terms (a
+/// sensor's displacement on a modal housing, housing.h). Its velocity and acceleration are the
+/// same sums of the velocities and accelerations.
+struct SensorRow {
+  std::string name;                           ///< channel stem, e.g. "y_top" (then vy_top, ay_top)
+  std::vector<std::pair<int, double>> terms;  ///< (DOF index, weight [output unit per DOF unit])
+};
+
 class ModelOutputs {
  public:
   virtual ~ModelOutputs() = default;
@@ -57,6 +66,10 @@ class ModelOutputs {
   /// {"x", "y", "z"}, followed by "x_housing", "y_housing" with the housing (housing.h); the
   /// output channel stems.
   virtual std::vector<std::string> dof_names() const = 0;
+
+  /// The linear outputs beyond the named DOFs, written after them (response.h): none but on a
+  /// modal housing.
+  virtual std::vector<SensorRow> sensor_rows() const { return {}; }
 
   /// Number of balls Z.
   virtual int balls() const = 0;

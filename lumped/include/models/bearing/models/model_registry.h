@@ -45,9 +45,6 @@ struct ModelDescriptor {
   /// Carries operation.axial_load (an axial DOF, or the loaded contact angle). A kind without
   /// one has no equilibrium for an axial load: check_axial_load_supported refuses it.
   bool axial_load;
-  /// Carries [housing]: the outer ring on its own support (housing.h). A kind that does not keeps
-  /// its outer ring on the ground: check_housing_supported refuses the table.
-  bool housing;
   /// The contact angle the model's kinematics use [rad]: the free one, or the loaded one of the
   /// axial static state.
   double (*contact_angle)(const ModelInputs&);
@@ -60,7 +57,18 @@ struct ModelDescriptor {
   /// make_integrator's RK4, which runs the kind when this is nullptr or the model is wrapped by
   /// [housing]); for a dynamic kind whose force is hot. It integrates only the kind's own model.
   std::unique_ptr<Integrator> (*rk4)(const IntegratorSettings&) = nullptr;
+  /// Carries [housing]: the kind's model on the outer ring's support (housing.h) built from the
+  /// inputs without the ring loads, the ring loads, the housing and the relative static start (as
+  /// make_housing_model, with the kind's force statically dispatched). nullptr: the kind keeps its
+  /// outer ring on the ground, and check_housing_supported refuses the table.
+  std::unique_ptr<BearingModel> (*housed)(const ModelInputs& bearing_only, const RingLoad& load,
+                                          const Housing& housing,
+                                          std::vector<double> start) = nullptr;
+  /// RK4 with the housed model's force statically dispatched (as `rk4`, for `housed`'s model).
+  std::unique_ptr<Integrator> (*housed_rk4)(const IntegratorSettings&) = nullptr;
 
+  /// Whether this kind carries [housing].
+  bool housing() const { return housed != nullptr; }
   /// Whether this kind reads the case table `name`.
   bool owns(const std::string& name) const;
 };
@@ -87,7 +95,7 @@ void check_defects_supported(ModelKind kind, const std::vector<LocalDefect>& def
 /// it.
 void check_axial_load_supported(ModelKind kind, double axial_load, double radial_load);
 
-/// [housing] (`housing.enabled`) needs a kind that carries it (ModelDescriptor::housing). Throws
+/// [housing] (`housing.enabled`) needs a kind that carries it (ModelDescriptor::housed). Throws
 /// InputError naming [housing], the kind, why it cannot, and the kinds that can.
 void check_housing_supported(ModelKind kind, const Housing& housing);
 

@@ -42,6 +42,7 @@
 // DOFs {"x", "y", "z"} [m]; the analytic Jacobian is provided.
 
 #include <memory>
+#include <vector>
 
 #include "bearing/models/bearing_model.h"
 #include "bearing/models/model_inputs.h"
@@ -82,5 +83,15 @@ std::unique_ptr<BearingModel> make_three_dof_model(const ModelInputs& inputs);
 /// the 2-DOF model: the same bits as make_integrator(settings); it integrates only a model of
 /// make_three_dof_model (std::logic_error for any other system).
 std::unique_ptr<Integrator> make_three_dof_rk4(const IntegratorSettings& settings);
+
+/// The 3-DOF model of `bearing_only` (the inputs without the ring loads) on the housing
+/// (housing.h: make_housing_model's model, with this kind's force statically dispatched).
+std::unique_ptr<BearingModel> make_three_dof_housed(const ModelInputs& bearing_only,
+                                                    const RingLoad& load, const Housing& housing,
+                                                    std::vector<double> start);
+
+/// RK4 with that model's force inlined (static_rk4.h); its integrate() takes only a model of
+/// make_three_dof_housed.
+std::unique_ptr<Integrator> make_three_dof_housed_rk4(const IntegratorSettings& settings);
 
 }  // namespace bearing

@@ -38,41 +38,67 @@ struct Rk4Arrays {
 
 namespace rk4_inline {
 
+// The arrays never overlap (one allocation, n apart): restrict on the loops' parameters lets the
+// vectoriser widen them in rk4_wide.cc without runtime overlap checks (GCC honours it on
+// parameters, not on local pointers). The arithmetic is unchanged.
+
 /// a ← M⁻¹ a (w = 1/m per DOF).
-inline void scale(double* a, const double* w, int n) {
+inline void scale(double* __restrict a, const double* __restrict w, int n) {
   for (int i = 0; i < n; ++i) a[i] *= w[i];
 }
+inline void stage2_loop(const double* __restrict q, const double* __restrict v,
+                        const double* __restrict a, double* __restrict qs, double* __restrict vs,
+                        int n, double hh) {
+  for (int i = 0; i < n; ++i) {
+    qs[i] = q[i] + hh * v[i];
+    vs[i] = v[i] + hh * a[i];
+  }
+}
+inline void stage3_loop(const double* __restrict q, const double* __restrict v,
+                        const double* __restrict a, const double* __restrict as,
+                        double* __restrict qs, double* __restrict vs, double* __restrict sq,
+                        double* __restrict sv, int n, double hh) {
+  for (int i = 0; i < n; ++i) {
+    sq[i] = v[i] + 2.0 * vs[i];
+    sv[i] = a[i] + 2.0 * as[i];
+    qs[i] = q[i] + hh * vs[i];
+    vs[i] = v[i] + hh * as[i];
+  }
+}
+inline void stage4_loop(const double* __restrict q, const double* __restrict v,
+                        const double* __restrict as, double* __restrict qs, double* __restrict vs,
+                        double* __restrict sq, double* __restrict sv, int n, double h) {
+  for (int i = 0; i < n; ++i) {
+    sq[i] += 2.0 * vs[i];
+    sv[i] += 2.0 * as[i];
+    qs[i] = q[i] + h * vs[i];
+    vs[i] = v[i] + h * as[i];
+  }
+}
+inline void finish_loop(const double* __restrict sq, const double* __restrict sv,
+                        const double* __restrict vs, const double* __restrict as,
+                        double* __restrict q, double* __restrict v, int n, double h6) {
+  for (int i = 0; i < n; ++i) {
+    q[i] += h6 * (sq[i] + vs[i]);
+    v[i] += h6 * (sv[i] + as[i]);
+  }
+}
+
 /// The second stage's state from a₁.
 inline void stage2(const Rk4Arrays& r, double hh) {
-  for (int i = 0; i < r.n; ++i) {
-    r.qs[i] = r.q[i] + hh * r.v[i];
-    r.vs[i] = r.v[i] + hh * r.a[i];
-  }
+  stage2_loop(r.q, r.v, r.a, r.qs, r.vs, r.n, hh);
 }
 /// The third stage's state from a₂.
 inline void stage3(const Rk4Arrays& r, double hh) {
-  for (int i = 0; i < r.n; ++i) {
-    r.sq[i] = r.v[i] + 2.0 * r.vs[i];
-    r.sv[i] = r.a[i] + 2.0 * r.as[i];
-    r.qs[i] = r.q[i] + hh * r.vs[i];
-    r.vs[i] = r.v[i] + hh * r.as[i];
-  }
+  stage3_loop(r.q, r.v, r.a, r.as, r.qs, r.vs, r.sq, r.sv, r.n, hh);
 }
 /// The fourth stage's state from a₃.
 inline void stage4(const Rk4Arrays& r, double h) {
-  for (int i = 0; i < r.n; ++i) {
-    r.sq[i] += 2.0 * r.vs[i];
-    r.sv[i] += 2.0 * r.as[i];
-    r.qs[i] = r.q[i] + h * r.vs[i];
-    r.vs[i] = r.v[i] + h * r.as[i];
-  }
+  stage4_loop(r.q, r.v, r.as, r.qs, r.vs, r.sq, r.sv, r.n, h);
 }
 /// The step's end from a₄.
 inline void finish(const Rk4Arrays& r, double h6) {
-  for (int i = 0; i < r.n; ++i) {
-    r.q[i] += h6 * (r.sq[i] + r.vs[i]);
-    r.v[i] += h6 * (r.sv[i] + r.as[i]);
-  }
+  finish_loop(r.sq, r.sv, r.vs, r.as, r.q, r.v, r.n, h6);
 }
 
 }  // namespace rk4_inline
@@ -121,6 +147,7 @@ struct InterfaceForce {
     system.force_with(workspace, t, q, v, f);
   }
   void ahead(const std::vector<Rk4Step>& /*plan*/, double /*t_out*/) const {}
+  int wide_from(int n) const { return n >= kRk4WideDofs ? 0 : n; }
 };
 
 /// One integrate() of RK4 with step `dt` [s] and the blow-up bound `max_displacement` [m]
@@ -129,7 +156,12 @@ struct InterfaceForce {
 /// MechanicalSystem::force_with does for `system`, whose dofs() and mass() are used; before each
 /// segment between output times, force.ahead(plan, t_out) is told the segment's steps (and may
 /// prepare what depends on t alone; InterfaceForce does nothing). kDofs > 0: the system's DOF
-/// count known at compile time (the stage loops unrolled); 0: system.dofs().
+/// count known at compile time (the stage loops unrolled); 0: system.dofs(), and
+/// force.wide_from(n) says from which DOF on the stage loops run vectorised (rk4_wide), the DOFs
+/// before it one at a time (rk4_inline): where the force stores its entries one by one, a vector
+/// load across several of them would miss store forwarding, and where it stores them a vector at
+/// a time (the housed model's support), the stage loops' vectors must start where the force's
+/// do. The arithmetic is element by element either way: the same bits.
 template <int kDofs, class Force>
 IntegrationStats rk4_loop(const std::string& method, double dt, double max_displacement,
                           const MechanicalSystem& system, double t0, const std::vector<double>& q0,
@@ -156,11 +188,15 @@ IntegrationStats rk4_loop(const std::string& method, double dt, double max_displ
   check_state(method, t0, 0, dt, q, v, n, bound);
   if (output_times.empty()) return stats;
 
-  const Rk4Arrays r{q, v, a, qs, vs, as, sq, sv, n};
-  const bool wide = kDofs == 0 && n >= kRk4WideDofs;
+  const int head = kDofs > 0 ? n : force.wide_from(n);  // [0, head) inline, [head, n) wide
+  const Rk4Arrays r{q, v, a, qs, vs, as, sq, sv, head};
+  const Rk4Arrays tail{q + head,  v + head,  a + head,  qs + head, vs + head,
+                       as + head, sq + head, sv + head, n - head};
+  const bool wide = tail.n > 0;
   const auto acceleration = [&](double t, const double* qq, const double* vv, double* aa) {
     force(t, qq, vv, aa);
-    wide ? rk4_wide::scale(aa, w, n) : rk4_inline::scale(aa, w, n);
+    rk4_inline::scale(aa, w, head);
+    if (wide) rk4_wide::scale(aa + head, w + head, tail.n);
   };
 
   ProgressThrottle report(progress, t0, output_times.back());
@@ -178,14 +214,18 @@ IntegrationStats rk4_loop(const std::string& method, double dt, double max_displ
         acceleration(t, q, v, a);
         ++evaluations;
       }
-      wide ? rk4_wide::stage2(r, hh) : rk4_inline::stage2(r, hh);
+      rk4_inline::stage2(r, hh);
+      if (wide) rk4_wide::stage2(tail, hh);
       acceleration(s.mid, qs, vs, as);
-      wide ? rk4_wide::stage3(r, hh) : rk4_inline::stage3(r, hh);
+      rk4_inline::stage3(r, hh);
+      if (wide) rk4_wide::stage3(tail, hh);
       acceleration(s.mid, qs, vs, as);
-      wide ? rk4_wide::stage4(r, h) : rk4_inline::stage4(r, h);
+      rk4_inline::stage4(r, h);
+      if (wide) rk4_wide::stage4(tail, h);
       acceleration(s.end, qs, vs, as);
       const double h6 = h / 6.0;
-      wide ? rk4_wide::finish(r, h6) : rk4_inline::finish(r, h6);
+      rk4_inline::finish(r, h6);
+      if (wide) rk4_wide::finish(tail, h6);
       evaluations += 3;
       a_current = false;
       t = s.next;
