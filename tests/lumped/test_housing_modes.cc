@@ -252,6 +252,52 @@ TEST(HousingModes, StaticStartIsAnEquilibrium) {
   EXPECT_NEAR(q0[2], (0.3 * 40 + 0.25 * -500) / (w1 * w1), 1e-15);
 }
 
+// The ball channels and the contacts' switching functions are the bearing's at the rings'
+// relative position, q − q_s with the seat displaced by its modes (housing.h), for the resonator
+// and the modes alike: against the bearing model built without the housing, at that position.
+TEST(HousingModes, BallChannelsAreTheBearingsAtTheRelativePosition) {
+  TempDir dir;
+  const std::string file =
+      write_modes(dir.path() + "/three.json", {1800.0, 3100.0, 5200.0}, {0.3, -0.2, 0.1},
+                  {0.25, 0.4, -0.15}, {0.1, 0.2, 0.3}, {0.3, 0.2, 0.1}, "top");
+  for (const std::vector<std::string>& housing :
+       {std::vector<std::string>{"housing.modes=" + file},
+        std::vector<std::string>{"housing.mass=2kg", "housing.frequency=3kHz"}}) {
+    std::vector<std::string> sets{"operation.load=[0, -500]", "operation.speed=0rpm"};
+    sets.insert(sets.end(), housing.begin(), housing.end());
+    const Case c = case_of(sets);
+    const auto model = make_model(c);
+    ModelInputs in = model_inputs(c);
+    in.housing = Housing{};
+    const auto bearing = make_dynamic_model(c.model.kind, in);
+    std::vector<double> q = model->initial_displacement();
+    for (std::size_t i = 2; i < q.size(); ++i) q[i] += 1e-7 * static_cast<double>(i);  // the seat
+    const int Z = model->balls();
+    std::vector<double> loads(Z), approaches(Z), expected(Z), expected_approaches(Z), g(Z), h(Z);
+    model->ball_loads(0.0, q.data(), loads.data());
+    model->ball_approaches(0.0, q.data(), approaches.data());
+    model->switching_functions(0.0, q.data(), g.data());
+    // q_r = q − q_s, the seat q_s = Σ_k s_k η_k (the modes, s_k as written to the file above) or
+    // (x_h, y_h) (the resonator).
+    double sx = 0, sy = 0;
+    if (housing.size() == 1) {
+      const double s_x[] = {0.3, -0.2, 0.1}, s_y[] = {0.25, 0.4, -0.15};
+      for (int k = 0; k < 3; ++k) sx += s_x[k] * q[2 + k], sy += s_y[k] * q[2 + k];
+    } else {
+      sx = q[2], sy = q[3];
+    }
+    const std::vector<double> qr{q[0] - sx, q[1] - sy};
+    bearing->ball_loads(0.0, qr.data(), expected.data());
+    bearing->ball_approaches(0.0, qr.data(), expected_approaches.data());
+    bearing->switching_functions(0.0, qr.data(), h.data());
+    for (int j = 0; j < Z; ++j) {
+      EXPECT_NEAR(loads[j], expected[j], 1e-9 * (1 + expected[j])) << housing[0] << " ball " << j;
+      EXPECT_NEAR(approaches[j], expected_approaches[j], 1e-18) << housing[0] << " ball " << j;
+      EXPECT_NEAR(g[j], h[j], 1e-18) << housing[0] << " ball " << j;
+    }
+  }
+}
+
 std::string input_error(const std::vector<std::string>& sets) {
   try {
     make_model(case_of(sets));

@@ -49,6 +49,10 @@ struct SupportKernels {
 
 /// The kernels of `loop` (simd: the best instruction set of this CPU).
 SupportKernels support_kernels(ContactLoop loop);
+/// The kernels of every instruction set this build holds that this CPU runs, named, for the
+/// tests that check each against the scalar reference (switches Highway's dispatch while it runs:
+/// not while other threads run models).
+std::vector<std::pair<std::string, SupportKernels>> support_kernels_per_target();
 
 /// The support's DOFs (housing.cc's opening): M uncoupled DOFs p_k of mass m_k, stiffness k_k
 /// and damping c_k that move the seat by (sx_k, sy_k) p_k. Arrays of M entries.
@@ -289,7 +293,13 @@ class HousedModel final : public BearingModel {
     vr[1] -= seat[3];
   }
   // The same for q alone.
-  void relative(const double* q, double* qr) const { relative(q, q, qr, qr); }
+  void relative(const double* q, double* qr) const {
+    std::array<double, 4> seat{};
+    seat_motion(support_, q + n_, q + n_, seat.data());
+    std::copy(q, q + n_, qr);
+    qr[0] -= seat[0];
+    qr[1] -= seat[1];
+  }
 
   // The (n + M)² Jacobian from the bearing's n² one `b` and the support's own coefficients
   // (k for ∂/∂q, c for ∂/∂v); housing.cc's opening.

@@ -12,6 +12,9 @@
 
 #include <algorithm>
 #include <cstddef>
+#include <string>
+#include <utility>
+#include <vector>
 
 #include "housed_model.h"
 
@@ -140,6 +143,18 @@ SupportKernels support_kernels(ContactLoop loop) {
 #endif
   (void)loop;
   return {&seat_sums_scalar, &support_forces_scalar};
+}
+
+std::vector<std::pair<std::string, SupportKernels>> support_kernels_per_target() {
+  std::vector<std::pair<std::string, SupportKernels>> out;
+#ifndef BEARING_WITHOUT_HIGHWAY
+  for (const auto target : hwy::SupportedAndGeneratedTargets()) {
+    hwy::SetSupportedTargetsForTest(target);
+    out.emplace_back(hwy::TargetName(target), HWY_DYNAMIC_DISPATCH(SupportKernelsImpl)());
+  }
+  hwy::SetSupportedTargetsForTest(0);  // back to what the CPU supports
+#endif
+  return out;
 }
 
 }  // namespace bearing::detail
