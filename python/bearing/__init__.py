@@ -29,6 +29,8 @@ API
 ``stiffness`` the bearing's 5x5 stiffness at the case's operating point (``bearing-sim stiffness``)
 ``ball_pass_stiffness`` that stiffness over one ball pass: its samples, mean, range and BPFO
               harmonics (the parametric excitation)
+``modes``     a structure's natural modes (``bearing-fem modes``): frequencies, seat and sensor
+              shapes, as ``[housing] modes`` reads them
 ``run``       ``bearing-sim run``: a ``Result`` (``.t``, channels, ``.spectrum``, ``.summary``)
 ``sweep``     ``bearing-sim sweep``: the rows of sweep.csv (list of dicts or pandas DataFrame)
 ``analyse``   a measured record (NumPy array, SI) analysed: an ``Analysis`` (``.summary``, spectra)
@@ -74,7 +76,7 @@ else:
         "why and what to change (bearing-sim exits with status 3).")
 
 __all__ = ["Case", "Result", "Analysis", "InputError", "SolverError", "info", "stiffness",
-           "ball_pass_stiffness", "run", "sweep", "analyse", "presets", "keys", "keys_help"]
+           "ball_pass_stiffness", "modes", "run", "sweep", "analyse", "presets", "keys", "keys_help"]
 
 
 def _case(case):
@@ -149,6 +151,35 @@ def ball_pass_stiffness(case, samples=32):
     >>> bp["max"][1, 1] - bp["min"][1, 1], bp["harmonics"][0, 1, 1]   # k_yy ripple [N/m]
     """
     return _bearing.ball_pass_stiffness(_case(case), _operator.index(samples))
+
+
+def modes(path):
+    """A structure's natural modes as ``bearing-fem modes`` wrote them: a dict (float64, SI).
+
+    ``path``: the folder of ``bearing-fem modes ... --out DIR``, or its ``modes.json``. Read and
+    checked by the C++ reader that ``[housing] modes = "..."`` uses (InputError naming the key,
+    as bearing-sim would). Shapes are mass-normalised (phi^T M phi = 1 kg), so a shape value is a
+    displacement per unit modal coordinate [kg^-1/2]; the frame is the bearing's (z the shaft's
+    axis, y up). Keys:
+
+    - ``frequencies`` [M]: the elastic modes [Hz], ascending (rigid-body modes are never there);
+    - ``seat`` [M, 3]: the seat's rigid translation x, y, z per mode [kg^-1/2], what drives and
+      moves the bearing's outer ring;
+    - ``sensors``: name -> {``point`` [3] (m, the surface point used), ``shape`` [M, 3]};
+    - ``free``: whether no surface is held (free-free; such a structure cannot carry a bearing);
+    - ``file``: the modes.json read;
+    - ``document``: the whole file as a dict (tilts, fit residuals, effective masses, mesh, solver,
+      orthogonality: fem/README.md, "Structure modes").
+
+    >>> m = bearing.modes("out/shield")
+    >>> m["frequencies"][:3], m["seat"][0], m["sensors"]["top"]["shape"][0]
+    """
+    import json as _json
+    file = _os.path.join(path, "modes.json") if _os.path.isdir(path) else path
+    out = _bearing.read_modes(file)
+    with open(file, encoding="utf-8") as f:
+        out["document"] = _json.load(f)
+    return out
 
 
 def run(case):

@@ -24,6 +24,7 @@
 #include "bearing/presets.h"
 #include "bearing/simulation.h"
 #include "bearing/stiffness.h"
+#include "bearing/structure_modes.h"
 #include "bearing/sweep.h"
 #include "bearing/sweep_columns.h"
 #include "bearing/units.h"
@@ -305,6 +306,34 @@ py::dict ball_pass_stiffness(const CaseHandle& c, int samples) {
   return out;
 }
 
+// bearing.modes: a modes file of bearing-fem modes read by the C++ reader (the same checks as
+// [housing] modes), its per-mode arrays as NumPy arrays [M, 3].
+py::dict read_modes(const std::string& path) {
+  const bearing::StructureModes m =
+      bearing::read_structure_modes(path, "bearing.modes(\"" + path + "\")");
+  const auto xyz = [&](const std::array<std::vector<double>, 3>& shape) {
+    py::array_t<double> a({static_cast<py::ssize_t>(m.count()), py::ssize_t{3}});
+    auto w = a.mutable_unchecked<2>();
+    for (int k = 0; k < m.count(); ++k)
+      for (int i = 0; i < 3; ++i) w(k, i) = shape[static_cast<std::size_t>(i)][k];
+    return a;
+  };
+  py::dict sensors;
+  for (const bearing::StructureSensor& s : m.sensors) {
+    py::dict d;
+    d["point"] = py::array_t<double>(3, s.point.data());
+    d["shape"] = xyz(s.shape);
+    sensors[py::str(s.name)] = d;
+  }
+  py::dict out;
+  out["file"] = m.path;
+  out["free"] = m.free;
+  out["frequencies"] = py::array_t<double>(m.frequencies.size(), m.frequencies.data());
+  out["seat"] = xyz(m.seat);
+  out["sensors"] = sensors;
+  return out;
+}
+
 void bind_case(py::module_& m);
 void bind_result(py::module_& m);
 
@@ -350,6 +379,9 @@ PYBIND11_MODULE(_bearing, m) {
         py::arg("samples") = bearing::kBallPassSamples,
         "K over one ball pass at `samples` cage angles (bearing/ball_pass_stiffness.h), SI: a "
         "dict of NumPy arrays.");
+  m.def("read_modes", &read_modes, py::arg("path"),
+        "A modes file of bearing-fem modes (bearing/structure_modes.h), SI: a dict of NumPy "
+        "arrays.");
   m.def("run", &run_case, py::arg("case"),
         "Simulates and analyses a case as `bearing-sim run` does (GIL released).");
   m.def("sweep", &sweep, py::arg("case"), py::arg("vary"), py::arg("jobs") = 0,

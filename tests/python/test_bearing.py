@@ -252,6 +252,50 @@ class Stiffness(unittest.TestCase):
         self.assertIn("operation.moment", str(e.exception))
 
 
+MODES_JSON = {
+    "format": "bearing-fem modes", "version": 1, "boundary": {"free": False, "fixed": ["bolts"]},
+    "frequencies": [1800.0, 3100.0, 5200.0],
+    "seat": {"x": [0.3, -0.2, 0.1], "y": [0.25, 0.4, -0.15], "z": [0.0, 0.01, 0.0],
+             "tilt_x": [0.0, 1.0, 0.0]},
+    "sensors": [{"name": "top", "point": [0.0, 0.06, 0.0], "x": [0.1, 0.2, 0.3],
+                 "y": [0.3, 0.2, 0.1], "z": [0.0, 0.0, 0.05]}]}
+
+
+class Modes(unittest.TestCase):
+    """bearing.modes reads a modes folder as [housing] modes does; a run on it gives the sensor's
+    channels, as bearing-sim run writes them."""
+
+    def test_modes_folder_and_its_run(self):
+        with tempfile.TemporaryDirectory() as tmp:
+            (pathlib.Path(tmp) / "modes.json").write_text(json.dumps(MODES_JSON))
+            m = bearing.modes(tmp)
+            self.assertEqual(m["frequencies"].tolist(), MODES_JSON["frequencies"])
+            self.assertEqual(m["seat"].shape, (3, 3))
+            self.assertEqual(m["seat"][:, 1].tolist(), MODES_JSON["seat"]["y"])
+            self.assertEqual(m["sensors"]["top"]["shape"][:, 2].tolist(), [0.0, 0.0, 0.05])
+            self.assertEqual(m["sensors"]["top"]["point"].tolist(), [0.0, 0.06, 0.0])
+            self.assertFalse(m["free"])
+            self.assertEqual(m["document"]["seat"]["tilt_x"], [0.0, 1.0, 0.0])
+            self.assertEqual(bearing.modes(str(pathlib.Path(tmp) / "modes.json"))["file"], m["file"])
+            sets = [("solver.transient", "0.01 s"), ("solver.duration", "0.05 s"),
+                    ("housing.modes", str(pathlib.Path(tmp) / "modes.json"))]
+            result = bearing.run(case_with(None, sets))
+            with tempfile.TemporaryDirectory() as out:
+                cli("run", "--quiet", "--out", out, *set_args(sets))
+                header = (pathlib.Path(out) / "response.csv").open().readline().strip().split(",")
+                summary = json.loads((pathlib.Path(out) / "summary.json").read_text())
+            for name in ("x_top", "vy_top", "az_top"):
+                self.assertIn(name, header)
+                self.assertIn(name, result.summary["channels"])
+            self.assertEqual(result.summary["housing"], summary["housing"])
+            self.assertEqual(summary["housing"]["frequencies"], MODES_JSON["frequencies"])
+            bad = dict(MODES_JSON, frequencies=[3100.0, 1800.0, 5200.0])
+            (pathlib.Path(tmp) / "modes.json").write_text(json.dumps(bad))
+            with self.assertRaises(bearing.InputError) as e:
+                bearing.modes(tmp)
+            self.assertIn("frequencies[1] = 1800 Hz: below frequencies[0] = 3100 Hz", str(e.exception))
+
+
 class Errors(unittest.TestCase):
     def cli_error(self, args, status):
         p = cli(*args, check=False)
