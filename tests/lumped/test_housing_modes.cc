@@ -165,10 +165,12 @@ TEST(HousingModes, SensorsFollowTheModalFrequencyResponse) {
     stub.omega = two_pi * f;
     const auto model =
         make_housing_model(std::make_unique<StubBearing>(stub), RingLoad{}, h, {0.0, 0.0});
-    const std::vector<SensorRow> rows = model->sensor_rows();
-    ASSERT_EQ(rows.size(), 3u);
-    EXPECT_EQ(rows[0].name, "x_top");
-    EXPECT_EQ(rows[1].name, "y_top");
+    const std::vector<SensorRow> all = model->sensor_rows();
+    ASSERT_EQ(all.size(), 5u);  // x_seat, y_seat, then the sensor's x, y, z
+    EXPECT_EQ(all[0].name, "x_seat");
+    EXPECT_EQ(all[2].name, "x_top");
+    EXPECT_EQ(all[3].name, "y_top");
+    const std::vector<SensorRow> rows(all.begin() + 2, all.end());
     const double settle = 30.0 / (zeta_min * two_pi * f_min),
                  dt = 1.0 / (400.0 * std::max(f, f_max));
     const Samples r =
@@ -287,6 +289,17 @@ TEST(HousingModes, BallChannelsAreTheBearingsAtTheRelativePosition) {
       sx = q[2], sy = q[3];
     }
     const std::vector<double> qr{q[0] - sx, q[1] - sy};
+    if (housing.size() == 1) {  // the seat's channels are that seat motion
+      const std::vector<SensorRow> rows = model->sensor_rows();
+      double x = 0, y = 0;
+      for (const auto& [dof, weight] : rows[0].terms)
+        x += weight * q[static_cast<std::size_t>(dof)];
+      for (const auto& [dof, weight] : rows[1].terms)
+        y += weight * q[static_cast<std::size_t>(dof)];
+      EXPECT_EQ(rows[0].name + rows[1].name, "x_seaty_seat");
+      EXPECT_NEAR(x, sx, 1e-21);
+      EXPECT_NEAR(y, sy, 1e-21);
+    }
     bearing->ball_loads(0.0, qr.data(), expected.data());
     bearing->ball_approaches(0.0, qr.data(), expected_approaches.data());
     bearing->switching_functions(0.0, qr.data(), h.data());
@@ -335,6 +348,9 @@ TEST(HousingModes, TableRulesNameTheKey) {
   EXPECT_TRUE(has(input_error({modes, "model.kind=balls"}), "[housing]: model.kind = \"balls\""));
   EXPECT_TRUE(has(input_error({"housing.modes=" + dir.path() + "/none.json"}), "cannot read"));
   EXPECT_TRUE(has(input_error({"housing.damping_ratio=0.02"}), "housing.mass is missing"));
+  const std::string seat = write_modes(dir.path() + "/seat.json", {1800.0}, {0.3}, {0.25}, {0.1},
+                                       {0.3}, "seat");
+  EXPECT_TRUE(has(input_error({"housing.modes=" + seat}), "a sensor is named \"seat\""));
 }
 
 // The sensors a run writes: all of the file's by default, or those named; x, y, z with their
@@ -355,8 +371,12 @@ TEST(HousingModes, ChannelsAndRoundTrip) {
   const Response r = simulate(case_of({"housing.modes=" + path, "solver.duration=0.002",
                                        "solver.transient=0.001"}))
                          .response;
-  for (const char* ch : {"x_top", "vy_top", "az_top", "x_side", "ay_side", "vz_side"})
+  for (const char* ch : {"x_top", "vy_top", "az_top", "x_side", "ay_side", "vz_side", "x_seat",
+                         "vy_seat", "ay_seat"})
     EXPECT_NO_THROW(r.channel(ch)) << ch;
+  // The seat's channels are its motion Σ s_k η_k: a sensor whose shapes are the seat's reads the
+  // same (top's x is mode 1 alone, the seat's x 0.1 η_1 + 0.2 η_2, so they differ).
+  EXPECT_NE(r.channel("x_seat"), r.channel("x_top"));
   const Response one = simulate(case_of({"housing.modes=" + path, "housing.sensors=[\"side\"]",
                                          "solver.duration=0.002", "solver.transient=0.001"}))
                            .response;

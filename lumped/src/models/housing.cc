@@ -81,6 +81,10 @@ void check_housing(const Housing& h) {
       throw InputError("housing.damping_ratio[" + std::to_string(k) +
                        "] = " + format_number(h.damping_ratios[k]) + ": " +
                        limits::housing_damping_ratio.allowed);
+  if (m.sensor("seat"))
+    throw InputError(file +
+                     ": a sensor is named \"seat\", which names the seat's own channels (x_seat, "
+                     "y_seat, the outer ring's motion); rename it in the structure file");
   for (const std::string& name : h.sensors)
     if (!m.sensor(name)) {
       std::string known;
@@ -121,6 +125,13 @@ Support structure_modes(const Housing& h) {
   }
   s.sx = m.seat[0];
   s.sy = m.seat[1];
+  // The seat's own motion, the outer ring's (x_seat, y_seat: the orbit relative to it), then the
+  // sensors'.
+  for (const auto& [name, shape] : {std::pair{"x_seat", &s.sx}, std::pair{"y_seat", &s.sy}}) {
+    SensorRow row{name, {}};
+    for (int k = 0; k < s.dofs; ++k) row.terms.emplace_back(k, (*shape)[k]);
+    s.sensors.push_back(std::move(row));
+  }
   static const char* const kAxes[] = {"x", "y", "z"};
   for (const StructureSensor* sensor : h.written_sensors())
     for (int a = 0; a < 3; ++a) {

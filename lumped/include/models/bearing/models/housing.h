@@ -67,7 +67,8 @@
 // resonator above is the case of two modes at f_h with s = (1/√m_h, 0) and (0, 1/√m_h), η = √m_h
 // q_h (a modes file holding them reproduces it: tests/lumped/test_housing_modes.cc). A sensor
 // ψ (a point of the structure) moves by u = Σ_k ψ_k η_k, and the run writes its x, y, z
-// displacement, velocity and acceleration: x_<sensor>, vx_<sensor>, ax_<sensor>, …
+// displacement, velocity and acceleration: x_<sensor>, vx_<sensor>, ax_<sensor>, …; and the
+// seat's own x, y motion q_s as x_seat, y_seat (the outer ring's: "seat" names no sensor).
 // Choices, stated: the seat moves in x and y only (its axial motion and tilts, in the file, are
 // left out: the rings of the 2-DOF and 3-DOF models do not tilt, and the 3-DOF model's axial
 // force includes the applied F_z, which a moving seat would have to carry statically); the outer
