@@ -11,7 +11,8 @@ CASE: run (default case: time, orbit, spectrum), run_outputs (envelope, ball loa
 output.format = "npy"), run_3dof (the 3-DOF model with an axial load: z, az in time,
 spectrum and envelope), run_balls (seed 004's ball-DOF model with an axial load and every
 per-ball output: z, az and the ball_channels figure), run_housing (the sensor figure of a case
-with [housing]), sweep2 (2 x 2: heat maps), sweep1 (one key
+with [housing]), run_modes (a bearing-fem modes folder's figure, and a run on its modes: the
+sensor figure, the orbit relative to the seat), sweep2 (2 x 2: heat maps), sweep1 (one key
 with acoustics: lines), contact_example (examples/seed003_6308_calibration_inner, a committed
 bearing-fem output), contact_fem (a fresh bearing-fem contact run; needs --fem),
 calibration_example (examples/seed003_6308_calibration.json and its race folders),
@@ -387,6 +388,64 @@ def case_run_housing(args, plot):
                np.column_stack([(response["x"] - response["x_housing"])[steady] * um,
                                 (response["y"] - response["y_housing"])[steady] * um])),
           "orbit: with a housing, the ring relative to it")
+
+
+MODES = {"format": "bearing-fem modes", "version": 1, "structure": "plate.toml",
+         "boundary": {"free": False, "fixed": ["edge"]},
+         "frequencies": [1800.0, 3100.0, 5200.0],
+         "seat": {"x": [0.3, -0.2, 0.1], "y": [0.25, 0.4, -0.15], "z": [0.0, 0.01, 0.0],
+                  "tilt_x": [0.0, 1.5, 0.0], "tilt_y": [2.0, 0.0, -1.0]},
+         "sensors": [{"name": "top", "point": [0.0, 0.06, 0.0], "x": [0.1, 0.2, 0.3],
+                      "y": [0.3, 0.2, 0.1], "z": [0.0, 0.0, 0.05]}],
+         "mesh": {"elements": 1234, "dofs": 5678, "fe_degree": 2}}
+
+
+def case_run_modes(args, plot):
+    """A modes folder (bearing-fem modes' modes.json): the modes figure's bars are the file's
+    seat translations, tilts and sensor shapes; a run on those modes ([housing] modes): the sensor
+    figure draws ay and the sensor's ay_top with the structure's frequencies marked, the orbit is
+    the ring relative to the seat (x - x_seat)."""
+    modes_dir = os.path.join(args.work, "modes")
+    os.makedirs(modes_dir)
+    with open(os.path.join(modes_dir, "modes.json"), "w") as f:
+        json.dump(MODES, f)
+    result = plot_cli(args, modes_dir)
+    check(result.returncode == 0, "bearing-plot exits 0 on a modes folder (%s)" % result.stderr)
+    check_files(plot, os.path.join(modes_dir, "plots"), ["modes"],
+                sizes={"modes": (13.0, 2.9 + 2.6 * 3)})
+    fig = plot.modes_figure(plot.load_modes(modes_dir))
+    for gid, values in (("modes_seat:x", MODES["seat"]["x"]), ("modes_seat:z", MODES["seat"]["z"]),
+                        ("modes_tilt:tilt_y", MODES["seat"]["tilt_y"]),
+                        ("modes_sensor_top:y", MODES["sensors"][0]["y"])):
+        heights = [a.get_height() for a in fig.findobj(lambda a: a.get_gid() == gid)]
+        check(heights == values, "modes: the bars %s are the file's %s" % (gid, values))
+
+    folder = os.path.join(args.work, "run_modes")
+    run_sim(args, "run", "--out", folder, *SHORT, "--set", "operation.load=[0, -500]",
+            "--set", "housing.modes=" + os.path.join(modes_dir, "modes.json"))
+    result = plot_cli(args, folder)
+    check(result.returncode == 0, "bearing-plot exits 0 (%s)" % result.stderr.strip())
+    check_files(plot, os.path.join(folder, "plots"), ["time", "orbit", "spectrum", "sensor"])
+    figures = plot.run_figures(plot.load_run(folder))
+    summary = json.load(open(os.path.join(folder, "summary.json")))
+    response = csv_columns(os.path.join(folder, "response.csv"))
+    t = response["t"]
+    for c in ("ay", "ay_top"):
+        zoom = artist(figures["sensor"], "sensor_time:" + c).get_xydata()
+        n = len(zoom)
+        check(n > 10 and same(zoom, np.column_stack([t[-n:], response[c][-n:]])),
+              "sensor: %s over the last ball passes equals response.csv" % c)
+    marked = sorted({round(line.get_xdata()[0], 6) for line in figures["sensor"].axes[2].lines
+                     if line.get_linestyle() == ":"})
+    fmax = figures["sensor"].axes[2].get_xlim()[1]
+    check(marked == [f for f in MODES["frequencies"] if f <= fmax],
+          "sensor: the structure's frequencies up to %.4g Hz are marked (%s)" % (fmax, marked))
+    steady = t >= summary["case"]["transient"]
+    um = plot.DISPLAY["m"][1]
+    check(same(artist(figures["orbit"], "orbit").get_xydata(),
+               np.column_stack([(response["x"] - response["x_seat"])[steady] * um,
+                                (response["y"] - response["y_seat"])[steady] * um])),
+          "orbit: on the structure's modes, the ring relative to the seat")
 
 
 # --- sweeps -----------------------------------------------------------------------------------

@@ -18,9 +18,10 @@ FOLDER is recognised by its files:
   or an ``[acoustics]`` ball source, and for ``balls`` ``output.ball_dynamics``): each per-ball
   channel d_j, r_j, vr_j, wb_j, Qo_j, Fi_j, Fo_j of every ball in time; ``spl`` (with
   ``[acoustics]``): the SPL per microphone (total, ring, balls) and p(t);
-  ``sensor`` (with ``[housing]``): the housing's ay_housing beside the ring's ay over the last
-  ball passes, both spectra with f_h marked, and each one's cumulative energy share against
-  frequency (the orbit is then the ring relative to the housing);
+  ``sensor`` (with ``[housing]``): the housing's ay_housing (with ``[housing] modes``: the first
+  sensor's ay_<name>) beside the ring's ay over the last ball passes, both spectra with f_h (the
+  structure's modes) marked, and each one's cumulative energy share against frequency (the orbit
+  is then the ring relative to the housing, or to the seat);
 - an analysed record (``bearing-sim analyse RECORD --out FOLDER``, ``bearing.analyse(...).write``:
   ``summary.json`` with a ``record`` block and ``spectrum.csv`` or ``.npy``) gives ``spectrum``:
   the record's amplitude spectrum with its named peaks; ``envelope`` (with an envelope band): the
@@ -40,6 +41,10 @@ FOLDER is recognised by its files:
 - a contact output (``bearing-fem contact --out FOLDER``: ``force_approach.csv`` and
   ``contact.json``) gives ``force_approach``: the FE force against the approach on log axes with
   the Hertz law, and the FE/Hertz deviation of force, semi-axes and peak pressure per step;
+- a modes output (``bearing-fem modes STRUCTURE.toml --out FOLDER``: ``modes.json``) gives
+  ``modes``: per mode, the seat's rigid translation (x, y, z), its tilts, and each sensor's
+  displacement (x, y, z), in the mass-normalised shapes' units, against the mode's number and
+  frequency;
 - a calibration (``bearing-fem calibrate CASE --out DIR/STEM.json``: the JSON file, or a folder
   holding one, e.g. ``bearing-verify calibrate``'s) gives ``calibration``: per race the FE force
   against approach (from the race folder DIR/STEM_inner, _outer when it is there) with the
@@ -55,7 +60,8 @@ Library use: ``load_run(folder)``, ``run_figures(run)`` (name -> matplotlib Figu
 ``record_figures(load_analysis(folder))``,
 ``sweep_figures(load_sweep(folder))``, ``stiffness_figure(load_stiffness(folder))``,
 ``contact_figure(load_contact(folder))``,
-``calibration_figure(load_calibration(path))``, ``plot_folder(folder, out, fmt)``; and the panel
+``calibration_figure(load_calibration(path))``, ``modes_figure(load_modes(folder))``,
+``plot_folder(folder, out, fmt)``; and the panel
 functions ``trace_axes``, ``orbit_axes``, ``spectrum_axes``, ``ball_load_axes``, ``spl_axes``,
 ``force_approach_axes``, ``series_axes``, ``mark_lines``, ``sweep_line_axes``,
 ``sweep_heatmap_axes`` that draw plain NumPy arrays on a given Axes. The bearing-verify report
@@ -97,6 +103,7 @@ from .stiffness_figure import (  # noqa: F401
     Stiffness, load_stiffness, panel_terms, stiffness_figure, term_name, term_unit)
 from .contact_figure import contact_figure  # noqa: F401
 from .calibration_figure import calibration_figure  # noqa: F401
+from .modes_figure import Modes, load_modes, modes_figure  # noqa: F401
 from .record_figures import Analysis, load_analysis, record_figures  # noqa: F401
 from .cli import KNOWN_NAMES, default_out, figures_of, main, plot_folder, save  # noqa: F401
 from .report_figures import (  # noqa: F401

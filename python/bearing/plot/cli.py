@@ -14,12 +14,13 @@ from .sweep_figures import sweep_figures
 from .stiffness_figure import load_stiffness, stiffness_figure
 from .contact_figure import contact_figure
 from .calibration_figure import calibration_figure
+from .modes_figure import load_modes, modes_figure
 
 
 # --- folders and the command line ------------------------------------------------------------
 
 KNOWN_NAMES = ("time", "orbit", "spectrum", "envelope", "ball_loads", "ball_channels", "spl",
-               "sensor", "force_approach", "calibration", "stiffness", "sweep_spl") + tuple("sweep_" + s
+               "sensor", "force_approach", "calibration", "stiffness", "modes", "sweep_spl") + tuple("sweep_" + s
                                                                     for s in STATISTICS)
 
 
@@ -37,6 +38,8 @@ def figures_of(folder):
         return kind, {"stiffness": stiffness_figure(load_stiffness(folder))}
     if kind == "calibration":
         return kind, {"calibration": calibration_figure(load_calibration(folder))}
+    if kind == "modes":
+        return kind, {"modes": modes_figure(load_modes(folder))}
     return kind, {"force_approach": contact_figure(load_contact(folder))}
 
 
@@ -85,10 +88,11 @@ def main(argv=None):
                "ball_channels, spl (a 3-DOF run adds z and az to time and spectrum). Analysed "
                "record: spectrum, envelope (with the squared envelope spectrum's fault lines). "
                "Sweep: sweep_<statistic>, sweep_spl. Stiffness: stiffness. Contact: force_approach. "
-               "Calibration: "
-               "calibration.")
+               "Modes (bearing-fem modes): modes. Calibration: calibration. With [housing]: "
+               "sensor.")
     parser.add_argument(
-        "folder", metavar="RUN_DIR|ANALYSIS_DIR|SWEEP_DIR|STIFFNESS_DIR|CONTACT_DIR|CALIBRATION.json")
+        "folder",
+        metavar="RUN_DIR|ANALYSIS_DIR|SWEEP_DIR|STIFFNESS_DIR|CONTACT_DIR|MODES_DIR|CALIBRATION.json")
     parser.add_argument("--out", metavar="DIR", help="where the figures go (default FOLDER/plots; "
                         "for DIR/STEM.json, DIR/STEM_plots)")
     parser.add_argument("--format", choices=FORMATS, default="png", help="file format (png)")

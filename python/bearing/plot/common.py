@@ -25,6 +25,7 @@ SIZES = {
     "record_envelope": (13.0, 8.5),
     "calibration": (13.0, 10.0),
     "stiffness": (15.0, 5.4),
+    "modes": (13.0, 8.0),  # its height follows the panels (modes_figure)
     "report": (7.0, 4.4),  # one panel of the verification report (bearing-verify)
 }
 FORMATS = ("png", "svg", "pdf")

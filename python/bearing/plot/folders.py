@@ -1,4 +1,5 @@
-"""Reading the folders bearing.plot draws: a run, a sweep, a bearing-fem contact output."""
+"""Reading the folders bearing.plot draws: a run, a sweep, a bearing-fem contact output (a modes
+folder: modes_figure.py)."""
 
 import csv
 import json
@@ -7,6 +8,7 @@ import os
 import numpy as np
 
 from .common import DISPLAY, FolderError
+from .modes_figure import is_modes_folder
 
 
 # --- reading ----------------------------------------------------------------------------------
@@ -320,8 +322,8 @@ def _is_calibration(path):
 
 
 def detect(folder):
-    """'run', 'analysis', 'stiffness', 'sweep', 'contact' or 'calibration'; FolderError naming the
-    folder and
+    """'run', 'analysis', 'stiffness', 'sweep', 'contact', 'calibration' or 'modes'; FolderError
+    naming the folder and
     what was expected. A calibration may be named by its JSON file."""
     if os.path.isfile(folder):
         if calibration_file(folder):
@@ -345,19 +347,22 @@ def detect(folder):
         return "contact"
     if calibration_file(folder):
         return "calibration"
+    if is_modes_folder(folder):
+        return "modes"
     inside = []
     for sub in sorted(os.listdir(folder)):
         path = os.path.join(folder, sub)
         if os.path.isdir(path) and any(os.path.isfile(os.path.join(path, f)) for f in (
-                "summary.json", "sweep.csv", "stiffness.csv", "force_approach.csv")):
+                "summary.json", "sweep.csv", "stiffness.csv", "force_approach.csv",
+                "modes.json")):
             inside.append(sub)
     raise FolderError(
         "%s is not a folder bearing-plot knows: expected a bearing-sim run (summary.json with "
         "response.csv or response.npy), an analysed record (summary.json with a record block "
         "and spectrum.csv or .npy), a bearing-sim sweep (sweep.csv), a bearing-sim stiffness "
         "output (stiffness.csv), a bearing-fem contact "
-        "output (force_approach.csv with contact.json) or a bearing-fem calibration (its JSON "
-        "file)%s" % (
+        "output (force_approach.csv with contact.json), a bearing-fem modes output (modes.json) "
+        "or a bearing-fem calibration (its JSON file)%s" % (
             folder, "; its subfolders %s are: plot each of them" % ", ".join(inside[:6])
             + (", ..." if len(inside) > 6 else "") if inside else ""))
 

@@ -55,16 +55,17 @@ def time_figure(run):
 
 def orbit_figure(run):
     """The inner-ring centre in the x-y plane: with the clearance circle, and the steady orbit
-    enlarged. With a [housing] the ring relative to the outer ring (x - x_housing, y - y_housing),
-    the position the clearance is about."""
+    enlarged. With a [housing] the ring relative to the outer ring (x - x_housing, y - y_housing;
+    on the structure's modes x - x_seat, y - y_seat), the position the clearance is about."""
     r = run.response
     factor = DISPLAY["m"][1]
     steady = r["t"] >= run.transient
     if not steady.any():
         steady = np.ones_like(steady)
     x, y = r["x"], r["y"]
-    if "x_housing" in r and "y_housing" in r:
-        x, y = x - r["x_housing"], y - r["y_housing"]
+    for seat in ("housing", "seat"):
+        if "x_" + seat in r and "y_" + seat in r:
+            x, y = x - r["x_" + seat], y - r["y_" + seat]
     x, y = x * factor, y * factor
     with _style():
         fig = _new_figure("orbit")
