@@ -24,12 +24,17 @@ SourcePath ball_path(const Eigen::Vector2d& at, double pitch_radius, double thet
   return path;
 }
 
-BallOrbit ball_orbit(double theta0, double cage_speed, const std::vector<double>& times) {
+BallOrbit ball_orbit(double theta0, double cage_speed, const std::vector<double>& times,
+                     const std::vector<double>& slip) {
+  if (!slip.empty() && slip.size() != times.size())
+    throw InputError("ball orbit: " + std::to_string(times.size()) + " times and " +
+                     std::to_string(slip.size()) + " slip angles");
   BallOrbit o;
   o.cos.resize(times.size());
   o.sin.resize(times.size());
   for (std::size_t n = 0; n < times.size(); ++n) {
-    const double theta = theta0 + cage_speed * times[n];
+    double theta = theta0 + cage_speed * times[n];
+    if (!slip.empty()) theta += slip[n];
     o.cos[n] = std::cos(theta);
     o.sin[n] = std::sin(theta);
   }

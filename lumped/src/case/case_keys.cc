@@ -423,6 +423,35 @@ std::vector<Key> housing_keys() {
   };
 }
 
+std::vector<Key> slip_keys() {
+  Key t = table("slip",
+                "the cage's random slip: its speed fluctuates about the kinematic mean (every "
+                "model kind; off without rms)");
+  t.written = [](const Case& c) { return c.slip.enabled(); };
+  Key tau = quantity(
+      "slip.correlation_time", D::time,
+      "correlation time of the fluctuation in (0, 100 s] (default: one ball pass, 1/BPFO)",
+      [](auto& c) -> auto& { return c.slip.correlation_time; },
+      within(0, 100, false, false, "must lie in [0, 100 s] (0: one ball pass, the default)"));
+  const auto write_tau = tau.write;
+  tau.write = [write_tau](std::ostream& o, const Case& c) {
+    if (c.slip.correlation_time > 0) write_tau(o, c);  // absent: one ball pass
+  };
+  return {
+      t,
+      quantity(
+          "slip.rms", D::dimensionless,
+          "RMS of the cage speed's fluctuation as a fraction of its mean in [0, 0.1] (0.01: 1 %; "
+          "default 0: off)",
+          [](auto& c) -> auto& { return c.slip.rms; }, limits::slip_rms),
+      tau,
+      integer(
+          "slip.seed", "seed of the random path (an integer >= 0, default 1; same seed, same bits)",
+          [](auto& c) -> auto& { return c.slip.seed; },
+          within(0, 1e9, false, false, "must be an integer in [0, 1000000000]")),
+  };
+}
+
 std::vector<Key> solver_keys() {
   Key t = table("solver", "time integration");
   t.after = check_solver_times;
@@ -559,7 +588,7 @@ std::vector<Key> all_keys() {
   std::vector<Key> out;
   for (auto part : {bearing_keys, material_keys, rotor_keys, operation_keys, waviness_keys,
                     ball_error_keys, model_keys, defect_keys, cage_keys, ball_keys, housing_keys,
-                    solver_keys, output_keys, acoustics_keys})
+                    slip_keys, solver_keys, output_keys, acoustics_keys})
     for (Key& k : part()) out.push_back(std::move(k));
   return out;
 }

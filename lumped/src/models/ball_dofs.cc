@@ -123,6 +123,8 @@ class BallDofs final : public detail::FrameForce<BallDofs, detail::RaceFrame, Ba
     lever_ = 0.5 * D * std::cos(alpha);
     drive_inner_ = 0.5 * (in.inner_speed - wc) * dm * (1.0 - g);
     drive_outer_ = 0.5 * wc * dm * (1.0 + g);
+    inner_arm_ = 0.5 * dm * (1.0 - g);
+    outer_arm_ = 0.5 * dm * (1.0 + g);
     // Centrifugal load along the ball's DOF: radial (planar), on the contact line at the static
     // contact angle (axial), so that it has the potential −F_c cos α s_j.
     centrifugal_ = in.centrifugal ? ball_mass_ * wc * wc * 0.5 * dm : 0.0;
@@ -169,7 +171,7 @@ class BallDofs final : public detail::FrameForce<BallDofs, detail::RaceFrame, Ba
       const double ko = k.delta_o > 0 ? outer_exponent_ * k.load_o / k.delta_o : 0.0;
       double mi = 0, mo = 0, si = 0, so = 0;  // μ and dμ/dΔv at both contacts
       if (friction_) {
-        const double dvi = inner_sliding(v[W], vx, vy, c, s), dvo = outer_sliding(v[W]);
+        const double dvi = inner_sliding(fr, v[W], vx, vy, c, s), dvo = outer_sliding(fr, v[W]);
         mi = curve_.coefficient(dvi), si = curve_.slope(dvi);
         mo = curve_.coefficient(dvo), so = curve_.slope(dvo);
       }
@@ -238,7 +240,7 @@ class BallDofs final : public detail::FrameForce<BallDofs, detail::RaceFrame, Ba
     set_.evaluate(t, fr);
     detail::BallRates br;
     set_.rates(t, br);
-    const double wc = set_.cage_speed(), w = geometry_.w0 + q[2];
+    const double wc = br.cage_rate, w = geometry_.w0 + q[2];  // dθ/dt, with the slip
     for (int j = 0; j < balls_; ++j) {
       const double c = fr.cos_theta[j], s = fr.sin_theta[j];
       const BallContacts k = contacts(fr, j, q, q[3 + j]);
@@ -264,8 +266,8 @@ class BallDofs final : public detail::FrameForce<BallDofs, detail::RaceFrame, Ba
       const BallContacts k = contacts(fr, j, q, q[ring_ + j]);
       spin[j] = w;
       outer_load[j] = k.load_o;
-      friction_inner[j] = curve_.coefficient(inner_sliding(w, v[0], v[1], c, s)) * k.load_i;
-      friction_outer[j] = -curve_.coefficient(outer_sliding(w)) * k.load_o;
+      friction_inner[j] = curve_.coefficient(inner_sliding(fr, w, v[0], v[1], c, s)) * k.load_i;
+      friction_outer[j] = -curve_.coefficient(outer_sliding(fr, w)) * k.load_o;
     }
   }
 
@@ -315,11 +317,11 @@ class BallDofs final : public detail::FrameForce<BallDofs, detail::RaceFrame, Ba
     for (int j = 0; j < Z; ++j) {
       const double c = fr.cos_theta[j], s = fr.sin_theta[j], w = v[ring_ + Z + j];
       const BallContacts k = contacts(fr, j, q, q[ring_ + j]);
-      const double dvi = inner_sliding(w, v[0], v[1], c, s), dvo = outer_sliding(w);
+      const double dvi = inner_sliding(fr, w, v[0], v[1], c, s), dvo = outer_sliding(fr, w);
       const double pi = curve_.coefficient(dvi) * k.load_i, po = curve_.coefficient(dvo) * k.load_o;
       p.dissipated += pi * dvi + po * dvo;
       p.on_dofs += -pi * (-v[0] * s + v[1] * c) + lever_ * w * (pi + po);
-      p.drives += -(pi * drive_inner_ + po * drive_outer_);
+      p.drives += -(pi * drives(fr).inner + po * drives(fr).outer);
     }
     return p;
   }
@@ -350,7 +352,8 @@ class BallDofs final : public detail::FrameForce<BallDofs, detail::RaceFrame, Ba
     in.centrifugal = centrifugal_along_;
     in.ball_damping = ball_damping_;
     in.lever = lever_;
-    in.drive_inner = drive_inner_, in.drive_outer = drive_outer_;
+    const Drives a = drives(fr);
+    in.drive_inner = a.inner, in.drive_outer = a.outer;
     in.traction_gain = traction_gain_, in.traction_cap = mu_max_;
     in.friction = friction_;
     double fx = load_x_ + unbalance_force_ * fr.cos_shaft - damping_ * v[0];
@@ -377,7 +380,8 @@ class BallDofs final : public detail::FrameForce<BallDofs, detail::RaceFrame, Ba
     // Locals, not members: the stores to f could alias *this and would force reloads.
     const double x = q[0], y = q[1], gap = gap_, ni = inner_exponent_, no = outer_exponent_;
     const double fc = centrifugal_along_, cb = ball_damping_, lever = lever_;
-    const double ai = drive_inner_, ao = drive_outer_, gain = traction_gain_, cap = mu_max_;
+    const Drives drive = drives(fr);
+    const double ai = drive.inner, ao = drive.outer, gain = traction_gain_, cap = mu_max_;
     for (int j = 0; j < Z; ++j) {
       const double c = fr.cos_theta[j], s = fr.sin_theta[j];
       double load_i, load_o, ca = 1.0, sa = 0.0;
@@ -438,11 +442,24 @@ class BallDofs final : public detail::FrameForce<BallDofs, detail::RaceFrame, Ba
     return k;
   }
 
-  // Δv_i with the ring's translation along t_j, and Δv_o (ball_dofs.h) [m/s].
-  double inner_sliding(double spin, double vx, double vy, double c, double s) const {
-    return drive_inner_ - lever_ * spin + (-vx * s + vy * c);
+  // The drives A_i, A_o at the frame's instant [m/s]: with random slip the cage turns at
+  // ω_ca + φ̇ (random_slip.h), so A_i − ½ φ̇ d_m (1 − g) and A_o + ½ φ̇ d_m (1 + g).
+  struct Drives {
+    double inner, outer;
+  };
+  Drives drives(const detail::RaceFrame& fr) const {
+    if (fr.slip_rate == 0.0) return {drive_inner_, drive_outer_};
+    return {drive_inner_ - fr.slip_rate * inner_arm_, drive_outer_ + fr.slip_rate * outer_arm_};
   }
-  double outer_sliding(double spin) const { return drive_outer_ - lever_ * spin; }
+
+  // Δv_i with the ring's translation along t_j, and Δv_o (ball_dofs.h) [m/s].
+  double inner_sliding(const detail::RaceFrame& fr, double spin, double vx, double vy, double c,
+                       double s) const {
+    return drives(fr).inner - lever_ * spin + (-vx * s + vy * c);
+  }
+  double outer_sliding(const detail::RaceFrame& fr, double spin) const {
+    return drives(fr).outer - lever_ * spin;
+  }
 
   // The ball DOF with Q_o − Q_i = F_c (cos α) for the ring at q: Q_o − Q_i rises monotonically in
   // the DOF, so bisection between the root's bounds; a ball the ring does not reach rests on the
@@ -494,6 +511,8 @@ class BallDofs final : public detail::FrameForce<BallDofs, detail::RaceFrame, Ba
   double lever_ = 0;              // L_s = (D/2) cos α [m]
   double drive_inner_ = 0;        // A_i = ½ (ω_i − ω_ca) d_m (1 − g) [m/s]
   double drive_outer_ = 0;        // A_o = ½ ω_ca d_m (1 + g) [m/s]
+  double inner_arm_ = 0;          // ½ d_m (1 − g) [m]: A_i's change per unit cage speed
+  double outer_arm_ = 0;          // ½ d_m (1 + g) [m]
   double centrifugal_ = 0;        // F_c [N]
   double centrifugal_along_ = 0;  // its component along the ball's DOF [N]
 };

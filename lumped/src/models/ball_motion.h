@@ -32,7 +32,7 @@ inline void radial_ball_motion(const BallSet& set, double gap, double t, const d
   set.evaluate(t, fr);
   BallRates br;
   set.rates(t, br);
-  const double n = set.exponent(), wc = set.cage_speed();
+  const double n = set.exponent(), wc = br.cage_rate;  // dθ/dt, with the slip
   for (int j = 0; j < set.balls(); ++j) {
     const double c = fr.cos_theta[j], s = fr.sin_theta[j];
     const double delta = q[0] * c + q[1] * s - gap + fr.excitation[j];

@@ -4,7 +4,9 @@
 // evaluated without allocation and without one sin() per ball or per harmonic.
 //
 // Ball angles (docs/model.md §1): θ_j(t) = φ₀ + 2πj/Z + ω_c t, j = 0…Z−1. (cos θ_j, sin θ_j) is the
-// precomputed (cos, sin) of φ₀ + 2πj/Z rotated by the one (cos, sin) of ω_c t per instant.
+// precomputed (cos, sin) of φ₀ + 2πj/Z rotated by the one (cos, sin) of ω_c t per instant. With
+// random slip (random_slip.h) the cage angle is ω_c t + φ(t), the slip path's error added, and
+// every ball, defect and rate follows it; without, nothing is added.
 //
 // Each race's waviness at the balls: race_excitation.h (folded by order mod Z, so no sin() per
 // ball or harmonic). TVDS: each race's constant K from its curvature change (race_stiffness.h,
@@ -23,6 +25,7 @@
 #include "bearing/hertz.h"
 #include "bearing/local_defect.h"
 #include "bearing/models/model_inputs.h"
+#include "bearing/models/random_slip.h"
 #include "bearing/solvers/mechanical_system.h"
 #include "contact_kernels.h"
 #include "defect_excitation.h"
@@ -43,6 +46,7 @@ struct BallFrame {
   double stiffness[kMaxBalls];   ///< K_j [N/m^n] (all equal to K unless TVDS)
   double cos_shaft = 1;          ///< cos ω_i t
   double sin_shaft = 0;          ///< sin ω_i t
+  double slip_rate = 0;          ///< φ̇(t), the cage speed's random slip [rad/s] (0: none)
 };
 
 /// The ball set at one instant with the two races kept apart (BallSet::evaluate), for the
@@ -56,6 +60,7 @@ struct RaceFrame {
   double outer_stiffness[kMaxBalls];   ///< K_o,j [N/m^n_o] (all K_o unless TVDS)
   double cos_shaft = 1;                ///< cos ω_i t
   double sin_shaft = 0;                ///< sin ω_i t
+  double slip_rate = 0;                ///< φ̇(t), the cage speed's random slip [rad/s] (0: none)
 };
 
 /// Q = K δ^n for δ > 0 (fast path for n = 3/2).
@@ -72,6 +77,7 @@ struct BallRates {
   double outer_profile_rate[kMaxBalls];    ///< dΠ_o(θ_j)/dt [m/s]
   double outer_stiffness[kMaxBalls];       ///< K_o,j of the ball on the outer race [N/m^n_o]
   double outer_stiffness_rate[kMaxBalls];  ///< dK_o,j/dt (0 unless TVDS)
+  double cage_rate = 0;                    ///< dθ_j/dt = ω_c (+ φ̇ with random slip) [rad/s]
 };
 
 /// Geometry, excitation and contact constants of the ball set, evaluated per instant.
@@ -119,6 +125,13 @@ class BallSet {
         }
     }
     if (tvds && (!inner_.empty() || !outer_.empty())) setup_tvds(in);
+    // The slip's default correlation time is one ball pass of the cage (random_slip.h).
+    if (in.slip.enabled() && cage_speed != 0.0) {
+      const double tau = in.slip.correlation_time > 0.0 ? in.slip.correlation_time
+                                                        : two_pi / (Z * std::abs(cage_speed));
+      slip_ = std::make_shared<const SlipPath>(in.slip.rms, tau, in.slip.seed, cage_speed,
+                                               in.slip_span);
+    }
   }
 
   int balls() const { return balls_; }
@@ -134,15 +147,21 @@ class BallSet {
   double outer_exponent() const { return outer_exponent_; }
   /// ΔD_j = D − D_j [m].
   double size_error(int j) const { return size_error_[j]; }
+  /// The random slip's path, or nullptr (random_slip.h).
+  const SlipPath* slip() const { return slip_.get(); }
 
   /// Fills `br` for time t [s]: with φ_o = θ_j (dφ_o/dt = ω_c) and φ_i = θ_j − ω_i t
   /// (dφ_i/dt = ω_c − ω_i), de_j/dt = Π_i'(φ_i)(ω_c − ω_i) + Π_o'(φ_o) ω_c; with TVDS,
   /// K_j = (c_i + c_o)^{−3/2} (c = K_race^{−2/3}) gives dK_j/dt = −(3/2) K_j (ċ_i + ċ_o)/(c_i +
   /// c_o).
   void rates(double t, BallRates& br) const {
-    const double wo = cage_speed_, wi = cage_speed_ - inner_speed_;
+    // With random slip dθ_j/dt = ω_c + φ̇ and θ_j has φ added (random_slip.h).
+    const SlipPath::AngleRate slip = slip_ ? slip_->at(t) : SlipPath::AngleRate{0.0, 0.0};
+    const double wo = slip_ ? cage_speed_ + slip.rate : cage_speed_, wi = wo - inner_speed_;
+    br.cage_rate = wo;
     for (int j = 0; j < balls_; ++j) {
-      const double theta = cage_phase_ + two_pi * j / balls_ + cage_speed_ * t;
+      double theta = cage_phase_ + two_pi * j / balls_ + cage_speed_ * t;
+      if (slip_) theta += slip.angle;
       const ProfileDerivatives o = profile_derivatives(outer_waviness_, theta);
       const ProfileDerivatives i = profile_derivatives(inner_waviness_, theta - inner_speed_ * t);
       br.excitation_rate[j] = i.slope * wi + o.slope * wo;
@@ -153,7 +172,7 @@ class BallSet {
       br.outer_stiffness_rate[j] = 0.0;
       if (!defects_.empty()) {
         DefectDrop di, d_o;
-        defects_.at_ball(j, theta, inner_speed_ * t, t, di, d_o);
+        defects_.at_ball(j, theta, inner_speed_ * t, t, slip.angle, slip.rate, di, d_o);
         br.excitation_rate[j] -= di.rate + d_o.rate;
         br.outer_profile[j] -= d_o.drop;
         br.outer_profile_rate[j] -= d_o.rate;
@@ -178,9 +197,14 @@ class BallSet {
   struct TimeAngles {
     Phasor cage;
     Phasor shaft;
+    double slip = 0.0;       ///< φ(t), the random slip's angle [rad] (0: none)
+    double slip_rate = 0.0;  ///< φ̇(t) [rad/s]
   };
   TimeAngles time_angles(double t) const {
-    return {phasor(cage_speed_ * t), needs_shaft_ ? phasor(inner_speed_ * t) : Phasor{1.0, 0.0}};
+    const Phasor shaft = needs_shaft_ ? phasor(inner_speed_ * t) : Phasor{1.0, 0.0};
+    if (!slip_) return {phasor(cage_speed_ * t), shaft};
+    const SlipPath::AngleRate slip = slip_->at(t);
+    return {phasor(cage_speed_ * t + slip.angle), shaft, slip.angle, slip.rate};
   }
 
   /// time_angles() of the n times t[i] [s] at once, into out[i]: the same bits, computed several
@@ -192,8 +216,20 @@ class BallSet {
     double* const c = theta + padded;
     double* const s = c + padded;
     for (int i = 0; i < n; ++i) theta[i] = cage_speed_ * t[i];
+    if (slip_) {
+      for (int i = 0; i < n; ++i) {
+        const SlipPath::AngleRate slip = slip_->at(t[i]);
+        theta[i] += slip.angle;
+        out[i].slip = slip.angle;
+        out[i].slip_rate = slip.rate;
+      }
+    }
     kernels_.phasors(theta, n, c, s);
-    for (int i = 0; i < n; ++i) out[i] = {{c[i], s[i]}, {1.0, 0.0}};
+    for (int i = 0; i < n; ++i) {
+      out[i].cage = {c[i], s[i]};
+      out[i].shaft = {1.0, 0.0};
+      if (!slip_) out[i].slip = out[i].slip_rate = 0.0;
+    }
     if (!needs_shaft_) return;
     for (int i = 0; i < n; ++i) theta[i] = inner_speed_ * t[i];
     kernels_.phasors(theta, n, c, s);
@@ -265,7 +301,7 @@ class BallSet {
     for (int j = 0; j < Z; ++j) fr.excitation[j] = -size_error_[j];
     double curv_i[kMaxBalls], curv_o[kMaxBalls];
     add_waviness(fr, fr.excitation, fr.excitation, curv_i, curv_o);
-    defects_.apply(t, fr.excitation, fr.excitation);
+    defects_.apply(t, ta.slip, fr.excitation, fr.excitation);
 
     if (!tvds()) {
       std::fill(fr.stiffness, fr.stiffness + Z, K_);
@@ -288,7 +324,7 @@ class BallSet {
       fr.inner_excitation[j] = fr.outer_excitation[j] = -0.5 * size_error_[j];
     double curv_i[kMaxBalls], curv_o[kMaxBalls];
     add_waviness(fr, fr.inner_excitation, fr.outer_excitation, curv_i, curv_o);
-    defects_.apply(t, fr.inner_excitation, fr.outer_excitation);
+    defects_.apply(t, ta.slip, fr.inner_excitation, fr.outer_excitation);
     if (!tvds()) {
       std::fill(fr.inner_stiffness, fr.inner_stiffness + Z, inner_K_);
       std::fill(fr.outer_stiffness, fr.outer_stiffness + Z, outer_K_);
@@ -309,6 +345,7 @@ class BallSet {
     const double cc = ta.cage.c, sc = ta.cage.s;
     fr.cos_shaft = ta.shaft.c;
     fr.sin_shaft = ta.shaft.s;
+    fr.slip_rate = ta.slip_rate;
     static_assert(kMaxBalls % kKernelPad == 0, "the frame's arrays hold whole vectors");
     kernels_.rotate(base_cos_.data(), base_sin_.data(), cc, sc, balls_, fr.cos_theta, fr.sin_theta);
   }
@@ -358,6 +395,8 @@ class BallSet {
   std::vector<double> table_cos_, table_sin_;
   RaceExcitation inner_, outer_;
   RaceStiffness inner_stiffness_, outer_stiffness_;
+  std::shared_ptr<const SlipPath> slip_;  // the random slip's path; null: none (shared: copies
+                                          // of the set, e.g. a housed model's, share one path)
 };
 
 }  // namespace bearing::detail

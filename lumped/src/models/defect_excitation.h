@@ -10,7 +10,9 @@
 // θ_j = φ₀ + 2πj/Z + ω_c t relative to the defect's angle (housing-fixed φ_d for the outer race,
 // φ_d + ω_i t for the inner race); ball defects from the ball's rolling spin ψ = ψ₀ + ω_s t
 // (kinematic, also in the ball-DOF model, whose spin DOF stays cyclic: the defect turns at the
-// rolling spin, not at the DOF's, which departs from it by the traction's sliding).
+// rolling spin, not at the DOF's, which departs from it by the traction's sliding). With random
+// slip (random_slip.h) the cage angle gains φ(t), and the spin follows it as a ball rolling on
+// the outer race does: ψ = ψ₀ + ω_s (t + φ(t)/ω_c).
 //
 // Cost: the balls are evenly spaced, so the ball nearest a race defect is found from one angle,
 // x = φ₀ − φ_d + (ω_c [− ω_i]) t: with k the integer nearest x/(2π/Z), the ball m − k (mod Z) is at
@@ -49,6 +51,7 @@ class DefectExcitation {
                       DefectPath(b, d, Race::outer),
                       0.0};
         bd.half_angle = 0.5 * d.width / bd.outer.surface_radius();
+        bd.spin_per_cage = cage_speed != 0.0 ? bd.spin / cage_speed : 0.0;
         balls_.push_back(bd);
         continue;
       }
@@ -65,10 +68,13 @@ class DefectExcitation {
   bool empty() const { return races_.empty() && balls_.empty(); }
 
   /// Subtracts the drops at time t [s] from inner[j] and outer[j], the excitations of ball j's
-  /// inner and outer contact [m] (one array for both: the ball's combined excitation).
-  void apply(double t, double* inner, double* outer) const {
+  /// inner and outer contact [m] (one array for both: the ball's combined excitation); `slip`:
+  /// the random slip's cage angle φ(t) [rad] (random_slip.h), which the balls' angles and spins
+  /// carry too.
+  void apply(double t, double slip, double* inner, double* outer) const {
     for (const RaceDefect& d : races_) {
-      const double x = d.phase + d.relative_speed * t;
+      double x = d.phase + d.relative_speed * t;
+      if (slip != 0.0) x += slip;
       // k = round(x / spacing) by the 1.5·2^52 shifter (std::nearbyint is a libm call here)
       constexpr double kShifter = 6755399441055744.0;
       const double k = (x / d.spacing + kShifter) - kShifter;
@@ -83,16 +89,18 @@ class DefectExcitation {
       }
     }
     for (const BallDefect& d : balls_) {
-      const double psi = d.position + d.spin * t;
+      double psi = d.position + d.spin * t;
+      if (slip != 0.0) psi += d.spin_per_cage * slip;
       outer[d.ball] -= d.at(d.outer, psi).drop;
       inner[d.ball] -= d.at(d.inner, psi - pi).drop;
     }
   }
 
-  /// The drops and their rates at ball j, angle θ_j [rad], shaft angle ω_i t [rad], time t [s]
-  /// (for output instants: libm, no phasors).
-  void at_ball(int j, double theta, double shaft_angle, double t, DefectDrop& inner,
-               DefectDrop& outer) const {
+  /// The drops and their rates at ball j, angle θ_j [rad] (the slip's included), shaft angle
+  /// ω_i t [rad], time t [s], the random slip's φ(t) [rad] and φ̇(t) [rad/s] (for output
+  /// instants: libm, no phasors).
+  void at_ball(int j, double theta, double shaft_angle, double t, double slip, double slip_rate,
+               DefectDrop& inner, DefectDrop& outer) const {
     inner = outer = DefectDrop{};
     for (const RaceDefect& d : races_) {
       const double delta =
@@ -101,12 +109,13 @@ class DefectExcitation {
       const double r = d.path.surface_radius(), u = r * delta + 0.5 * d.path.width();
       DefectDrop& out = d.inner ? inner : outer;
       out.drop += d.path.drop(u);
-      out.rate += d.path.slope(u) * r * d.relative_speed;
+      out.rate += d.path.slope(u) * r * (d.relative_speed + slip_rate);
     }
     for (const BallDefect& d : balls_) {
       if (d.ball != j) continue;
-      const double psi = d.position + d.spin * t;
-      const DefectDrop o = d.at(d.outer, psi), i = d.at(d.inner, psi - pi);
+      const double psi = d.position + d.spin * t + d.spin_per_cage * slip;
+      const double spin = d.spin + d.spin_per_cage * slip_rate;
+      const DefectDrop o = d.at(d.outer, psi, spin), i = d.at(d.inner, psi - pi, spin);
       outer.drop += o.drop, outer.rate += o.rate;
       inner.drop += i.drop, inner.rate += i.rate;
     }
@@ -127,13 +136,15 @@ class DefectExcitation {
     double position, spin;  // ψ₀ [rad], ω_s [rad/s]
     DefectPath inner, outer;
     double half_angle;
-    // The drop at the contact `psi` [rad] of the ball's turn past it.
-    DefectDrop at(const DefectPath& path, double psi) const {
+    double spin_per_cage = 0;  // ω_s/ω_c: the spin follows the cage's slip (random_slip.h)
+    // The drop at the contact `psi` [rad] of the ball's turn past it, turning at `speed` [rad/s].
+    DefectDrop at(const DefectPath& path, double psi, double speed) const {
       const double delta = std::remainder(psi, two_pi);
       if (std::abs(delta) >= half_angle) return {};
       const double r = path.surface_radius(), u = r * delta + 0.5 * path.width();
-      return {path.drop(u), path.slope(u) * r * spin};
+      return {path.drop(u), path.slope(u) * r * speed};
     }
+    DefectDrop at(const DefectPath& path, double psi) const { return at(path, psi, spin); }
   };
 
   int count_ = 0;  // Z

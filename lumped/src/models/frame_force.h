@@ -58,6 +58,15 @@ class FrameForce : public Base {
     static_cast<const Model&>(*this).ball_set().time_angles(t, n, out, scratch);
   }
 
+  /// The ball set's random slip (random_slip.h).
+  bool has_cage_slip() const final {
+    return static_cast<const Model&>(*this).ball_set().slip() != nullptr;
+  }
+  double cage_slip_angle(double t) const final {
+    const SlipPath* slip = static_cast<const Model&>(*this).ball_set().slip();
+    return slip ? slip->angle(t) : 0.0;
+  }
+
   using FrameType = Frame;
 };
 

@@ -206,6 +206,8 @@ class HousedModel final : public BearingModel {
   std::vector<SensorRow> sensor_rows() const override { return support_.sensors; }
   int balls() const override { return model().balls(); }
   double cage_speed() const override { return model().cage_speed(); }
+  bool has_cage_slip() const override { return model().has_cage_slip(); }
+  double cage_slip_angle(double t) const override { return model().cage_slip_angle(t); }
   bool has_ball_dofs() const override { return model().has_ball_dofs(); }
 
   void ball_loads(double t, const double* q, double* loads) const override {

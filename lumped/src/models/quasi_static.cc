@@ -82,6 +82,10 @@ class QuasiStatic final : public QuasiStaticModel {
 
   int balls() const override { return set_.balls(); }
   double cage_speed() const override { return set_.cage_speed(); }
+  bool has_cage_slip() const override { return set_.slip() != nullptr; }
+  double cage_slip_angle(double t) const override {
+    return set_.slip() ? set_.slip()->angle(t) : 0.0;
+  }
   double minimum_load() const override { return minimum_load_; }
   double smooth_load() const override { return smooth_load_; }
   Eigen::Vector2d static_position() const override { return static_; }
@@ -178,7 +182,7 @@ class QuasiStatic final : public QuasiStaticModel {
                            const Eigen::Matrix2d& J) const {
     detail::BallRates br;
     set_.rates(t, br);
-    const double n = set_.exponent(), wc = set_.cage_speed();
+    const double n = set_.exponent(), wc = br.cage_rate;  // dθ/dt, with the slip
     Eigen::Vector2d dgdt = Eigen::Vector2d::Zero();
     for (int j = 0; j < set_.balls(); ++j) {
       const double c = fr.cos_theta[j], s = fr.sin_theta[j];

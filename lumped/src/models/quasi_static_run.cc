@@ -19,6 +19,8 @@ class QuasiStaticOutputs final : public ModelOutputs {
   std::vector<std::string> dof_names() const override { return {"x", "y"}; }
   int balls() const override { return model_->balls(); }
   double cage_speed() const override { return model_->cage_speed(); }
+  bool has_cage_slip() const override { return model_->has_cage_slip(); }
+  double cage_slip_angle(double t) const override { return model_->cage_slip_angle(t); }
   void ball_state(double t, const double* q, const double* v, BallFields fields,
                   BallState& s) const override {
     const Eigen::Vector2d position(q[0], q[1]);

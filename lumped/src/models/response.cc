@@ -68,6 +68,7 @@ Response lay_out_response(const ModelOutputs& model, const OutputRequest& reques
   out.rate = times.rate;
   out.first_steady = static_cast<std::size_t>(std::ceil(times.transient * times.rate - 1e-9));
   out.values.assign(out.channels.size(), std::vector<double>(samples));
+  if (model.has_cage_slip()) out.cage_slip.resize(samples);
   return out;
 }
 
@@ -83,6 +84,7 @@ ResponseRecorder::ResponseRecorder(const ModelOutputs& model, const OutputReques
 void ResponseRecorder::operator()(double t, const double* q, const double* v, const double* a) {
   if (k_ >= out_.time.size()) throw std::logic_error("ResponseRecorder: more samples than times");
   if (fields_) model_.ball_state(t, q, v, fields_, balls_);
+  if (!out_.cage_slip.empty()) out_.cage_slip[k_] = model_.cage_slip_angle(t);
   for (std::size_t i = 0; i < out_.channels.size(); ++i) {
     const Channel& ch = out_.channels[i];
     const auto dof = static_cast<std::size_t>(ch.index);

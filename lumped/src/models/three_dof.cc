@@ -193,7 +193,7 @@ class ThreeDofModel final
     set_.evaluate(t, fr);
     detail::BallRates br;
     set_.rates(t, br);
-    const double n = set_.exponent(), wc = set_.cage_speed();
+    const double n = set_.exponent(), wc = br.cage_rate;  // dθ/dt, with the slip
     const double w = geometry_.w0 + q[2];
     for (int j = 0; j < set_.balls(); ++j) {
       const double c = fr.cos_theta[j], s = fr.sin_theta[j];

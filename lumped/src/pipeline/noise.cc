@@ -97,11 +97,16 @@ BearingNoise radiate(const Response& response, const AcousticsOptions& ac, const
     ball = make_series_source(source_model_name(ac.ball_source), 0.5 * bearing.ball_diameter, air,
                               "acoustics.ball_source");
     interpolator.emplace();
+    // The cage's random slip over the analysed samples (empty without).
+    std::vector<double> slip;
+    if (!response.cage_slip.empty())
+      slip.assign(response.cage_slip.begin() + static_cast<std::ptrdiff_t>(response.first_steady),
+                  response.cage_slip.end() - 1);
     for (int j = 0; j < Z; ++j) {
       radial.push_back(response.steady("r" + std::to_string(j + 1)));
       filtered.push_back(
           filter_moving(*ball, window_and_next(response, "vr" + std::to_string(j + 1)), rate, fft));
-      orbits.push_back(ball_orbit(2 * pi * j / Z, cage_speed, out.time));
+      orbits.push_back(ball_orbit(2 * pi * j / Z, cage_speed, out.time, slip));
     }
   }
 

@@ -25,6 +25,8 @@ ModelInputs model_inputs(const Case& c) {
   in.axial_mass = c.rotor.axial_mass;
   in.axial_damping = c.rotor.axial_damping;
   in.housing = c.housing;
+  in.slip = c.slip;
+  in.slip_span = c.solver.duration;
   in.inner_waviness.harmonics = c.excitation.inner_waviness;
   in.outer_waviness.harmonics = c.excitation.outer_waviness;
   in.ball_size_errors = c.excitation.ball_size_errors;

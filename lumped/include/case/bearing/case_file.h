@@ -21,6 +21,7 @@
 #include "bearing/excitation.h"
 #include "bearing/local_defect.h"
 #include "bearing/models/housing.h"
+#include "bearing/models/random_slip.h"
 #include "bearing/models/model_kind.h"
 #include "bearing/signal/envelope.h"
 #include "bearing/signal/spectrum.h"
@@ -129,6 +130,7 @@ struct Case {
   OutputOptions output;
   AcousticsOptions acoustics;  ///< on when the case has an [acoustics] table
   Housing housing;             ///< the outer ring's support and sensor: on with a [housing] table
+  RandomSlip slip;             ///< the cage's random slip: on with [slip] rms > 0
 };
 
 /// The contact constants of the case's law (the one place models, the static solution and `info`

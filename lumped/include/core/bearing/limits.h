@@ -83,6 +83,13 @@ inline constexpr Limit housing_mass{
     "housing.mass", D::mass, 0, inf, true, false, "must be positive (> 0 kg)"};
 inline constexpr Limit housing_frequency{
     "housing.frequency", D::frequency, 0, inf, true, false, "must be positive (> 0 Hz)"};
+inline constexpr Limit slip_rms{
+    "slip.rms", D::dimensionless, 0, 0.1, false, false,
+    "must lie in [0, 0.1] (the cage speed's RMS fluctuation as a fraction of its mean; 0: off, "
+    "0.01: 1 %)"};
+inline constexpr Limit slip_correlation_time{
+    "slip.correlation_time", D::time, 0, 100, true, false,
+    "must lie in (0, 100 s] (0 in the case file: one ball pass, the default)"};
 inline constexpr Limit housing_damping_ratio{
     "housing.damping_ratio",
     D::dimensionless,

@@ -61,7 +61,10 @@ struct Response {
   std::vector<double> time;                 ///< [s]
   std::vector<std::vector<double>> values;  ///< values[channel][sample], SI
   std::size_t first_steady = 0;             ///< first sample at or after the transient
-  double rate = 0;                          ///< samples per second [Hz]
+  /// The random slip's cage angle error φ(t) at every sample [rad] (random_slip.h; empty
+  /// without slip): where the balls were, for the acoustics' ball sources. Not a channel.
+  std::vector<double> cage_slip;
+  double rate = 0;  ///< samples per second [Hz]
 
   /// The index of the channel `name`; throws std::out_of_range for an unknown name.
   std::size_t index(const std::string& name) const;

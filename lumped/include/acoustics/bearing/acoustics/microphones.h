@@ -29,7 +29,10 @@ SourcePath ball_path(const Eigen::Vector2d& at, double pitch_radius, double thet
 struct BallOrbit {
   std::vector<double> cos, sin;
 };
-BallOrbit ball_orbit(double theta0, double cage_speed, const std::vector<double>& times);
+/// With random slip (random_slip.h) the cage angle gains `slip`[n] [rad] at each sample (empty:
+/// none).
+BallOrbit ball_orbit(double theta0, double cage_speed, const std::vector<double>& times,
+                     const std::vector<double>& slip = {});
 
 /// ball_path from the ball's orbit, into `path` (its storage reused from call to call): the same
 /// values, bit for bit.

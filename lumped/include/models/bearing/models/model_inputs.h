@@ -13,6 +13,7 @@
 #include "bearing/excitation.h"
 #include "bearing/local_defect.h"
 #include "bearing/models/housing.h"
+#include "bearing/models/random_slip.h"
 #include "bearing/traction.h"
 
 namespace bearing {
@@ -37,6 +38,11 @@ struct ModelInputs {
   double axial_damping = 0.0;  ///< axial damping [N s/m] (3-DOF)
   /// The outer ring's support and the sensor on it (housing.h); off: the outer ring is fixed.
   Housing housing;
+  /// The cage's random slip (random_slip.h); off: the balls turn at exactly the cage speed.
+  RandomSlip slip;
+  /// The last time a run evaluates the model [s] (solver.duration): the slip's path covers
+  /// [0, slip_span].
+  double slip_span = 0.0;
 
   /// The constant radial load on the inner ring [N]: `load`, with the weight −m g on F_y when
   /// `gravity` is on.

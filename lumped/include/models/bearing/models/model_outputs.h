@@ -78,6 +78,11 @@ class ModelOutputs {
   /// angle, times 1 − s_c with cage slip).
   virtual double cage_speed() const = 0;
 
+  /// Whether the cage slips randomly (random_slip.h): its angle is then ω_ca t + φ(t).
+  virtual bool has_cage_slip() const { return false; }
+  /// φ(t), the random slip's error of the cage angle [rad] (0 without).
+  virtual double cage_slip_angle(double /*t*/) const { return 0.0; }
+
   /// Whether the model has ball DOFs, and so the spin, outer-load and friction fields.
   virtual bool has_ball_dofs() const { return false; }
 

@@ -92,6 +92,9 @@ class QuasiStaticModel {
   virtual int balls() const = 0;
   /// The cage speed ω_c the balls turn at [rad/s].
   virtual double cage_speed() const = 0;
+  /// Whether the cage slips randomly, and its angle error φ(t) [rad] (random_slip.h).
+  virtual bool has_cage_slip() const { return false; }
+  virtual double cage_slip_angle(double /*t*/) const { return 0.0; }
   /// F_min of the header [N].
   virtual double minimum_load() const = 0;
   /// F_smooth of the header [N].
