@@ -128,7 +128,7 @@ TEST(RandomSlip, MeanRateIsTheCageSpeed) {
 // the balls of an outer-race waviness of orders Z, 2Z, 3Z, 4Z (Σ_j A cos(mZ θ_j + ψ) = Z A
 // cos(mZ θ_c + ψ), the other orders cancel over the balls), which is smooth, so its lines are
 // read exactly by the DFT. The 6205 at 1796 rpm, σ = 1 %, τ = one ball pass, T = 1 s: A_m falls
-// from 0.87 to 0.2 over m = 1…4. The estimate: the mean over K = 256 seeds of |X_m|²/|c_m|², each
+// from 0.88 to 0.27 over m = 1…4. The estimate: the mean over K = 256 seeds of |X_m|²/|c_m|², each
 // in [0, 1] (|X_m| ≤ |c_m|), so its variance is at most A_m (1 − A_m)/K (Bhatia–Davis); 5 of those
 // standard deviations.
 TEST(RandomSlip, LinesAttenuateWithTheHarmonicAsDerived) {
