@@ -16,7 +16,7 @@
 #include "bearing/errors.h"
 #include "bearing/hertz.h"
 #include "case_schema.h"
-#include "toml_guard.h"
+#include "bearing/toml_guard.h"
 #include "toml_reader.h"
 
 namespace bearing {
