@@ -1,8 +1,9 @@
 # The FE solvers' parts in plain C++ (toml++ and the lumped core's units, no deal.II): the readers
 # of their input files, gmsh meshes (fem/mesh/) and the structure file of `bearing-fem modes`
-# (fem/modes/structure_file.*), and the seat's rigid fit (fem/modes/seat_fit.*). Included from the top level whether BEARING_WITH_FEM is ON or OFF: they read
-# users' files, so the sanitizer and fuzz builds (which configure without deal.II) build, test
-# and fuzz them (tests/fuzz/fuzz_gmsh_mesh.cc, fuzz_structure_file.cc).
+# (fem/modes/structure_file.*), and the seat's rigid fit (fem/modes/seat_fit.*). Included from the
+# top level whether BEARING_WITH_FEM is ON or OFF: the readers read users' files, so the sanitizer
+# and fuzz builds (which configure without deal.II) build, test and fuzz them
+# (tests/fuzz/fuzz_gmsh_mesh.cc, fuzz_structure_file.cc).
 add_library(bearing_fem_mesh STATIC
   ${CMAKE_CURRENT_LIST_DIR}/mesh/gmsh_mesh.cc
   ${CMAKE_CURRENT_LIST_DIR}/mesh/gmsh_cells.cc)
