@@ -318,6 +318,38 @@ GmshMesh read_gmsh_mesh(const std::string& path) {
   return parse_gmsh_mesh(text, path);
 }
 
+std::vector<unsigned int> mesh_parts(const GmshMesh& mesh, unsigned int& parts) {
+  // Union-find on the vertices: each cell joins its vertices.
+  std::vector<std::size_t> root(mesh.vertices.size());
+  for (std::size_t v = 0; v < root.size(); ++v) root[v] = v;
+  const auto find = [&](std::size_t v) {
+    while (root[v] != v) v = root[v] = root[root[v]];
+    return v;
+  };
+  for (const auto& c : mesh.cells)
+    for (std::size_t k = 1; k < c.size(); ++k) root[find(c[k])] = find(c[0]);
+  std::map<std::size_t, unsigned int> number;
+  std::vector<unsigned int> part;
+  for (const auto& c : mesh.cells)
+    part.push_back(
+        number.emplace(find(c[0]), static_cast<unsigned int>(number.size())).first->second);
+  parts = static_cast<unsigned int>(number.size());
+  return part;
+}
+
+std::vector<bool> parts_touching(const GmshMesh& mesh, const std::vector<unsigned int>& part,
+                                 unsigned int parts, const std::vector<int>& tags) {
+  std::vector<unsigned int> part_of_vertex(mesh.vertices.size(), 0);
+  for (std::size_t c = 0; c < mesh.cells.size(); ++c)
+    for (unsigned int v : mesh.cells[c]) part_of_vertex[v] = part[c];
+  std::vector<bool> touching(parts, false);
+  for (const MeshFace& f : mesh.faces)
+    for (int t : tags)
+      if (std::find(f.physicals.begin(), f.physicals.end(), t) != f.physicals.end())
+        touching[part_of_vertex[f.vertices[0]]] = true;
+  return touching;
+}
+
 int GmshMesh::surface_tag(std::string_view name) const {
   for (const PhysicalName& p : names)
     if (p.dimension == 2 && p.name == name) return p.tag;

@@ -72,6 +72,14 @@ struct GmshMesh {
   const char* cell_type_name() const;
 };
 
+/// The separate parts of the mesh, cells joined through shared vertices: each cell's part,
+/// numbered from 0 in the order of the parts' first cells; `parts` is their count.
+std::vector<unsigned int> mesh_parts(const GmshMesh& mesh, unsigned int& parts);
+
+/// Whether each part (mesh_parts) has a face in one of the physical surfaces `tags`.
+std::vector<bool> parts_touching(const GmshMesh& mesh, const std::vector<unsigned int>& part,
+                                 unsigned int parts, const std::vector<int>& tags);
+
 /// Parses the text of a .msh file; `file` names it in messages. Throws InputError.
 GmshMesh parse_gmsh_mesh(std::string_view text, const std::string& file);
 
