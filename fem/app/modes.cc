@@ -1,4 +1,5 @@
-// `bearing-fem modes STRUCTURE --out DIR`: read the structure file and its gmsh mesh, check them,
+// `bearing-fem modes STRUCTURE --out DIR`: read the structure file and its gmsh mesh (or mesh its
+// .geo with gmsh), check them,
 // call the modal solver (fem/modes/elastic_modes.h), write modes.json (the format of
 // /work/spec/modes-json.md, fem/README.md "Natural modes"), modes.vtu and with --frf frf.json, all
 // or nothing as `contact` does. No physics here.
@@ -22,6 +23,7 @@
 #include "bearing/cli_options.h"
 #include "bearing/errors.h"
 #include "mesh/gmsh_mesh.h"
+#include "mesh/gmsh_run.h"
 #include "modes/elastic_modes.h"
 #include "modes/structure_file.h"
 
@@ -57,26 +59,43 @@ void check_parts(const StructureFile& s, const GmshMesh& mesh, const std::vector
                      std::to_string(parts) + " separate parts touch no fixed surface");
 }
 
-ModesInput modes_input(const ModesOptions& o) {
-  ModesInput in;
-  in.structure = read_structure_file(o.structure);
-  StructureFile& s = in.structure;
+bool is_geo(const std::string& path) {
+  return path.size() > 4 && path.compare(path.size() - 4, 4, ".geo") == 0;
+}
+
+// The structure file, with the command line's overrides.
+StructureFile structure_of(const ModesOptions& o) {
+  StructureFile s = read_structure_file(o.structure);
   if (o.count > 0) s.count = o.count;
   if (o.max_frequency > 0) s.max_frequency = o.max_frequency;
-  in.mesh = read_gmsh_mesh(s.mesh_path);
-  check_structure_against_mesh(s, in.mesh);
+  return s;
+}
+
+// The mesh `msh` (the structure's, or gmsh's from its .geo) checked against the structure and
+// the options, and the solver's parameters.
+ModesInput modes_input(const ModesOptions& o, StructureFile s, const std::string& msh) {
+  ModesInput in;
+  in.structure = std::move(s);
+  in.mesh = read_gmsh_mesh(msh);
+  const StructureFile& st = in.structure;
+  check_structure_against_mesh(st, in.mesh);
+  if (o.degree > 2 && in.mesh.cell_type == GmshMesh::CellType::tetrahedron)
+    throw InputError("--degree " + std::to_string(o.degree) +
+                     ": deal.II 9.4 has tetrahedral elements of degree 1 and 2 only (hexahedra "
+                     "take 1-3); " +
+                     st.mesh + " is a mesh of tetrahedra");
   ElasticModesParameters& p = in.p;
-  for (const std::string& f : s.fixed) p.fixed.push_back(in.mesh.surface_tag(f));
-  check_parts(s, in.mesh, p.fixed);
-  p.mesh_scale = s.mesh_scale;
-  p.young = s.young;
-  p.poisson = s.poisson;
-  p.density = s.density;
-  p.seat = in.mesh.surface_tag(s.seat);
-  p.seat_name = s.seat;
-  for (const StructureSensor& sensor : s.sensors) p.sensors.push_back(sensor.point);
-  p.count = s.count;
-  p.max_frequency = s.max_frequency;
+  for (const std::string& f : st.fixed) p.fixed.push_back(in.mesh.surface_tag(f));
+  check_parts(st, in.mesh, p.fixed);
+  p.mesh_scale = st.mesh_scale;
+  p.young = st.young;
+  p.poisson = st.poisson;
+  p.density = st.density;
+  p.seat = in.mesh.surface_tag(st.seat);
+  p.seat_name = st.seat;
+  for (const StructureSensor& sensor : st.sensors) p.sensors.push_back(sensor.point);
+  p.count = st.count;
+  p.max_frequency = st.max_frequency;
   p.degree = o.degree;
   p.refinements = o.refinements;
   p.tolerance = o.tolerance;
@@ -117,6 +136,16 @@ json modes_json(const ModesInput& in, const ElasticModesResult& r) {
     sensors.push_back(j);
   }
   json seat = fits_json(r.seat);
+  json mesh = {{"file", s.mesh},
+               {"unit", s.mesh_unit},
+               {"format", in.mesh.version},
+               {"element_type", r.cell_type},
+               {"elements", r.cells},
+               {"vertices", r.vertices},
+               {"dofs", r.dofs},
+               {"fe_degree", r.degree},
+               {"refinements", in.p.refinements}};
+  if (is_geo(s.mesh_path)) mesh["gmsh_output"] = "mesh.msh";  // beside modes.json
   seat["centre"] = r.seat_centre;
   seat["nodes"] = r.seat_nodes;
   seat["area"] = r.seat_area;
@@ -136,16 +165,7 @@ json modes_json(const ModesInput& in, const ElasticModesResult& r) {
         {"area", "m^2"},
         {"mass", "kg"},
         {"volume", "m^3"}}},
-      {"mesh",
-       {{"file", s.mesh},
-        {"unit", s.mesh_unit},
-        {"format", in.mesh.version},
-        {"element_type", r.cell_type},
-        {"elements", r.cells},
-        {"vertices", r.vertices},
-        {"dofs", r.dofs},
-        {"fe_degree", r.degree},
-        {"refinements", in.p.refinements}}},
+      {"mesh", mesh},
       {"material", {{"young", s.young}, {"poisson", s.poisson}, {"density", s.density}}},
       {"boundary", {{"fixed", s.fixed}, {"seat", s.seat}, {"free", s.fixed.empty()}}},
       {"rigid_body_modes", r.rigid_body_modes},
@@ -236,9 +256,16 @@ int run_modes(const ModesOptions& o, MPI_Comm comm) {
   namespace fs = std::filesystem;
   if (o.frf.size() > 20)
     throw InputError("--frf: " + std::to_string(o.frf.size()) + " frequencies: at most 20");
-  ModesInput in = modes_input(o);  // bad input ends here, before any file
+  StructureFile structure = structure_of(o);
+  const bool geo = is_geo(structure.mesh_path);
+  // A mesh file is checked before any file is written; a .geo file needs gmsh first, whose mesh
+  // and log go into DIR with the results.
+  std::optional<ModesInput> in;
+  if (!geo) in = modes_input(o, structure, structure.mesh_path);
   const fs::path out(o.out_dir);
   std::vector<std::string> names, others;
+  (geo ? names : others).push_back("mesh.msh");
+  (geo ? names : others).push_back("mesh.msh.log");
   (o.vtu ? names : others).push_back("modes.vtu");
   (o.frf.empty() ? others : names).push_back("frf.json");
   names.push_back("modes.json");
@@ -250,13 +277,19 @@ int run_modes(const ModesOptions& o, MPI_Comm comm) {
       throw InputError("--out " + o.out_dir + ": cannot create the folder (" + ec.message() + ")");
     set.emplace(out, names, others, "--out " + o.out_dir);
   });
-  if (o.vtu) in.p.vtu_file = temporary_path(out, "modes.vtu").string();
-  const ElasticModesResult r = solve_elastic_modes(in.mesh, in.p, comm);
+  if (geo) {
+    const std::string msh = temporary_path(out, "mesh.msh").string();
+    mesh_geo_file(structure.mesh_path, msh, temporary_path(out, "mesh.msh.log").string(), comm);
+    in = modes_input(o, structure, msh);
+    in->mesh.file = (out / "mesh.msh").string();
+  }
+  if (o.vtu) in->p.vtu_file = temporary_path(out, "modes.vtu").string();
+  const ElasticModesResult r = solve_elastic_modes(in->mesh, in->p, comm);
   if (!set) return 0;
-  const json modes = modes_json(in, r);
+  const json modes = modes_json(*in, r);
   check_finite(modes, "modes.json");
   if (!o.frf.empty()) {
-    const json frf = frf_json(in, r.frf);
+    const json frf = frf_json(*in, r.frf);
     check_finite(frf, "frf.json");
     set->write("frf.json", frf.dump(2) + "\n");
   }

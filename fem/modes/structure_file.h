@@ -4,7 +4,8 @@
 // surfaces held fixed and the one the bearing sits in, named sensor points and how many modes to
 // compute. Units as in case files ("210 GPa", "7850 kg/m^3", "20 kHz"; a bare number is SI).
 //
-//   mesh = "housing.msh"     # gmsh .msh 2.2 or 4.1; relative to this file
+//   mesh = "housing.msh"     # gmsh .msh 2.2 or 4.1, or a .geo gmsh meshes (-3) at run time;
+//                            # relative to this file
 //   mesh_unit = "mm"         # m (default) or mm: the mesh's and the sensors' coordinates
 //   [material]
 //   young = "210 GPa"        # (0, 1e13] Pa
