@@ -56,7 +56,8 @@ void check_parts(const StructureFile& s, const GmshMesh& mesh, const std::vector
   if (loose > 0)
     throw InputError(s.source + ": the fixed set leaves " + std::to_string(6 * loose) +
                      " rigid-body modes: " + std::to_string(loose) + " of the mesh's " +
-                     std::to_string(parts) + " separate parts touch no fixed surface");
+                     std::to_string(parts) + " separate parts " +
+                     (loose == 1 ? "touches" : "touch") + " no fixed surface");
 }
 
 bool is_geo(const std::string& path) {
