@@ -1,8 +1,7 @@
 // `bearing-fem modes STRUCTURE --out DIR`: read the structure file and its gmsh mesh (or mesh its
-// .geo with gmsh), check them,
-// call the modal solver (fem/modes/elastic_modes.h), write modes.json (the format of
-// /work/spec/modes-json.md, fem/README.md "Natural modes"), modes.vtu and with --frf frf.json, all
-// or nothing as `contact` does. No physics here.
+// .geo with gmsh), check them, call the modal solver (fem/modes/elastic_modes.h), write
+// modes.json (its keys: fem/README.md, "Natural modes"; the lumped model reads it), modes.vtu and
+// with --frf frf.json, all or nothing as `contact` does. No physics here.
 
 #include "app/modes.h"
 
