@@ -1,5 +1,5 @@
 // Motor end shield for a 6205 bearing (issue 40): the example housing of `bearing-fem modes`
-// (examples/end_shield_6205.toml) and of the lumped model's housing modes (examples/cwru/).
+// (meshes/end_shield_6205.toml) and of the lumped model's housing modes (examples/cwru/).
 //
 // Assumed dimensions [mm] (an end shield of a small motor, not a drawing of a real one): a web
 // (disc) 200 mm across and 10 mm thick; a hub around the bearing seat, bore 52 mm (the 6205's
