@@ -4,7 +4,8 @@
 // After a successful parse it checks what gmsh_mesh.h promises of the mesh: at least one cell,
 // every cell of the mesh's kind (4 or 8 vertices) with valid, distinct vertex indices and a
 // positive volume (a tetrahedron's determinant, a hexahedron's Jacobian at vertex 0), every
-// vertex finite, every face 3 or 4 valid vertices with sorted, unique, positive physical tags.
+// vertex finite, every face 3 or 4 valid vertices with sorted, unique, positive physical tags;
+// mesh_parts numbers every cell with a part below the count it gives.
 
 #include <array>
 #include <cmath>
@@ -12,6 +13,7 @@
 #include <cstdint>
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include "fuzz_harness.h"
 #include "mesh/gmsh_mesh.h"
@@ -51,6 +53,13 @@ void check(const bearing::fem::GmshMesh& m) {
                                   minus(m.vertices[c[4]], x0));
     if (!(j > 0)) property_failed(kTarget, "a cell without a positive volume was accepted");
   }
+  unsigned int parts = 0;
+  const std::vector<unsigned int> part = bearing::fem::mesh_parts(m, parts);
+  if (part.size() != m.cells.size() || parts == 0 || parts > m.cells.size())
+    property_failed(kTarget, "mesh_parts gave no part to a cell or too many parts");
+  for (unsigned int p : part)
+    if (p >= parts) property_failed(kTarget, "a cell's part beyond the count");
+  parts_touching(m, part, parts, {1});
   for (const auto& f : m.faces) {
     if (f.vertices.size() != 3 && f.vertices.size() != 4)
       property_failed(kTarget, "a face with the wrong vertex count");
