@@ -61,13 +61,17 @@ PHYSICS_FILES = [
     "lumped/src/pipeline/noise.cc",
 ]
 
-# The FE library: the Hertz contact block and raceway segment, their gap and boundaries, and the
-# Helmholtz radiation solver. Its mutants are judged in a build with deal.II, by the checks that
-# run bearing-fem. Left out: fem/app/ (bearing-fem's command line, its input checks and output
-# files, as case/ and the output writers are on the lumped side).
+# The FE library: the Hertz contact block and raceway segment, their gap and boundaries, the
+# Helmholtz radiation solver, and the natural modes of a structure (its matrices and eigensolver,
+# the seat's rigid fit, the direct harmonic response). Its mutants are judged in a build with
+# deal.II, by the checks that run bearing-fem. Left out: fem/app/ (bearing-fem's command line, its
+# input checks and output files, as case/ and the output writers are on the lumped side) and the
+# readers of fem/mesh/ and fem/modes/structure_file.* (input parsing, as case/; fuzzed instead).
 FEM_FILES = [
     "fem/contact/hertz_contact.cc", "fem/contact/raceway_segment.cc",
     "fem/contact/contact_geometry.h", "fem/radiation/helmholtz_radiation.cc",
+    "fem/modes/elastic_problem.cc", "fem/modes/elastic_modes.cc",
+    "fem/modes/harmonic_response.cc", "fem/modes/seat_fit.cc",
 ]
 
 

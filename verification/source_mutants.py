@@ -45,7 +45,7 @@ from mutant_sites import FEM_FILES, PHYSICS_FILES, generate, hand_mutants, is_fe
 
 DEFAULT_SEED = 30  # issue 30
 DEFAULT_COUNT = 150
-DEFAULT_FEM_COUNT = 10
+DEFAULT_FEM_COUNT = 20
 HERE = os.path.dirname(os.path.abspath(__file__))
 JUDGED_FILE = os.path.join(HERE, "source_mutants_judged.json")
 

@@ -4,6 +4,7 @@
 //   bearing-fem contact CASE --race inner|outer --out DIR     (app/contact.cc)
 //   bearing-fem calibrate CASE --out FILE                     (app/contact.cc)
 //   bearing-fem radiate --source NAME ... --out DIR           (app/radiate.cc)
+//   bearing-fem modes STRUCTURE --out DIR                     (app/modes.cc)
 
 #include <deal.II/base/mpi.h>
 
@@ -13,6 +14,7 @@
 #include <CLI/CLI.hpp>
 
 #include "app/contact.h"
+#include "app/modes.h"
 #include "app/radiate.h"
 #include "app/rank_zero.h"
 #include "bearing/cli_options.h"
@@ -29,6 +31,8 @@ int main(int argc, char** argv) {
   auto* calibrate = bearing::fem::add_calibrate_command(app, co, calibration_file);
   bearing::fem::RadiateOptions ro;
   auto* radiate = bearing::fem::add_radiate_command(app, ro);
+  bearing::fem::ModesOptions mo;
+  auto* modes = bearing::fem::add_modes_command(app, mo);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -39,6 +43,7 @@ int main(int argc, char** argv) {
   try {
     if (*calibrate) return bearing::fem::run_calibrate(co, calibration_file, MPI_COMM_WORLD);
     if (*radiate) return bearing::fem::run_radiate(ro, MPI_COMM_WORLD);
+    if (*modes) return bearing::fem::run_modes(mo, MPI_COMM_WORLD);
     return bearing::fem::run_contact(o, MPI_COMM_WORLD);
   } catch (const bearing::fem::FailedOnRankZero& e) {
     return e.status;  // rank 0 says why

@@ -25,12 +25,25 @@ RANGE = re.compile(r"^\s+(--[a-z-]+) (FLOAT|UINT|INT):([\[(])([-0-9.e+]+), ([-0-
 NUMERIC = re.compile(r"^\s+(--[a-z-]+) (FLOAT|UINT|INT)\b")
 # The line each subcommand prints just before the FE solver (and its mesh) starts.
 INTRO = ("radiate: ", "bearing-fem contact: ")
+HERE = os.path.dirname(os.path.abspath(__file__))
 # What each subcommand needs besides the option under test (all valid).
 BASE = {
     "contact": ["--race", "inner"],
     "calibrate": [],
     "radiate": ["--source", "cylinder-dipole", "--radius", "0.01"],
+    "modes": [],  # the structure file, written by main()
 }
+# `modes`: a box of tetrahedra gmsh wrote (the fuzz seed) and a valid structure file for it.
+STRUCTURE = """mesh = "{mesh}"
+mesh_unit = "mm"
+[material]
+young = "210 GPa"
+poisson = 0.3
+density = "7850 kg/m^3"
+[boundary]
+fixed = ["fixed"]
+seat = "seat"
+"""
 
 
 def ranges(fem, sub):
@@ -89,6 +102,11 @@ def main():
     fem, out_root = sys.argv[1], sys.argv[2]
     shutil.rmtree(out_root, ignore_errors=True)
     os.makedirs(out_root)
+    structure = os.path.join(out_root, "structure.toml")
+    with open(structure, "w") as f:
+        f.write(STRUCTURE.format(mesh=os.path.join(
+            HERE, "..", "fuzz", "corpus", "gmsh_mesh", "box_tetrahedra_22.msh")))
+    BASE["modes"] = [structure]
     failures, calls = [], []
     for sub in BASE:
         found, unranged = ranges(fem, sub)
@@ -115,6 +133,9 @@ def main():
         ("radiate", ["--frequencies", "100,0"], ["--frequencies"]),
         ("radiate", ["--reference", "sphere-dipole"], ["--reference"]),
         ("radiate", ["--physical-radius", "0.005"], ["physical radius"]),
+        ("modes", ["--degree", "3"], ["--degree"]),
+        ("modes", ["--frf", ",".join(str(k) for k in range(1, 22))], ["--frf"]),
+        ("modes", ["--count", "2.5"], ["--count"]),
     ]
     calls += [(sub, args, names, f"{sub} {' '.join(args)}") for sub, args, names in rules]
     # Each call spends most of its ~1 s waiting in MPI's start-up, not computing: four at a time

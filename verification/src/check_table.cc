@@ -71,6 +71,7 @@ std::vector<Check> all_checks() {
   append(all, acoustics_paper_checks());
   append(all, acoustics_decay_checks());
   append(all, acoustics_fe_checks());
+  append(all, structure_checks());
   append(all, paper_checks());
   append(all, paper_contact_checks());
   append(all, measured_checks());

@@ -179,6 +179,35 @@ nlohmann::json Context::fem(const std::vector<std::string>& args,
   return fem_->run(args, json_name);
 }
 
+int Context::fe_degree(int degree) const {
+  read(kFeDegree);
+  return std::max(1, degree + perturbation_.fe_degree);
+}
+
+double Context::structure_young(double young) const {
+  read(kStructure);
+  return young * perturbation_.structure_young;
+}
+
+nlohmann::json Context::modal(nlohmann::json m) const {
+  read(kStructure);
+  const double s = perturbation_.modal_shapes;
+  const auto scale = [](nlohmann::json& a, double f) {
+    for (auto& v : a) v = v.get<double>() * f;
+  };
+  for (const char* k : {"x", "y", "z", "tilt_x", "tilt_y", "tilt_z"}) scale(m["seat"][k], s);
+  for (auto& sensor : m["sensors"])
+    for (const char* k : {"x", "y", "z"}) scale(sensor[k], s);
+  for (const char* k : {"x", "y", "z"}) scale(m["effective_mass"][k], s * s);
+  return m;
+}
+
+std::string Context::fem_input(const std::string& stem, const std::string& extension,
+                               const std::string& text) const {
+  if (fem_ == nullptr) throw Skipped("no FE runner in this context");
+  return fem_->input_file(stem, extension, text);
+}
+
 int Context::fe_cells(int cells) const {
   read(kFeCells);
   return std::max(1, static_cast<int>(std::lround(cells * perturbation_.fe_cells)));

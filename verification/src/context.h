@@ -108,6 +108,18 @@ class Context {
   nlohmann::json fem(const std::vector<std::string>& args, const std::string& json_name) const;
   /// A mesh-resolution argument as the perturbation makes it (at least 1).
   int fe_cells(int cells) const;
+  /// The FE degree asked of bearing-fem modes as the perturbation makes it (at least 1).
+  int fe_degree(int degree) const;
+  /// A structure's Young's modulus as bearing-fem modes is to read it [Pa] (perturbed).
+  double structure_young(double young) const;
+  /// modes.json as the toolkit's modal model reads it: every shape value (seat, sensors) and the
+  /// effective masses (quadratic in the shapes) scaled by the perturbation.
+  nlohmann::json modal(nlohmann::json modes) const;
+  /// Writes `text` once to the FE runs' folder under a name made of `stem`, a hash of the text
+  /// and `extension` (the same text: the same file, so memoised runs stay right) and returns its
+  /// path. Throws Skipped without an FE runner.
+  std::string fem_input(const std::string& stem, const std::string& extension,
+                        const std::string& text) const;
 
   /// The repository root (examples/, meshes/).
   const std::string& source_dir() const { return source_dir_; }

@@ -26,6 +26,7 @@ std::vector<Check> paper_checks();              ///< checks/papers.cc: examples/
 std::vector<Check> measured_checks();       ///< checks/measured.cc: the CWRU rig's records analysed
 std::vector<Check> unit_test_checks();      ///< checks/unit_tests.cc: the physics unit-test suites
 std::vector<Check> paper_contact_checks();  ///< checks/papers_contact.cc: TVDS, ball approach, SPL
+std::vector<Check> structure_checks();  ///< checks/structure.cc: FE natural modes, modal transfer
 
 /// The families (Check::family), in report order, with the title the report gives each.
 struct Family {
@@ -38,6 +39,7 @@ inline constexpr Family kFamilies[] = {
     {"stiffness", "Bearing stiffness for rotor models: the 5-DOF static solution"},
     {"dynamics", "Dynamics: conservation, limits, convergence, spectra"},
     {"acoustics", "Acoustics: sources, decay, finite-element radiation"},
+    {"structure", "Structure: FE natural modes and the modal transfer path"},
     {"paper", "Source papers: reproduced tables and figures"},
     {"measured", "Measured records: the CWRU test rig and the fault-line threshold"},
     {"unit", "Unit tests of the physics: closed forms, orders, conservation laws, reductions"},

@@ -3,6 +3,8 @@
 #include <sys/wait.h>
 
 #include <chrono>
+#include <cstdint>
+#include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -71,6 +73,24 @@ nlohmann::json FemRunner::run(const std::vector<std::string>& args, const std::s
     }
   }
   return it->second.get();
+}
+
+std::string FemRunner::input_file(const std::string& stem, const std::string& extension,
+                                  const std::string& text) {
+  // FNV-1a of the text: a stable name for the same content, within and across runs.
+  std::uint64_t h = 1469598103934665603ull;
+  for (unsigned char c : text) h = (h ^ c) * 1099511628211ull;
+  char hash[17];
+  std::snprintf(hash, sizeof hash, "%016llx", static_cast<unsigned long long>(h));
+  const fs::path dir = fs::path(work_dir_) / "inputs";
+  const std::string path = (dir / (stem + "-" + std::string(hash, 8) + "." + extension)).string();
+  std::lock_guard<std::mutex> lock(inputs_mutex_);
+  if (inputs_.count(path) == 0) {
+    fs::create_directories(dir);
+    std::ofstream(path) << text;
+    inputs_[path] = text;
+  }
+  return path;
 }
 
 nlohmann::json FemRunner::execute(const std::vector<std::string>& args,

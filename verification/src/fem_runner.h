@@ -33,6 +33,12 @@ class FemRunner {
   /// the message carries its exit status and the end of its output).
   nlohmann::json run(const std::vector<std::string>& args, const std::string& json_name);
 
+  /// Writes `text` to WORK_DIR/inputs/STEM-HASH.EXTENSION unless that file was written already by
+  /// this runner (thread-safe) and returns its path: input files the checks write for bearing-fem
+  /// (structure files, .geo), named by their content so that equal arguments mean equal inputs.
+  std::string input_file(const std::string& stem, const std::string& extension,
+                         const std::string& text);
+
   bool available() const { return !program_.empty(); }
   const std::string& program() const { return program_; }
   int mpi_processes() const { return mpi_; }
@@ -46,6 +52,8 @@ class FemRunner {
   std::string work_dir_;
   std::mutex mutex_;
   std::map<std::string, std::shared_future<nlohmann::json>> runs_;
+  std::mutex inputs_mutex_;
+  std::map<std::string, std::string> inputs_;  ///< path -> text written
 };
 
 }  // namespace bearing::verify

@@ -50,6 +50,17 @@ const std::vector<Mutation>& mutations() {
        with([](Perturbation& p) { p.analysis_speed = 1.03; })},
       {"prewhitening-dropped", "a measured record's cepstral pre-whitening left out",
        with([](Perturbation& p) { p.drop_prewhitening = true; })},
+      {"structure-young-x1.1",
+       "a structure's Young's modulus 10 % high as bearing-fem modes reads it (a units slip in the "
+       "structure file): every natural frequency 4.9 % high",
+       with([](Perturbation& p) { p.structure_young = 1.1; })},
+      {"modal-shapes-x1.05",
+       "every mode shape read from modes.json 5 % large (a mass-normalisation slip): the seat's "
+       "and the sensors' modal data, the effective masses 10 %",
+       with([](Perturbation& p) { p.modal_shapes = 1.05; })},
+      {"fe-degree-lowered",
+       "the FE degree one below the one asked of bearing-fem modes (P1 tetrahedra for P2)",
+       with([](Perturbation& p) { p.fe_degree = -1; })},
       {"false-alarm-x100",
        "the fault-line threshold computed for a false-alarm rate 100 times the stated one",
        with([](Perturbation& p) { p.false_alarm = 100; })},

@@ -21,6 +21,8 @@ enum Knob : unsigned {
   kFeCells = 1u << 9,     ///< fe_cells
   kDefect = 1u << 10,     ///< defect_width
   kAnalysis = 1u << 11,   ///< analysis_speed, drop_prewhitening, false_alarm
+  kStructure = 1u << 12,  ///< structure_young, modal_shapes
+  kFeDegree = 1u << 13,   ///< fe_degree
 };
 
 struct Perturbation {
@@ -39,7 +41,10 @@ struct Perturbation {
   double defect_width = 1.0;         ///< × the width of every local defect the models see [-]
   double analysis_speed = 1.0;       ///< × the shaft speed a record's analysis is given [-]
   bool drop_prewhitening = false;    ///< a record analysed without its cepstral pre-whitening
-  double false_alarm = 1.0;  ///< × the false-alarm rate the fault-line threshold is for [-]
+  double false_alarm = 1.0;      ///< × the false-alarm rate the fault-line threshold is for [-]
+  double structure_young = 1.0;  ///< × Young's modulus of a structure bearing-fem modes reads [-]
+  double modal_shapes = 1.0;     ///< × every shape value read from modes.json (seat, sensors) [-]
+  int fe_degree = 0;             ///< + the FE degree asked of bearing-fem modes (-1: P1 for P2) [-]
 
   /// The knobs this perturbation turns away from the identity.
   unsigned changed() const {
@@ -56,6 +61,8 @@ struct Perturbation {
     if (fe_cells != 1.0) k |= kFeCells;
     if (defect_width != 1.0) k |= kDefect;
     if (analysis_speed != 1.0 || drop_prewhitening || false_alarm != 1.0) k |= kAnalysis;
+    if (structure_young != 1.0 || modal_shapes != 1.0) k |= kStructure;
+    if (fe_degree != 0) k |= kFeDegree;
     return k;
   }
 };

@@ -15,8 +15,8 @@
 
 #include "bearing/errors.h"
 #include "bearing/hertz.h"
+#include "bearing/toml_guard.h"
 #include "case_schema.h"
-#include "toml_guard.h"
 #include "toml_reader.h"
 
 namespace bearing {

@@ -1,6 +1,6 @@
 // What toml++ 3.3.0 must not be given (toml_guard.h): a small scan of TOML's strings and comments.
 
-#include "toml_guard.h"
+#include "bearing/toml_guard.h"
 
 #include <cstdio>
 #include <vector>
