@@ -19,6 +19,7 @@
 #include "bearing/case_file.h"
 #include "bearing/constants.h"
 #include "bearing/errors.h"
+#include "bearing/info_report.h"
 #include "bearing/kinematics.h"
 #include "bearing/local_defect.h"
 #include "bearing/models/random_slip.h"
@@ -381,6 +382,28 @@ TEST(RandomSlip, TableRulesNameTheKey) {
             std::string::npos);
   EXPECT_NE(error("slip.seed=-3").find("slip.seed = -3"), std::string::npos);
   EXPECT_NE(error("slip.seed=1.5").find("slip.seed"), std::string::npos);
+}
+
+// info --json reports the slip a run would use: the default correlation time resolved to one ball
+// pass, 1/BPFO, a given one as given, nothing without [slip].
+TEST(RandomSlip, InfoReportsTheSlipAsTheRunUsesIt) {
+  const Case off = default_case({});
+  EXPECT_FALSE(info_json(compute_info(off)).contains("slip"));
+  const Case c = default_case({parse_override("slip.rms=0.015"), parse_override("slip.seed=7")});
+  const InfoReport r = compute_info(c);
+  const nlohmann::json j = info_json(r);
+  ASSERT_TRUE(j.contains("slip"));
+  EXPECT_EQ(j["slip"]["rms"].get<double>(), 0.015);
+  EXPECT_EQ(j["slip"]["seed"].get<int>(), 7);
+  EXPECT_EQ(j["slip"]["correlation_time_source"].get<std::string>(), "one ball pass");
+  EXPECT_DOUBLE_EQ(j["slip"]["correlation_time"].get<double>(), 1.0 / r.frequencies.bpfo);
+  EXPECT_EQ(j["units"]["slip.correlation_time"].get<std::string>(), "s");
+  EXPECT_NE(info_text(r).find("Slip: the cage speed fluctuates by 1.5 % RMS"), std::string::npos);
+  const Case given = default_case({parse_override("slip.rms=0.01"),
+                                   parse_override("slip.correlation_time=2ms")});
+  const nlohmann::json g = info_json(compute_info(given));
+  EXPECT_EQ(g["slip"]["correlation_time_source"].get<std::string>(), "given");
+  EXPECT_EQ(g["slip"]["correlation_time"].get<double>(), 0.002);
 }
 
 }  // namespace

@@ -193,6 +193,7 @@ nlohmann::json info_json(const InfoReport& r) {
     j["housing"] = housing_json(h);
     j["housing"]["modes"] = modes;
   }
+  if (r.input.slip.enabled()) j["slip"] = slip_json(r.input.slip, r.frequencies.bpfo);
   // K is in N/m^n with the exponent n beside it (1.5 for the Hertz methods).
   const std::string k_unit = cal ? "N/m^exponent" : "N/m^1.5";
   j["units"] = {{"case.speed", "rad/s"},
@@ -225,6 +226,7 @@ nlohmann::json info_json(const InfoReport& r) {
     j["units"]["housing.modes.frequency"] = "Hz";
     j["units"]["housing.modes.housing_share"] = "1";
   }
+  if (r.input.slip.enabled()) add_slip_units(j["units"]);
   j["stiffness"] = stiffness_info_json(r);
   if (r.stiffness) {
     j["units"]["stiffness.load"] = kStiffnessLoadUnits;
@@ -479,6 +481,7 @@ std::string info_text(const InfoReport& r) {
   }
   o << defects_text(r);
   o << housing_text(r);
+  if (r.input.slip.enabled()) o << "\n" << slip_line(r.input.slip, r.frequencies.bpfo);
   o << stiffness_info_text(r);
   return o.str();
 }

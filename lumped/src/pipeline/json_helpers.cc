@@ -1,6 +1,7 @@
 #include "bearing/json_helpers.h"
 
 #include <cmath>
+#include <cstdio>
 
 #include "bearing/errors.h"
 
@@ -54,6 +55,30 @@ void add_housing_units(const Housing& h, nlohmann::json& units) {
   units["housing.frequencies"] = "Hz";
   units["housing.damping_ratios"] = "1";
   units["housing.sensors.point"] = "m";
+}
+
+nlohmann::json slip_json(const RandomSlip& slip, double bpfo) {
+  const bool given = slip.correlation_time > 0;
+  return {{"rms", slip.rms},
+          {"correlation_time", given ? slip.correlation_time : 1.0 / bpfo},
+          {"correlation_time_source", given ? "given" : "one ball pass"},
+          {"seed", slip.seed}};
+}
+
+void add_slip_units(nlohmann::json& units) {
+  units["slip.rms"] = "1";
+  units["slip.correlation_time"] = "s";
+}
+
+std::string slip_line(const RandomSlip& slip, double bpfo) {
+  const bool given = slip.correlation_time > 0;
+  char buf[160];
+  std::snprintf(buf, sizeof buf,
+                "Slip: the cage speed fluctuates by %.4g %% RMS, correlation time %.4g s%s, "
+                "seed %d\n",
+                100 * slip.rms, given ? slip.correlation_time : 1.0 / bpfo,
+                given ? "" : " (one ball pass)", slip.seed);
+  return buf;
 }
 
 void require_finite(const nlohmann::json& j, const std::string& path) {

@@ -166,12 +166,7 @@ nlohmann::json summary_json(const Case& c, const SimulationResult& r, const RunS
   if (c.housing.enabled) j["housing"] = housing_json(c.housing);
   // The cage's random slip as it ran (random_slip.h): its correlation time resolved (the default,
   // one ball pass, is 1/BPFO at the model's cage speed).
-  if (c.slip.enabled())
-    j["slip"] = {
-        {"rms", c.slip.rms},
-        {"correlation_time", c.slip.correlation_time > 0 ? c.slip.correlation_time : 1.0 / f.bpfo},
-        {"correlation_time_source", c.slip.correlation_time > 0 ? "given" : "one ball pass"},
-        {"seed", c.slip.seed}};
+  if (c.slip.enabled()) j["slip"] = slip_json(c.slip, f.bpfo);
   j["channels"] = json::object();
   j["peaks"] = json::object();
   for (const auto& ch : s.channels) {
@@ -237,10 +232,7 @@ nlohmann::json summary_json(const Case& c, const SimulationResult& r, const RunS
     j["units"]["cage.ball_damping"] = "N s/m";
   }
   if (c.housing.enabled) add_housing_units(c.housing, j["units"]);
-  if (c.slip.enabled()) {
-    j["units"]["slip.rms"] = "1";
-    j["units"]["slip.correlation_time"] = "s";
-  }
+  if (c.slip.enabled()) add_slip_units(j["units"]);
   if (!s.envelopes.empty()) {
     j["envelope"] = envelope_json(s.envelopes);
     add_envelope_units(j["units"]);
@@ -282,15 +274,7 @@ std::string summary_text(const Case& c, const SimulationResult& r, const RunSumm
                   c.ball.centrifugal ? "on" : "off");
     o << buf;
   }
-  if (c.slip.enabled()) {
-    std::snprintf(buf, sizeof buf,
-                  "Slip: the cage speed fluctuates by %.4g %% RMS, correlation time %.4g s%s, "
-                  "seed %d\n",
-                  100 * c.slip.rms,
-                  c.slip.correlation_time > 0 ? c.slip.correlation_time : 1.0 / r.frequencies.bpfo,
-                  c.slip.correlation_time > 0 ? "" : " (one ball pass)", c.slip.seed);
-    o << buf;
-  }
+  if (c.slip.enabled()) o << slip_line(c.slip, r.frequencies.bpfo);
   if (c.housing.enabled && c.housing.modal()) {
     const StructureModes& m = *c.housing.modes;
     std::snprintf(buf, sizeof buf, "Housing: %d structure modes, %.4g to %.4g Hz alone (%s)\n",

@@ -10,6 +10,7 @@
 #include "bearing/calibration.h"
 #include "bearing/contact.h"
 #include "bearing/models/housing.h"
+#include "bearing/models/random_slip.h"
 
 namespace bearing {
 
@@ -23,6 +24,14 @@ nlohmann::json calibration_json(const ContactCalibration& cal, const ContactCons
 nlohmann::json housing_json(const Housing& housing);
 /// Their units, into a summary's or info's `units` (keys "housing.<key>").
 void add_housing_units(const Housing& housing, nlohmann::json& units);
+
+/// The cage's random slip as a run uses it (random_slip.h): {rms, correlation_time [s] resolved
+/// (the default, one ball pass, is 1/bpfo [Hz]), correlation_time_source, seed}.
+nlohmann::json slip_json(const RandomSlip& slip, double bpfo);
+/// Their units, into a summary's or info's `units` (keys "slip.<key>").
+void add_slip_units(nlohmann::json& units);
+/// The one line `info` and `run` print for it ("Slip: ...\n").
+std::string slip_line(const RandomSlip& slip, double bpfo);
 
 /// Throws SolverError naming the JSON path of the first NaN or infinity in `j`.
 void require_finite(const nlohmann::json& j, const std::string& path = "");
