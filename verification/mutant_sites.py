@@ -36,6 +36,10 @@ PHYSICS_FILES = [
     "lumped/src/models/race_stiffness.h", "lumped/src/models/groove_geometry.h",
     "lumped/src/models/defect_excitation.h", "lumped/src/models/phasor.h",
     "lumped/src/models/curvature_compliance_table.h", "lumped/src/models/static_rk4.h",
+    # the transfer path and random slip (issue 40): the modes file, the housed model and its
+    # support's kernels, the cage's slip
+    "lumped/src/core/structure_modes.cc", "lumped/src/models/housed_model.h",
+    "lumped/src/models/support_kernels.cc", "lumped/src/models/random_slip.cc",
     # integrators
     "lumped/src/solvers/rk4.cc", "lumped/src/solvers/rk4_wide.cc",
     "lumped/include/solvers/bearing/solvers/rk4_loop.h",

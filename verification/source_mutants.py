@@ -1,15 +1,18 @@
 #!/usr/bin/python3
 """Code mutants of the physics sources (issue 30): `bearing-verify mutate --source` runs this.
 
-    source_mutants.py generate [--mutants N] [--fem-mutants M] [--seed S] [--repo DIR]
-                               [--json FILE]
-    source_mutants.py run --out DIR [--mutants N] [--fem-mutants M] [--seed S] [--level quick]
-                          [--jobs J] [--repo DIR] [--commit REV] [--scratch DIR] [--min-score F]
+    source_mutants.py generate [--mutants N] [--fem-mutants M] [--seed S] [--files REGEX]
+                               [--repo DIR] [--json FILE]
+    source_mutants.py run --out DIR [--mutants N] [--fem-mutants M] [--seed S] [--files REGEX]
+                          [--level quick] [--jobs J] [--repo DIR] [--commit REV] [--scratch DIR]
+                          [--min-score F]
 
 `generate` finds mutation sites on the code lines of PHYSICS_FILES and FEM_FILES (arithmetic and
 comparison operators, numeric literals, cos/sin, min/max, floor/ceil, a dropped term, swapped
 arguments, &&/||) and draws a fixed-seed sample covering every file: N from lumped/src/, M from
-fem/. `run` copies the commit under test to a scratch folder once (git archive), configures it
+fem/. `--files REGEX` keeps only the files whose path it matches (Python re.search), so a study of
+new sources draws all its N (and M) from them, at least two a file; the hand-written mutants are
+then left out unless their file matches too. `run` copies the commit under test to a scratch folder once (git archive), configures it
 once (Release, FE off), and for each mutant writes the mutated line, rebuilds bearing-verify
 (only the mutated file recompiles; ccache serves the rest), runs `bearing-verify run --level
 quick --fail-fast` and classifies it: killed (a check failed, or bearing-verify crashed, exited
@@ -226,15 +229,24 @@ def write_outputs(out, meta, mutants):
         h.write("\n".join(lines) + "\n")
 
 
+def selected(files, pattern):
+    """The files whose path matches --files (all without it)."""
+    return [f for f in files if pattern is None or re.search(pattern, f)]
+
+
 def draw(src, args):
     """The mutants of this run: the lumped draw, the hand-written ones and the fem/ draw."""
-    mutants, total, stats = generate(src, args.mutants, args.seed)
+    pattern = getattr(args, "files", None)
+    lumped_files, fem_files = selected(PHYSICS_FILES, pattern), selected(FEM_FILES, pattern)
+    mutants, total, stats = [], 0, {}
+    if lumped_files:
+        mutants, total, stats = generate(src, args.mutants, args.seed, lumped_files)
     if args.only_hand:
         mutants = []
     if not args.no_hand:
-        mutants += hand_mutants(src)
-    if args.fem_mutants > 0:
-        fem, fem_total, fem_stats = generate(src, args.fem_mutants, args.seed, FEM_FILES)
+        mutants += [m for m in hand_mutants(src) if pattern is None or re.search(pattern, m["file"])]
+    if args.fem_mutants > 0 and fem_files:
+        fem, fem_total, fem_stats = generate(src, args.fem_mutants, args.seed, fem_files)
         mutants += fem
         total += fem_total
         stats.update(fem_stats)
@@ -298,7 +310,7 @@ def run(args):
     os.makedirs(logs, exist_ok=True)
     baseline(lumped, args.level, args.jobs, logs, say)
     meta = {"format": "bearing-verify source mutants 1", "commit": rev, "seed": args.seed,
-            "level": args.level, "sites": total, "files": stats,
+            "level": args.level, "sites": total, "files": stats, "files_pattern": args.files,
             "baseline": lumped["baseline"], "run_timeout_s": lumped["timeout"]}
     fem = prepare_fem(args, rev, scratch, lumped, mutants, meta, say)
     judged = load_judgements()
@@ -408,6 +420,8 @@ def main():
         s.add_argument("--fem-mutants", type=int, default=DEFAULT_FEM_COUNT,
                        help="mutants of fem/ (0: none; judged only where deal.II is found)")
         s.add_argument("--seed", type=int, default=DEFAULT_SEED)
+        s.add_argument("--files", metavar="REGEX",
+                       help="only the physics files whose path matches (e.g. a new source's)")
     g = sub.choices["generate"]
     g.add_argument("--json", help="write the drawn mutants here (default: stdout)")
     r = sub.choices["run"]
@@ -432,18 +446,31 @@ def main():
     a = p.parse_args()
     if a.command == "score":
         return rescore(a)
-    if a.mutants < len(PHYSICS_FILES):
+    if a.files is not None:
+        try:
+            re.compile(a.files)
+        except re.error as e:
+            print("source_mutants: --files = \"%s\": not a regular expression (%s)" % (a.files, e),
+                  file=sys.stderr)
+            return 2
+        if not selected(PHYSICS_FILES + FEM_FILES, a.files):
+            print("source_mutants: --files = \"%s\": matches no physics file; allowed: a pattern "
+                  "of paths in mutant_sites.py's PHYSICS_FILES or FEM_FILES" % a.files,
+                  file=sys.stderr)
+            return 2
+    lumped_files, fem_files = selected(PHYSICS_FILES, a.files), selected(FEM_FILES, a.files)
+    if lumped_files and a.mutants < len(lumped_files):
         print("source_mutants: --mutants = %d: too few; allowed: at least %d (the number of "
-              "physics files)" % (a.mutants, len(PHYSICS_FILES)), file=sys.stderr)
+              "physics files)" % (a.mutants, len(lumped_files)), file=sys.stderr)
         return 2
-    if a.fem_mutants != 0 and a.fem_mutants < len(FEM_FILES):
+    if fem_files and a.fem_mutants != 0 and a.fem_mutants < len(fem_files):
         print("source_mutants: --fem-mutants = %d: too few; allowed: 0 or at least %d (the "
-              "number of fem/ physics files)" % (a.fem_mutants, len(FEM_FILES)), file=sys.stderr)
+              "number of fem/ physics files)" % (a.fem_mutants, len(fem_files)), file=sys.stderr)
         return 2
     if a.command == "generate":
         mutants, total, stats = draw(a.repo, argparse.Namespace(
-            mutants=a.mutants, fem_mutants=a.fem_mutants, seed=a.seed, only_hand=False,
-            no_hand=True))
+            mutants=a.mutants, fem_mutants=a.fem_mutants, seed=a.seed, files=a.files,
+            only_hand=False, no_hand=True))
         doc = {"seed": a.seed, "sites": total, "files": stats, "mutants": mutants}
         text = json.dumps(doc, indent=1)
         if a.json:
