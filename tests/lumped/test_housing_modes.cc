@@ -254,9 +254,10 @@ TEST(HousingModes, StaticStartIsAnEquilibrium) {
   EXPECT_NEAR(q0[2], (0.3 * 40 + 0.25 * -500) / (w1 * w1), 1e-15);
 }
 
-// The ball channels and the contacts' switching functions are the bearing's at the rings'
-// relative position, q − q_s with the seat displaced by its modes (housing.h), for the resonator
-// and the modes alike: against the bearing model built without the housing, at that position.
+// The ball channels, the contacts' switching functions and the potential energy are the bearing's
+// at the rings' relative position (with the support's springs' energy added), q − q_s with the seat
+// displaced by its modes (housing.h), for the resonator and the modes alike: against the bearing
+// model built without the housing, at that position.
 TEST(HousingModes, BallChannelsAreTheBearingsAtTheRelativePosition) {
   TempDir dir;
   const std::string file =
@@ -303,6 +304,17 @@ TEST(HousingModes, BallChannelsAreTheBearingsAtTheRelativePosition) {
     bearing->ball_loads(0.0, qr.data(), expected.data());
     bearing->ball_approaches(0.0, qr.data(), expected_approaches.data());
     bearing->switching_functions(0.0, qr.data(), h.data());
+    // The potential energy: the contacts' at q_r and the support's springs, ½ Σ k η² with
+    // k = ω_k² for mass-normalised modes, ½ m_h ω_h² (x_h² + y_h²) for the resonator.
+    double springs = 0.0;
+    if (housing.size() == 1) {
+      const double f[] = {1800.0, 3100.0, 5200.0};
+      for (int k = 0; k < 3; ++k) springs += 0.5 * std::pow(two_pi * f[k] * q[2 + k], 2);
+    } else {
+      springs = 0.5 * 2.0 * std::pow(two_pi * 3000.0, 2) * (q[2] * q[2] + q[3] * q[3]);
+    }
+    const double energy = bearing->potential_energy(0.0, qr.data()) + springs;
+    EXPECT_NEAR(model->potential_energy(0.0, q.data()), energy, 1e-12 * energy) << housing[0];
     for (int j = 0; j < Z; ++j) {
       EXPECT_NEAR(loads[j], expected[j], 1e-9 * (1 + expected[j])) << housing[0] << " ball " << j;
       EXPECT_NEAR(approaches[j], expected_approaches[j], 1e-18) << housing[0] << " ball " << j;
@@ -348,8 +360,8 @@ TEST(HousingModes, TableRulesNameTheKey) {
   EXPECT_TRUE(has(input_error({modes, "model.kind=balls"}), "[housing]: model.kind = \"balls\""));
   EXPECT_TRUE(has(input_error({"housing.modes=" + dir.path() + "/none.json"}), "cannot read"));
   EXPECT_TRUE(has(input_error({"housing.damping_ratio=0.02"}), "housing.mass is missing"));
-  const std::string seat = write_modes(dir.path() + "/seat.json", {1800.0}, {0.3}, {0.25}, {0.1},
-                                       {0.3}, "seat");
+  const std::string seat =
+      write_modes(dir.path() + "/seat.json", {1800.0}, {0.3}, {0.25}, {0.1}, {0.3}, "seat");
   EXPECT_TRUE(has(input_error({"housing.modes=" + seat}), "a sensor is named \"seat\""));
 }
 
