@@ -48,7 +48,9 @@ if [[ ! -f $tree/build/build.ninja ]]; then
   }
 fi
 targets=(bearing-sim)
-if ninja -C "$tree/build" -t targets all 2>/dev/null | grep -q '^_bearing:'; then
+# grep without -q reads the whole list: with pipefail, -q's early exit would fail ninja on SIGPIPE
+# and silently leave the module out (REF's import then timed a package without it).
+if ninja -C "$tree/build" -t targets all 2>/dev/null | grep '^_bearing:' >/dev/null; then
   targets+=(_bearing)
 fi
 echo "perf_guard.sh: building ${targets[*]} of $short in $tree/build" >&2
