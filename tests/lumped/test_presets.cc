@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include "bearing/errors.h"
+#include "bearing/kinematics.h"
 #include "bearing/presets.h"
 
 using bearing::preset;
@@ -45,6 +46,26 @@ TEST(Presets, Seed004Bearing6304) {
   EXPECT_NEAR(b.clearance, 15e-6, 1e-15);
   EXPECT_DOUBLE_EQ(b.ball.young, 2.07e11);
   EXPECT_DOUBLE_EQ(b.rings.poisson, 0.3);
+}
+
+// The CWRU fan-end bearing: the data set's geometry and the defect frequencies that follow from it
+// (multiples of the shaft speed, contact angle 0). The data set prints BPFI 4.9469 (the same to
+// its digits), BPFO 3.0530, FTF 0.3817 and 2·BSF 3.9900, which differ from its own geometry's by
+// 0.004 %, 0.016 % and 0.06 %: its rounding, not this preset's (presets.cc).
+TEST(Presets, CwruFanEndBearing6203) {
+  const auto b = preset("6203");
+  EXPECT_EQ(b.balls, 8);
+  EXPECT_NEAR(b.ball_diameter, 6.74624e-3, 1e-12);
+  EXPECT_NEAR(b.pitch_diameter, 28.4988e-3, 1e-12);
+  EXPECT_NEAR(b.clearance, 10.5e-6, 1e-15);
+  const bearing::BearingFrequencies f = bearing::bearing_frequencies(b, 2 * M_PI);  // f_r = 1 Hz
+  const double r = 0.2656 / 1.122;  // D / d_m
+  EXPECT_NEAR(f.shaft, 1.0, 1e-12);
+  EXPECT_NEAR(f.bpfi, 4 * (1 + r), 1e-12);
+  EXPECT_NEAR(f.bpfi, 4.9469, 0.5e-4);  // the data set's, to its printed digits
+  EXPECT_NEAR(f.bpfo, 4 * (1 - r), 1e-12);
+  EXPECT_NEAR(f.ftf, 0.5 * (1 - r), 1e-12);
+  EXPECT_NEAR(2 * f.bsf, (1 - r * r) / r, 1e-12);
 }
 
 TEST(Presets, HarrisBearing209) {

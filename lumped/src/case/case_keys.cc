@@ -26,7 +26,7 @@ auto preset_or_required(std::string leaf, At at) {
     if (c.preset.empty())
       throw InputError("bearing." + leaf +
                        " is missing: give it, or choose a catalogue bearing with bearing.preset (" +
-                       "608, 6304, 6308, 6205, 209)");
+                       "608, 6304, 6308, 6205, 6203, 209)");
     return at(c);
   };
 }
@@ -39,7 +39,7 @@ Key geometry(const std::string& leaf, Dimension dim, std::string help, At at) {
 
 std::vector<Key> bearing_keys() {
   Key preset = described("bearing.preset", Kind::text, D::dimensionless,
-                         "catalogue bearing (608, 6304, 6308, 6205, 209); other keys override it");
+                         "catalogue bearing (608, 6304, 6308, 6205, 6203, 209); other keys override it");
   preset.read = read_preset;
   // Written first, so the keys after it override every value it sets: the run of case.toml is
   // the same bearing under the same designation (summary.json's case.bearing), not "custom".

@@ -8,7 +8,7 @@
 
 namespace bearing {
 
-/// The preset with this designation ("608", "6304", "6308", "6205", "209"); throws InputError
+/// The preset with this designation ("608", "6304", "6308", "6205", "6203", "209"); throws InputError
 /// naming the key `bearing.preset` and listing the known designations.
 Bearing preset(const std::string& designation);
 
