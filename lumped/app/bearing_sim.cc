@@ -397,6 +397,49 @@ void add_sweep_options(CLI::App* cmd, SweepOptions& o) {
       ->check(bearing::cli::range(0, 4096));
 }
 
+// `info`: the case's contact law, constants, frequencies, static state and stiffness.
+CLI::App* add_info_command(CLI::App& app, std::string& case_path, std::vector<std::string>& sets,
+                           bool& json) {
+  auto* info = app.add_subcommand(
+      "info",
+      "The contact law in use (a Hertz method, or the FE-calibrated constants of "
+      "model.calibration), contact constants per race (sum rho, F(rho), ellipticity, delta*, K, "
+      "exponent) and of the ball between both races, bearing frequencies (shaft, FTF, BPFO, "
+      "BPFI, BSF), the static load distribution (deflection, ball loads, Q_max) and the 5x5 "
+      "stiffness at the case's loads (5-DOF static solution, as `stiffness`) for a case");
+  add_case_options(info, case_path, sets);
+  info->add_flag("--json", json,
+                 "Print JSON (SI units) with the keys kinematics.{shaft,ftf,bpfo,bpfi,bsf}, "
+                 "contact.{inner,outer}.{sum_rho,f_rho,ellipticity,delta_star,K,exponent}, "
+                 "contact.{K,exponent,method}, contact.calibration (calibrated law), "
+                 "static.{deflection,ball_angles,ball_loads,q_max}, stiffness.{load, "
+                 "displacement, matrix (5x5 K = dF/dq at every load of the case), q_max}");
+
+  return info;
+}
+
+// `run`: simulate a case and write its result files.
+CLI::App* add_run_command(CLI::App& app, std::string& case_path, std::vector<std::string>& sets,
+                          std::string& out_dir, bool& json, bool& quiet) {
+  auto* run = app.add_subcommand(
+      "run", "Simulate a case (model.kind " + bearing::names_of(bearing::kModelKinds, " | ") +
+                 ") and write DIR/response.csv (t, "
+                 "then x,y,vx,vy,ax,ay [,z,vz,az] [,Q1..QZ] [,r1..rZ,vr1..vrZ]), DIR/spectrum.csv "
+                 "(one-sided amplitude spectra after the transient), "
+                 "DIR/summary.json (channels.<name>.{rms,ptp,kurtosis,crest}, peaks.<name>[] with "
+                 "frequency, "
+                 "amplitude, label, label_error) and DIR/case.toml (the fully resolved case); "
+                 "with output.format = \"npy\" the tables are DIR/response.npy, spectrum.npy, "
+                 "... (float64, full precision) and DIR/columns.json names their columns and "
+                 "units; prints the summary");
+  add_case_options(run, case_path, sets);
+  run->add_option("--out", out_dir, "Folder for the result files (created if missing)")->required();
+  run->add_flag("--json", json, "Print summary.json instead of the readable summary");
+  run->add_flag("--quiet", quiet, "No progress on stderr (also off when stderr is not a terminal)");
+
+  return run;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -431,36 +474,8 @@ int main(int argc, char** argv) {
   bool quiet = false;
   std::string out_dir;
 
-  auto* info = app.add_subcommand(
-      "info",
-      "The contact law in use (a Hertz method, or the FE-calibrated constants of "
-      "model.calibration), contact constants per race (sum rho, F(rho), ellipticity, delta*, K, "
-      "exponent) and of the ball between both races, bearing frequencies (shaft, FTF, BPFO, "
-      "BPFI, BSF), the static load distribution (deflection, ball loads, Q_max) and the 5x5 "
-      "stiffness at the case's loads (5-DOF static solution, as `stiffness`) for a case");
-  add_case_options(info, case_path, sets);
-  info->add_flag("--json", json,
-                 "Print JSON (SI units) with the keys kinematics.{shaft,ftf,bpfo,bpfi,bsf}, "
-                 "contact.{inner,outer}.{sum_rho,f_rho,ellipticity,delta_star,K,exponent}, "
-                 "contact.{K,exponent,method}, contact.calibration (calibrated law), "
-                 "static.{deflection,ball_angles,ball_loads,q_max}, stiffness.{load, "
-                 "displacement, matrix (5x5 K = dF/dq at every load of the case), q_max}");
-
-  auto* run = app.add_subcommand(
-      "run", "Simulate a case (model.kind " + bearing::names_of(bearing::kModelKinds, " | ") +
-                 ") and write DIR/response.csv (t, "
-                 "then x,y,vx,vy,ax,ay [,z,vz,az] [,Q1..QZ] [,r1..rZ,vr1..vrZ]), DIR/spectrum.csv "
-                 "(one-sided amplitude spectra after the transient), "
-                 "DIR/summary.json (channels.<name>.{rms,ptp,kurtosis,crest}, peaks.<name>[] with "
-                 "frequency, "
-                 "amplitude, label, label_error) and DIR/case.toml (the fully resolved case); "
-                 "with output.format = \"npy\" the tables are DIR/response.npy, spectrum.npy, "
-                 "... (float64, full precision) and DIR/columns.json names their columns and "
-                 "units; prints the summary");
-  add_case_options(run, case_path, sets);
-  run->add_option("--out", out_dir, "Folder for the result files (created if missing)")->required();
-  run->add_flag("--json", json, "Print summary.json instead of the readable summary");
-  run->add_flag("--quiet", quiet, "No progress on stderr (also off when stderr is not a terminal)");
+  auto* info = add_info_command(app, case_path, sets, json);
+  auto* run = add_run_command(app, case_path, sets, out_dir, json, quiet);
 
   SweepOptions so;
   auto* sweep = app.add_subcommand(

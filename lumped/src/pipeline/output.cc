@@ -91,10 +91,6 @@ TableLayout write_pressure(const fs::path& path, OutputFormat format, const Bear
       });
 }
 
-}  // namespace
-
-namespace {
-
 nlohmann::json acoustics_json(const Case& c, const BearingNoise& noise) {
   using nlohmann::json;
   const AcousticsOptions& ac = c.acoustics;
@@ -126,23 +122,78 @@ nlohmann::json acoustics_json(const Case& c, const BearingNoise& noise) {
           {"microphones", mics}};
 }
 
+// The case as it ran: its source, bearing, kind, law, operation and solver times.
+nlohmann::json case_json(const Case& c, const SimulationResult& r) {
+  nlohmann::json j = {{"source", c.source},
+                      {"bearing", c.bearing.designation},
+                      {"model", name_of(kModelKinds, c.model.kind)},
+                      {"contact", name_of(kContactLaws, c.model.contact)},
+                      {"speed", c.operation.speed},
+                      {"load", {c.operation.load.x(), c.operation.load.y()}},
+                      {"axial_load", c.operation.axial_load},
+                      {"duration", c.solver.duration},
+                      {"transient", c.solver.transient},
+                      {"output_rate", c.solver.output_rate}};
+  if (c.model.calibration) j["calibration"] = calibration_json(*c.model.calibration, r.contact);
+  return j;
+}
+
+// Each channel's statistics and (but for the balls') its named peaks, into j.
+void add_channels(const RunSummary& s, nlohmann::json& j) {
+  using nlohmann::json;
+  j["channels"] = json::object();
+  j["peaks"] = json::object();
+  for (const auto& ch : s.channels) {
+    const auto& st = ch.statistics;
+    j["channels"][ch.name] = {{"mean", st.mean},         {"rms", st.rms},     {"ptp", st.ptp},
+                              {"kurtosis", st.kurtosis}, {"crest", st.crest}, {"unit", ch.unit}};
+    if (ch.group == ChannelGroup::ball) continue;
+    json peaks = json::array();
+    for (const auto& p : ch.peaks)
+      peaks.push_back({{"frequency", p.frequency},
+                       {"amplitude", p.amplitude},
+                       {"label", p.label},
+                       {"label_error", p.label_error}});
+    j["peaks"][ch.name] = peaks;
+  }
+}
+
+// How the run was solved: the integrator's statistics, or the quasi-static Newton's (no
+// integrator ran: solver.method, dt and tolerance did not matter), with their units.
+void add_solver(const Case& c, const SimulationResult& r, nlohmann::json& j) {
+  if (!r.quasi_static) {
+    j["solver"] = {{"method", name_of(kIntegratorMethods, c.solver.method)},
+                   {"dt", c.solver.dt},
+                   {"tolerance", c.solver.tolerance},
+                   {"steps", r.stats.steps},
+                   {"rejected_steps", r.stats.rejected_steps},
+                   {"force_evaluations", r.stats.force_evaluations}};
+    return;
+  }
+  const QuasiStaticStats& q = *r.quasi_static;
+  j["solver"] = {{"method", "quasistatic newton"},
+                 {"steps", q.steps},
+                 {"newton_iterations", q.newton_iterations},
+                 {"fallbacks", q.fallbacks},
+                 {"max_relative_residual", q.max_relative_residual},
+                 {"min_loaded_balls", q.min_loaded_balls},
+                 {"contact_changes", q.contact_changes},
+                 {"jumps", q.jumps},
+                 {"largest_jump", q.largest_jump},
+                 {"minimum_load", q.minimum_load}};
+  // F_smooth is infinite for Z <= 4 (JSON has no infinity): left out there.
+  if (std::isfinite(q.smooth_load)) j["solver"]["smooth_load"] = q.smooth_load;
+  j["units"]["solver.largest_jump"] = "m";
+  j["units"]["solver.minimum_load"] = "N";
+  j["units"]["solver.smooth_load"] = "N";
+}
+
 }  // namespace
 
 nlohmann::json summary_json(const Case& c, const SimulationResult& r, const RunSummary& s) {
   using nlohmann::json;
   json j;
-  j["case"] = {{"source", c.source},
-               {"bearing", c.bearing.designation},
-               {"model", name_of(kModelKinds, c.model.kind)},
-               {"contact", name_of(kContactLaws, c.model.contact)},
-               {"speed", c.operation.speed},
-               {"load", {c.operation.load.x(), c.operation.load.y()}},
-               {"axial_load", c.operation.axial_load},
-               {"duration", c.solver.duration},
-               {"transient", c.solver.transient},
-               {"output_rate", c.solver.output_rate}};
-  if (c.model.calibration)
-    j["case"]["calibration"] = calibration_json(*c.model.calibration, r.contact);
+  j["case"] = case_json(c, r);
   // The contact law the run used: Q = K δ^n per race and for the ball between both races.
   const auto law = [](double K, double n) { return json{{"K", K}, {"exponent", n}}; };
   j["contact"] = law(r.contact.K, r.contact.exponent);
@@ -167,47 +218,10 @@ nlohmann::json summary_json(const Case& c, const SimulationResult& r, const RunS
   // The cage's random slip as it ran (random_slip.h): its correlation time resolved (the default,
   // one ball pass, is 1/BPFO at the model's cage speed).
   if (c.slip.enabled()) j["slip"] = slip_json(c.slip, f.bpfo);
-  j["channels"] = json::object();
-  j["peaks"] = json::object();
-  for (const auto& ch : s.channels) {
-    const auto& st = ch.statistics;
-    j["channels"][ch.name] = {{"mean", st.mean},         {"rms", st.rms},     {"ptp", st.ptp},
-                              {"kurtosis", st.kurtosis}, {"crest", st.crest}, {"unit", ch.unit}};
-    if (ch.group == ChannelGroup::ball) continue;
-    json peaks = json::array();
-    for (const auto& p : ch.peaks)
-      peaks.push_back({{"frequency", p.frequency},
-                       {"amplitude", p.amplitude},
-                       {"label", p.label},
-                       {"label_error", p.label_error}});
-    j["peaks"][ch.name] = peaks;
-  }
+  add_channels(s, j);
   // The families the peaks were named after (those the case's excitations make): a peak no
   // family explains stays unnamed.
   j["peak_families"] = line_family_names(s.peak_families);
-  if (r.quasi_static) {
-    // No integrator ran: solver.method, dt and tolerance did not matter.
-    const QuasiStaticStats& q = *r.quasi_static;
-    j["solver"] = {{"method", "quasistatic newton"},
-                   {"steps", q.steps},
-                   {"newton_iterations", q.newton_iterations},
-                   {"fallbacks", q.fallbacks},
-                   {"max_relative_residual", q.max_relative_residual},
-                   {"min_loaded_balls", q.min_loaded_balls},
-                   {"contact_changes", q.contact_changes},
-                   {"jumps", q.jumps},
-                   {"largest_jump", q.largest_jump},
-                   {"minimum_load", q.minimum_load}};
-    // F_smooth is infinite for Z <= 4 (JSON has no infinity): left out there.
-    if (std::isfinite(q.smooth_load)) j["solver"]["smooth_load"] = q.smooth_load;
-  } else {
-    j["solver"] = {{"method", name_of(kIntegratorMethods, c.solver.method)},
-                   {"dt", c.solver.dt},
-                   {"tolerance", c.solver.tolerance},
-                   {"steps", r.stats.steps},
-                   {"rejected_steps", r.stats.rejected_steps},
-                   {"force_evaluations", r.stats.force_evaluations}};
-  }
   j["units"] = {{"frequencies", "Hz"},
                 {"channels", "see channels.<name>.unit (kurtosis and crest: 1)"},
                 {"peaks.frequency", "Hz"},
@@ -218,11 +232,7 @@ nlohmann::json summary_json(const Case& c, const SimulationResult& r, const RunS
                 {"case.duration", "s"},
                 {"contact.K", "N/m^exponent (contact.exponent)"},
                 {"contact.*.K", "N/m^exponent"}};
-  if (r.quasi_static) {
-    j["units"]["solver.largest_jump"] = "m";
-    j["units"]["solver.minimum_load"] = "N";
-    j["units"]["solver.smooth_load"] = "N";
-  }
+  add_solver(c, r, j);
   if (c.model.calibration) j["units"]["case.calibration.load_range"] = "N";
   if (has_cage(c)) {
     j["units"]["cage.speed"] = "rad/s";
