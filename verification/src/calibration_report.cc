@@ -254,14 +254,27 @@ void write_calibration_report(const CalibrationStudy& s, const std::string& dir)
     figs.push_back(law_figure(s, r));
     j["races"].push_back(jr);
   }
-  nlohmann::json jresp = nlohmann::json::array();
-  const auto rows = response_table(s, jresp);
-  j["responses"] = jresp;
-  figs.push_back(spectrum_figure(s));
   h << "<h2>The lumped response under each law</h2>\n";
-  html_table(h, rows);
   m << "## The lumped response under each law\n\n";
-  md_table(m, rows);
+  if (s.static_case) {
+    const std::string why =
+        "The case is static (operation.speed = 0): the inner ring does not turn, so the lumped "
+        "run only settles to its static state and has no vibration to compare between the laws. "
+        "Their load-deflection curves are compared above; give operation.speed for the dynamic "
+        "comparison.";
+    h << "<p>" << escape_html(why) << "</p>\n";
+    m << why << "\n\n";
+    j["responses"] = nullptr;
+    j["static_case"] = true;
+  } else {
+    nlohmann::json jresp = nlohmann::json::array();
+    const auto rows = response_table(s, jresp);
+    j["responses"] = jresp;
+    j["static_case"] = false;
+    figs.push_back(spectrum_figure(s));
+    html_table(h, rows);
+    md_table(m, rows);
+  }
   draw_figures(figs, figures.string(), BEARING_VERIFY_PLOT_SCRIPT);
   h << "<h2>Figures</h2>\n";
   for (const auto& f : figs) {

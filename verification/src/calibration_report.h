@@ -38,7 +38,8 @@ struct CalibrationStudy {
   std::string geometry;  ///< the FE geometry the calibration is fitted to
   std::string mesh;
   std::vector<RaceStudy> races;
-  std::vector<LawResponse> responses;
+  std::vector<LawResponse> responses;  ///< empty for a static case
+  bool static_case = false;            ///< operation.speed = 0: nothing vibrates to compare
 };
 
 /// Writes DIR/calibration_report.{html,md,json} and DIR/figures/ (each file complete or absent).
