@@ -75,6 +75,7 @@ std::vector<Check> all_checks() {
   append(all, paper_checks());
   append(all, paper_contact_checks());
   append(all, measured_checks());
+  append(all, measured_development_checks());
   append(all, unit_test_checks());
   validate_checks(all);
   return all;

@@ -55,7 +55,7 @@ class Context {
   bool at_least(Level l) const { return static_cast<int>(level_) >= static_cast<int>(l); }
 
   // --- geometry, contact ------------------------------------------------------------------
-  /// A preset bearing ("608", "6304", "6308", "6205", "209") as the toolkit builds it.
+  /// A preset bearing ("608", "6304", "6308", "6205", "6203", "209") as the toolkit builds it.
   Bearing bearing(const std::string& designation) const;
   /// Any bearing as the toolkit sees it (the perturbation's geometry applied).
   Bearing bearing(Bearing b) const;

@@ -24,6 +24,7 @@ std::vector<Check> acoustics_decay_checks();    ///< checks/acoustics_decay.cc: 
 std::vector<Check> acoustics_fe_checks();       ///< checks/acoustics_fe.cc: FE radiation reference
 std::vector<Check> paper_checks();              ///< checks/papers.cc: examples/README.md's tables
 std::vector<Check> measured_checks();       ///< checks/measured.cc: the CWRU rig's records analysed
+std::vector<Check> measured_development_checks();  ///< checks/measured_development.cc: fan-end set
 std::vector<Check> unit_test_checks();      ///< checks/unit_tests.cc: the physics unit-test suites
 std::vector<Check> paper_contact_checks();  ///< checks/papers_contact.cc: TVDS, ball approach, SPL
 std::vector<Check> structure_checks();  ///< checks/structure.cc: FE natural modes, modal transfer
