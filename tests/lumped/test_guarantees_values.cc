@@ -144,7 +144,7 @@ const Range kRanges[] = {
 
 class CaseDraw {
  public:
-  explicit CaseDraw(std::uint64_t seed) : rng_(seed), housing_rng_(seed + 1) {}
+  explicit CaseDraw(std::uint64_t seed) : rng_(seed), housing_rng_(seed + 1), slip_rng_(seed + 2) {}
 
   double u(double lo, double hi) { return std::uniform_real_distribution<double>(lo, hi)(rng_); }
   int integer(int lo, int hi) { return std::uniform_int_distribution<int>(lo, hi)(rng_); }
@@ -173,9 +173,12 @@ class CaseDraw {
   // [housing] for a kind that carries it, from a stream of its own: the draws of the other keys
   // stay those made before the table existed.
   std::string housing(const bearing::ModelDescriptor& kind);
+  // [slip] for a turning cage (every kind), likewise from its own stream.
+  std::string slip(bool turning);
 
   std::mt19937_64 rng_;
   std::mt19937_64 housing_rng_;
+  std::mt19937_64 slip_rng_;
 };
 
 std::string num(double v);
@@ -192,6 +195,19 @@ std::string CaseDraw::housing(const bearing::ModelDescriptor& kind) {
       if (std::string(key) == r.key)
         t << std::string(key).substr(8) << " = "
           << num(r.log ? std::exp(u(std::log(r.lo), std::log(r.hi))) : u(r.lo, r.hi)) << "\n";
+  return t.str();
+}
+
+// rms up to 5 %; the correlation time its default, or drawn between 0.2 ms and 50 ms (log).
+std::string CaseDraw::slip(bool turning) {
+  const auto u = [&](double lo, double hi) {
+    return std::uniform_real_distribution<double>(lo, hi)(slip_rng_);
+  };
+  if (!turning || u(0, 1) >= 0.3) return "";
+  std::ostringstream t;
+  t << "[slip]\nrms = " << num(u(0, 0.05)) << "\nseed = " << static_cast<int>(u(0, 1000)) << "\n";
+  if (u(0, 1) < 0.5)
+    t << "correlation_time = " << num(std::exp(u(std::log(0.2e-3), std::log(50e-3)))) << "\n";
   return t.str();
 }
 
@@ -224,7 +240,8 @@ std::string CaseDraw::next() {
   if (coin(0.3))
     t << "axial_mass = " << num(draw("rotor.axial_mass"))
       << "\naxial_damping = " << num(draw("rotor.axial_damping")) << "\n";
-  t << "[operation]\nspeed = \"" << (coin(0.05) ? std::string("0") : num(draw("operation.speed")))
+  const bool still = coin(0.05);
+  t << "[operation]\nspeed = \"" << (still ? std::string("0") : num(draw("operation.speed")))
     << " rad/s\"\nload = [" << num(u(-200, 200)) << ", "
     << num(-std::exp(u(std::log(10), std::log(5000)))) << "]\n";
   if (coin(0.3)) t << "axial_load = " << num(u(0, 2000)) << "\n";
@@ -292,6 +309,7 @@ std::string CaseDraw::next() {
     t << "envelope_band = [" << num(lo) << ", " << num(u(lo + 1000, rate / 2)) << "]\n";
   }
   t << housing(kind);
+  t << slip(!still);
   return t.str();
 }
 
