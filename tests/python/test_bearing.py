@@ -136,6 +136,16 @@ class RunMatchesCli(unittest.TestCase):
         self.assertEqual(t.shape, (5001,))
         self.assertEqual(t[-1], 0.25)
 
+    def test_random_slip_goes_through_by_seed(self):
+        def run(seed):
+            return bearing.run(bearing.Case.default().set("solver.duration", "0.25 s").set(
+                "slip.rms", 0.01).set("slip.seed", seed))
+        a, b, c = run(3), run(3), run(4)
+        self.assertEqual(a.response["y"].tobytes(), b.response["y"].tobytes())
+        self.assertNotEqual(a.response["y"].tobytes(), c.response["y"].tobytes())
+        self.assertEqual(a.summary["slip"]["seed"], 3)
+        self.assertIn("[slip]", a.case_toml)
+
     def test_write_gives_the_cli_files(self):
         out = pathlib.Path(self.tmp.name) / "written"
         self.result.write(str(out))
