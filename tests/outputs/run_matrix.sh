@@ -64,6 +64,19 @@ H="--set housing.mass=1kg --set housing.frequency=3kHz"
 go housing_2dof run "$ex/cwru_6205_outer.toml" $S $H --set output.ball_loads=true
 go housing_3dof run $S $H --set model.kind=3dof --set operation.axial_load=100 --set solver.method=newmark
 go info_housing info "$ex/cwru_6205_outer.toml" $H --json
+# random slip ([slip], issue 40): every kind, the acoustics' balls, a spall, info, its errors
+go slip_2dof run $S --set slip.rms=0.01 --set output.ball_motion=true --set output.ball_loads=true
+go slip_3dof run $S --set model.kind=3dof --set operation.axial_load=100 --set slip.rms=0.02 --set slip.seed=3 --set output.ball_motion=true --set solver.method=rk8pd
+go slip_balls run "$ex/seed004_6304.toml" $S --set solver.dt=2us --set cage.slip=0.02 --set slip.rms=0.01 --set output.ball_dynamics=true
+go slip_qs run "$ex/seed000_608_quasistatic.toml" $S --set slip.rms=0.01 --set acoustics.ball_source=paper
+go slip_spall run "$ex/cwru_6205_outer.toml" $S --set slip.rms=0.01 --set slip.correlation_time=2ms $H
+go slip_info info --set slip.rms=0.01 --json
+go e_slip_rms run --set slip.rms=0.2
+go e_slip_fine run --set slip.rms=0.01 --set slip.correlation_time=1us --set solver.duration=300
+# the structure's modes ([housing] modes, issue 40): the example end shield with its sensor
+go modes_2dof run "$ex/cwru/outer_shield.toml" $S
+go modes_3dof run "$ex/cwru/outer_shield.toml" $S --set model.kind=3dof --set operation.axial_load=100
+go info_modes info "$ex/cwru/outer_shield.toml" --json
 # input errors (messages and exit codes)
 go e_housing_balls run "$ex/seed004_6304.toml" $H
 go e_housing_freq run --set housing.mass=1kg
