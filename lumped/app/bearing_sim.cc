@@ -414,7 +414,6 @@ CLI::App* add_info_command(CLI::App& app, std::string& case_path, std::vector<st
                  "contact.{K,exponent,method}, contact.calibration (calibrated law), "
                  "static.{deflection,ball_angles,ball_loads,q_max}, stiffness.{load, "
                  "displacement, matrix (5x5 K = dF/dq at every load of the case), q_max}");
-
   return info;
 }
 
@@ -436,7 +435,6 @@ CLI::App* add_run_command(CLI::App& app, std::string& case_path, std::vector<std
   run->add_option("--out", out_dir, "Folder for the result files (created if missing)")->required();
   run->add_flag("--json", json, "Print summary.json instead of the readable summary");
   run->add_flag("--quiet", quiet, "No progress on stderr (also off when stderr is not a terminal)");
-
   return run;
 }
 
