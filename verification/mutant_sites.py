@@ -58,10 +58,10 @@ PHYSICS_FILES = [
     "lumped/src/signal/line_names.cc", "lumped/src/signal/peaks.cc",
     "lumped/src/signal/prewhitening.cc", "lumped/src/signal/spectrum.cc",
     "lumped/src/signal/squared_envelope.cc", "lumped/src/signal/statistics.cc",
-    # the run pipeline's analysis parts
-    "lumped/src/pipeline/analysis.cc", "lumped/src/pipeline/diagnosis.cc",
-    "lumped/src/pipeline/envelope_analysis.cc", "lumped/src/pipeline/fault_lines.cc",
-    "lumped/src/pipeline/record_analysis.cc", "lumped/src/pipeline/excitation_families.cc",
+    # the analysis: a run's (pipeline), the diagnosis layer's, the run's line families and noise
+    "lumped/src/pipeline/analysis.cc", "lumped/src/diagnosis/diagnosis.cc",
+    "lumped/src/diagnosis/envelope_analysis.cc", "lumped/src/diagnosis/fault_lines.cc",
+    "lumped/src/diagnosis/record_analysis.cc", "lumped/src/pipeline/excitation_families.cc",
     "lumped/src/pipeline/noise.cc",
 ]
 

@@ -40,4 +40,17 @@ RunSummary analyse(const Response& resp, const BearingFrequencies& f,
   return s;
 }
 
+std::vector<EnvelopeSummary> analyse_envelopes(const Response& response,
+                                               const BearingFrequencies& f,
+                                               const EnvelopeBandSetting& setting, Window window,
+                                               int max_peaks) {
+  std::vector<EnvelopeSummary> out;
+  if (setting.source == EnvelopeBandSource::none) return out;
+  for (const Channel& ch : response.channels)
+    if (ch.group == ChannelGroup::ring && ch.derivative == 2)
+      out.push_back(analyse_envelope(ch.name, ch.unit, response.steady(ch.name), response.rate, f,
+                                     setting, window, max_peaks));
+  return out;
+}
+
 }  // namespace bearing

@@ -103,7 +103,7 @@ void add_envelope_units(nlohmann::json& units) {
   units["diagnosis.{spectral_kurtosis,family_share}"] = "1";
 }
 
-std::string envelope_text(const RunSummary& s) {
+std::string envelope_text(const VibrationSummary& s) {
   if (s.envelopes.empty()) return "";
   std::string out;
   char buf[160];

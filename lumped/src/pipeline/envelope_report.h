@@ -7,7 +7,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "bearing/analysis.h"
+#include "bearing/vibration_summary.h"
 
 namespace bearing {
 
@@ -28,6 +28,6 @@ void add_envelope_units(nlohmann::json& units);
 /// The readable summary's lines: one per envelope (band, SK, its largest lines) and the
 /// diagnosis ("Diagnosis: outer race — envelope of ay, 2.1–4.2 kHz (kurtogram): BPFO 0.31
 /// m/s^2, …").
-std::string envelope_text(const RunSummary& s);
+std::string envelope_text(const VibrationSummary& s);
 
 }  // namespace bearing

@@ -292,14 +292,14 @@ std::string record_summary_text(const RecordAnalysis& a, const RecordOrigin& ori
     o << "\n";
   }
   if (a.summary.envelopes.empty()) return o.str() + "No envelope analysis (band none).\n";
-  RunSummary envelopes_only = a.summary;  // the envelope lines without run's diagnosis line
+  VibrationSummary envelopes_only = a.summary;  // the envelope lines without run's diagnosis line
   envelopes_only.diagnosis.reset();
   o << envelope_text(envelopes_only) << (a.prewhitened ? "  (of the pre-whitened record)\n" : "");
   o << fault_lines_text(*a.lines);
   if (a.settings.rule == DiagnosisRule::line_to_floor) {
     o << "Diagnosis: " << fault_family_text(a.lines->family) << " — " << a.lines->reason << "\n";
   } else {
-    RunSummary run_rule;
+    VibrationSummary run_rule;
     run_rule.envelopes.push_back(a.summary.envelopes.front());
     run_rule.diagnosis = a.summary.diagnosis;
     const std::string text = envelope_text(run_rule);
@@ -318,7 +318,7 @@ void write_record_analysis(const std::string& dir, const RecordAnalysis& a,
   fs::create_directories(dir, ec);
   if (ec) throw InputError("--out " + dir + ": cannot create the folder (" + ec.message() + ")");
   const std::string ext = format == OutputFormat::npy ? ".npy" : ".csv";
-  const RunSummary& s = a.summary;
+  const VibrationSummary& s = a.summary;
   const bool envelope = !s.envelopes.empty();
   std::vector<std::string> names = {"spectrum" + ext, "summary.json"};
   if (envelope) names.push_back("envelope" + ext);

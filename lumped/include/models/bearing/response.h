@@ -6,12 +6,10 @@
 #include <string>
 #include <vector>
 
+#include "bearing/channel_group.h"
 #include "bearing/models/model_outputs.h"
 
 namespace bearing {
-
-/// Whose a channel is: the inner ring's, one ball's, or a microphone's.
-enum class ChannelGroup { ring, ball, acoustic };
 
 /// What one column of response.csv holds.
 struct Channel {

@@ -7,15 +7,14 @@
 #include <string>
 #include <vector>
 
-#include "bearing/diagnosis.h"
 #include "bearing/envelope_analysis.h"
 #include "bearing/kinematics.h"
 #include "bearing/noise.h"
 #include "bearing/response.h"
+#include "bearing/signal/envelope.h"
 #include "bearing/signal/line_names.h"
-#include "bearing/signal/peaks.h"
 #include "bearing/signal/spectrum.h"
-#include "bearing/signal/statistics.h"
+#include "bearing/vibration_summary.h"
 
 namespace bearing {
 
@@ -31,23 +30,10 @@ struct AnalysisSettings {
   EnvelopeBandSetting envelope;  ///< envelope analysis of the accelerations: none by default
 };
 
-struct ChannelSummary {
-  std::string name;
-  std::string unit;
-  ChannelGroup group = ChannelGroup::ring;
-  ChannelStatistics statistics;  ///< over the post-transient window
-  std::vector<Peak> peaks;       ///< largest first (ring channels only)
-};
-
-struct RunSummary {
-  std::vector<ChannelSummary> channels;        ///< in response order
-  std::vector<std::string> spectrum_channels;  ///< channels with a spectrum (the ring's)
-  std::vector<Spectrum> spectra;               ///< one per spectrum channel
-  std::vector<EnvelopeSummary> envelopes;      ///< one per ring acceleration, if asked for
-  std::optional<Diagnosis> diagnosis;          ///< diagnose(envelopes), with envelopes only
-  std::optional<BearingNoise> noise;           ///< sound at the microphones ([acoustics] only)
-  /// The families that named the ring channels' peaks (the settings' `lines`).
-  LineFamilies peak_families;
+/// A run's summary: the vibration summary of its response (channels, spectra, envelopes,
+/// diagnosis: vibration_summary.h) and the sound at its microphones.
+struct RunSummary : VibrationSummary {
+  std::optional<BearingNoise> noise;  ///< sound at the microphones ([acoustics] only)
 };
 
 /// Statistics of every channel, and spectra and peaks (labelled with `frequencies`, by the
@@ -56,5 +42,13 @@ struct RunSummary {
 /// empty.
 RunSummary analyse(const Response& response, const BearingFrequencies& frequencies,
                    const AnalysisSettings& settings);
+
+/// analyse_envelope() (envelope_analysis.h) of every ring acceleration channel of the response
+/// (group ring, derivative 2: ax, ay and, 3-DOF, az) over its analysis window; none for
+/// setting.source none.
+std::vector<EnvelopeSummary> analyse_envelopes(const Response& response,
+                                               const BearingFrequencies& frequencies,
+                                               const EnvelopeBandSetting& setting, Window window,
+                                               int max_peaks);
 
 }  // namespace bearing

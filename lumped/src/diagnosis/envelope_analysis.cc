@@ -1,4 +1,4 @@
-// The envelope stage of a run's analysis: band, spectral kurtosis, envelope spectrum, named peaks.
+// The envelope analysis of a channel: band, spectral kurtosis, envelope spectrum, named peaks.
 
 #include "bearing/envelope_analysis.h"
 
@@ -57,19 +57,6 @@ EnvelopeSummary analyse_envelope(const std::string& channel, const std::string& 
       fault_frequency_names_up_to(0.5 * sample_rate, f.shaft, f.ftf, f.bpfo, f.bpfi, f.bsf);
   e.peaks = find_peaks(e.spectrum, names, max_peaks);
   return e;
-}
-
-std::vector<EnvelopeSummary> analyse_envelopes(const Response& response,
-                                               const BearingFrequencies& f,
-                                               const EnvelopeBandSetting& setting, Window window,
-                                               int max_peaks) {
-  std::vector<EnvelopeSummary> out;
-  if (setting.source == EnvelopeBandSource::none) return out;
-  for (const Channel& ch : response.channels)
-    if (ch.group == ChannelGroup::ring && ch.derivative == 2)
-      out.push_back(analyse_envelope(ch.name, ch.unit, response.steady(ch.name), response.rate, f,
-                                     setting, window, max_peaks));
-  return out;
 }
 
 }  // namespace bearing

@@ -13,13 +13,13 @@
 #include <string>
 #include <vector>
 
-#include "bearing/analysis.h"
 #include "bearing/bearing.h"
 #include "bearing/choice.h"
 #include "bearing/fault_lines.h"
 #include "bearing/kinematics.h"
 #include "bearing/signal/fundamental_estimate.h"
 #include "bearing/signal/squared_envelope.h"
+#include "bearing/vibration_summary.h"
 
 namespace bearing {
 
@@ -106,7 +106,7 @@ struct RecordAnalysis {
   /// The run-shaped part: one channel (statistics, spectrum with peaks, all line families), its
   /// envelope (of the pre-whitened record if asked), and `diagnosis`, always `run`'s rule
   /// (diagnose() of that envelope).
-  RunSummary summary;
+  VibrationSummary summary;
   /// With an envelope: the squared envelope spectrum of its band [unit²] and the fault lines in it.
   std::optional<Spectrum> squared_envelope;
   std::optional<LineDiagnosis> lines;

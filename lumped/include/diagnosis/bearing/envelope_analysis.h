@@ -1,14 +1,14 @@
 #pragma once
-// The envelope stage of a run's analysis (issue 17): for every ring acceleration channel, the band
-// (given, or the fast kurtogram's), the spectral kurtosis there, the envelope spectrum and its
-// peaks named after the bearing's fault frequencies.
+// The envelope analysis of one vibration channel (issue 17): the band (given, or the fast
+// kurtogram's), the spectral kurtosis there, the envelope spectrum and its peaks named after the
+// bearing's fault frequencies. A run's analysis applies it to each ring acceleration
+// (analyse_envelopes(), pipeline's analysis.h), a record's to the record (record_analysis.h).
 
 #include <optional>
 #include <string>
 #include <vector>
 
 #include "bearing/kinematics.h"
-#include "bearing/response.h"
 #include "bearing/signal/envelope.h"
 #include "bearing/signal/kurtogram.h"
 #include "bearing/signal/peaks.h"
@@ -62,12 +62,5 @@ EnvelopeSummary analyse_envelope(const std::string& channel, const std::string& 
                                  const BearingFrequencies& frequencies,
                                  const EnvelopeBandSetting& setting, Window window, int max_peaks,
                                  double min_bandwidth = 0, std::vector<double>* envelope = nullptr);
-
-/// analyse_envelope() of every ring acceleration channel of the response (group ring,
-/// derivative 2: ax, ay and, 3-DOF, az) over its analysis window; none for setting.source none.
-std::vector<EnvelopeSummary> analyse_envelopes(const Response& response,
-                                               const BearingFrequencies& frequencies,
-                                               const EnvelopeBandSetting& setting, Window window,
-                                               int max_peaks);
 
 }  // namespace bearing

@@ -144,7 +144,7 @@ RecordAnalysis analyse_record(const std::vector<double>& x, double rate, const s
         (settings.lines.harmonics + 1) * std::max({f.bpfo, f.bpfi, 2 * f.bsf});
 
   // Statistics and spectrum of the record as measured; peaks named by every family.
-  RunSummary& s = a.summary;
+  VibrationSummary& s = a.summary;
   s.peak_families = settings.peak_families;
   ChannelSummary ch;
   ch.name = channel;
