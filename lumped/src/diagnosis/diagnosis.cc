@@ -65,6 +65,7 @@ std::string family_lines_text(FaultFamily f, const BearingFrequencies& fr) {
       return "k·BPFI ± m·fr, BPFI = " + format("%.4g Hz", fr.bpfi);
     case FaultFamily::ball:
       return "k·BSF, 2k·BSF ± m·FTF, BSF = " + format("%.4g Hz", fr.bsf);
+    case FaultFamily::several:
     case FaultFamily::none:
       break;
   }
@@ -97,6 +98,8 @@ const char* fault_family_text(FaultFamily family) {
       return "inner race";
     case FaultFamily::ball:
       return "ball";
+    case FaultFamily::several:
+      return "several families";
     case FaultFamily::none:
       break;
   }

@@ -46,6 +46,7 @@ std::string line_label(FaultFamily family, int k, int m) {
       return times(k, "BPFI") + (m < 0 ? "-fr" : m > 0 ? "+fr" : "");
     case FaultFamily::ball:
       return times(2 * k, "BSF") + (m < 0 ? "-FTF" : m > 0 ? "+FTF" : "");
+    case FaultFamily::several:
     case FaultFamily::none:
       break;
   }

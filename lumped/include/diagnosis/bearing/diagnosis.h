@@ -23,18 +23,20 @@ namespace bearing {
 
 /// The part a fault family points at.
 enum class FaultFamily {
-  none,   ///< no fault lines, or not impulsive, or no family dominates
-  outer,  ///< k·BPFO
-  inner,  ///< k·BPFI and k·BPFI ± m·f_r
-  ball,   ///< k·BSF (2k·BSF: a ball defect strikes both races each spin) and 2k·BSF ± m·FTF
+  none,     ///< no fault lines, or not impulsive, or no family dominates
+  outer,    ///< k·BPFO
+  inner,    ///< k·BPFI and k·BPFI ± m·f_r
+  ball,     ///< k·BSF (2k·BSF: a ball defect strikes both races each spin) and 2k·BSF ± m·FTF
+  several,  ///< two families clearly present (a record's coherence diagnosis only)
 };
 /// As summary.json writes them.
 inline constexpr Named<FaultFamily> kFaultFamilies[] = {{FaultFamily::none, "none"},
                                                         {FaultFamily::outer, "outer"},
                                                         {FaultFamily::inner, "inner"},
-                                                        {FaultFamily::ball, "ball"}};
+                                                        {FaultFamily::ball, "ball"},
+                                                        {FaultFamily::several, "several"}};
 
-/// "outer race", "inner race", "ball", "none": for the readable summary.
+/// "outer race", "inner race", "ball", "several families", "none": for the readable summary.
 const char* fault_family_text(FaultFamily family);
 
 /// The family a peak label of fault_frequency_names_up_to() belongs to: "BPFO", "3xBPFO" outer;
