@@ -184,8 +184,10 @@ CLI::App* add_analyse_command(CLI::App& app, AnalyseOptions& o) {
                 "Cepstral pre-whitening before the kurtogram and envelope (default on: it "
                 "removes the shaft, gear and electrical lines a measured record carries)");
   cmd->add_option("--rule", o.rule,
-                  "Diagnosis rule: line_to_floor (the squared envelope spectrum's fault lines, "
-                  "default) | envelope_peaks (run's rule)")
+                  "Diagnosis rule: coherence (each family in its band of the pre-whitened "
+                  "record's cyclic-coherence map, with decoys and each family's sidebands; "
+                  "default) | line_to_floor (the kurtogram band's squared envelope spectrum) | "
+                  "envelope_peaks (run's rule)")
       ->capture_default_str();
   cmd->add_option("--false-alarm", o.false_alarm,
                   "Probability that a family's lines in a fault-free record pass the threshold")
@@ -196,7 +198,13 @@ CLI::App* add_analyse_command(CLI::App& app, AnalyseOptions& o) {
                   "nominal frequency (default 0.02: real bearings slip 1-2 %)")
       ->check(bearing::cli::range(0, 0.1))
       ->capture_default_str();
-  cmd->add_option("--harmonics", o.harmonics, "Fault-rate harmonics searched (default 3)")
+  cmd->add_option("--speed-refinement", o.speed_refinement,
+                  "A given speed is refined from the record's shaft harmonics within this "
+                  "fraction where they stand out (0: used as given)")
+      ->check(bearing::cli::range(0.0, 0.099))
+      ->capture_default_str();
+  cmd->add_option("--harmonics", o.harmonics,
+                  "Fault-rate harmonics searched by line_to_floor (default 3; coherence: 3)")
       ->check(bearing::cli::range(1, 10))
       ->capture_default_str();
   cmd->add_flag("--json", o.json, "Print summary.json instead of the readable summary");
@@ -230,6 +238,9 @@ int analyse_command(const AnalyseOptions& o, const CommandLine& cl) {
   s.lines.false_alarm = o.false_alarm;
   s.lines.slip = o.slip;
   s.lines.harmonics = o.harmonics;
+  s.speed_refinement = o.speed_refinement;
+  s.coherence.slip = o.slip;
+  if (s.rule == bearing::DiagnosisRule::coherence) s.coherence.false_alarm = o.false_alarm;
   bearing::RecordOrigin origin;
   origin.file = o.record;
   origin.case_source = o.case_path.empty() ? "" : c.source;

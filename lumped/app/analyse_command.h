@@ -23,10 +23,11 @@ struct AnalyseOptions {
   std::string speed;
   std::string band = "auto";  ///< "auto" (kurtogram), "none" or "LOW:HIGH" ("2kHz:4kHz")
   bool prewhiten = true;
-  std::string rule = "line_to_floor";
+  std::string rule = "coherence";
   double false_alarm = 1e-3;
   double slip = 0.02;
   int harmonics = 3;
+  double speed_refinement = 0.03;
   bool json = false;
   bool quiet = false;
 };

@@ -253,8 +253,8 @@ def sweep(case, vary, jobs=0, as_dataframe=None):
 
 
 def analyse(samples, rate, case, speed=None, *, speed_source="option", channel="record",
-            unit="m/s^2", prewhiten=True, band="auto", rule="line_to_floor", false_alarm=1e-3,
-            slip=0.02, harmonics=3, file="", speed_origin=""):
+            unit="m/s^2", prewhiten=True, band="auto", rule="coherence", false_alarm=1e-3,
+            slip=0.02, harmonics=3, speed_refinement=0.03, file="", speed_origin=""):
     """Analyses a measured record as ``bearing-sim analyse`` does; returns an :class:`Analysis`.
 
     ``samples``: a 1-D array of one channel in SI (``unit``: "m/s^2", "m/s" or "m"; convert g
@@ -264,29 +264,35 @@ def analyse(samples, rate, case, speed=None, *, speed_source="option", channel="
     ``"estimate"`` (the shaft frequency found from the record's shaft harmonics within ±10 % of
     the case's speed), or the speed itself: a number [rad/s] or a string with a unit
     (``"1797 rpm"``), whose source is ``speed_source`` ("option", or "record" for a speed the
-    file stored). ``prewhiten``: cepstral pre-whitening before the envelope analysis (default on).
-    ``band``: "auto" (the kurtogram's), "none", or (low, high) [Hz, or strings with units].
-    ``rule``: "line_to_floor" (the fault lines of the squared envelope spectrum over their floor,
-    threshold from ``false_alarm`` per family and record, lines searched within ±``slip`` with
-    ``harmonics`` harmonics) or "envelope_peaks" (run's rule). ``channel`` names the channel in
+    file stored); a given speed is refined from the record's shaft harmonics within
+    ±``speed_refinement`` where they stand out (0: used as given). ``prewhiten``: cepstral
+    pre-whitening before the envelope analysis (default on). ``band``: "auto" (the kurtogram's),
+    "none", or (low, high) [Hz, or strings with units]. ``rule``: "coherence" (default: each
+    family in its band of the pre-whitened record's cyclic-coherence map, 2 of 3 harmonics within
+    ±``slip`` over a threshold from ``false_alarm`` per family and record, the record's own
+    decoys, each family's sidebands; two race families clearly present give "several"),
+    "line_to_floor" (the kurtogram band's fault lines over their floor, ``harmonics`` harmonics)
+    or "envelope_peaks" (run's rule). ``channel`` names the channel in
     the outputs; ``file`` and ``speed_origin`` are recorded in the summary. The GIL is released
     meanwhile. Raises InputError naming what is wrong (a NaN sample, a rate <= 0, a record too
     short, no shaft line found by the estimate, ...).
 
     The result: ``.summary`` (summary.json's content as a dict: record, speed and its source,
-    frequencies [Hz], channels, peaks, envelope, fault_lines, diagnosis, units), ``.family``
-    (the diagnosis), ``.spectrum`` ({"frequency" [Hz], channel: amplitude}), ``.envelope``
+    frequencies [Hz], channels, peaks, envelope, fault_lines, coherence, diagnosis, units),
+    ``.family`` (the diagnosis: "outer", "inner", "ball", "several" or "none"), ``.margin``
+    (its margin [dB]), ``.coherence`` (the map and each family's evidence), ``.spectrum`` ({"frequency" [Hz], channel: amplitude}), ``.envelope``
     ({"frequency", "env_<channel>" [unit], "ses_<channel>" [unit^2]} or None), ``str(a)`` (the
     readable summary) and ``.write(dir, format="csv")`` (spectrum, envelope, summary.json, all or
     nothing; ``bearing-plot dir`` draws it).
 
     >>> a = bearing.analyse(x, 12000, bearing.Case.from_toml('[bearing]\npreset = "6205"\n'
     ...                     '[operation]\nspeed = "1797 rpm"'))
-    >>> a.summary["fault_lines"]["inner"]["evidence"]     # dB over the floor
+    >>> a.family, a.margin                                 # "inner", 16.4 (dB)
+    >>> a.coherence["families"]["inner"]["harmonics"]     # each harmonic's excess [dB]
     """
     return _bearing.analyse(samples, float(rate), _case(case), speed, speed_source, channel, unit,
                             bool(prewhiten), band, rule, float(false_alarm), float(slip),
-                            int(harmonics), file, speed_origin)
+                            int(harmonics), float(speed_refinement), file, speed_origin)
 
 
 def presets():

@@ -81,7 +81,7 @@ std::unique_ptr<AnalysisResult> analyse(
     const CaseHandle& c, py::handle speed, const std::string& speed_source,
     const std::string& channel, const std::string& unit, bool prewhiten, py::handle band,
     const std::string& rule, double false_alarm, double slip, int harmonics,
-    const std::string& file, const std::string& speed_origin) {
+    double speed_refinement, const std::string& file, const std::string& speed_origin) {
   if (samples.ndim() != 1)
     throw bearing::InputError("samples: a 1-D array is needed, not " +
                               std::to_string(samples.ndim()) + "-D");
@@ -97,6 +97,10 @@ std::unique_ptr<AnalysisResult> analyse(
   settings.lines.false_alarm = false_alarm;
   settings.lines.slip = slip;
   settings.lines.harmonics = harmonics;
+  settings.speed_refinement = speed_refinement;
+  settings.coherence.slip = slip;
+  if (settings.rule == bearing::DiagnosisRule::coherence)
+    settings.coherence.false_alarm = false_alarm;
   auto out = std::make_unique<AnalysisResult>();
   out->origin.file = file;
   out->origin.case_source = input.source;
@@ -113,9 +117,9 @@ void bind_analysis(py::module_& m) {
   m.def("analyse", &analyse, py::arg("samples"), py::arg("rate"), py::arg("case"),
         py::arg("speed") = py::none(), py::arg("speed_source") = "option",
         py::arg("channel") = "record", py::arg("unit") = "m/s^2", py::arg("prewhiten") = true,
-        py::arg("band") = "auto", py::arg("rule") = "line_to_floor", py::arg("false_alarm") = 1e-3,
-        py::arg("slip") = 0.02, py::arg("harmonics") = 3, py::arg("file") = "",
-        py::arg("speed_origin") = "",
+        py::arg("band") = "auto", py::arg("rule") = "coherence", py::arg("false_alarm") = 1e-3,
+        py::arg("slip") = 0.02, py::arg("harmonics") = 3, py::arg("speed_refinement") = 0.03,
+        py::arg("file") = "", py::arg("speed_origin") = "",
         "Analyses a measured record as bearing-sim analyse does (GIL released).");
 
   py::class_<AnalysisResult>(m, "Analysis",
@@ -129,7 +133,22 @@ void bind_analysis(py::module_& m) {
           [](const AnalysisResult& r) {
             return std::string(bearing::name_of(bearing::kFaultFamilies, r.analysis.family()));
           },
-          "The diagnosis: \"outer\", \"inner\", \"ball\" or \"none\".")
+          "The diagnosis: \"outer\", \"inner\", \"ball\", \"several\" or \"none\".")
+      .def_property_readonly(
+          "margin",
+          [](const AnalysisResult& r) { return r.summary_json["diagnosis"].value("margin", 0.0); },
+          "The verdict's margin [dB]: how far its evidence stands over what it needs (a named "
+          "family: > 0), or how far the nearest family falls short (none: <= 0).")
+      .def_property_readonly(
+          "coherence",
+          [](const AnalysisResult& r) -> py::object {
+            if (!r.summary_json.contains("coherence")) return py::none();
+            return to_python(r.summary_json["coherence"]);
+          },
+          "The coherence diagnosis's evidence (summary['coherence']): bands [[low, high] Hz], "
+          "levels, map {family: margin per band [dB], -100 unrated}, families {family: best "
+          "band, harmonics (frequency [Hz], excess [dB]), decoys, side lines, margin [dB], "
+          "named}; None without an envelope band.")
       .def_property_readonly(
           "spectrum",
           [](py::object self) {

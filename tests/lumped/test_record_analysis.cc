@@ -179,6 +179,33 @@ std::vector<double> shaft_record(std::size_t n, double fr, double sigma, std::ui
   return x;
 }
 
+// A speed given 2.4 % off (CWRU fan-end record 279's stored rpm) is refined from the record's
+// shaft lines within ±3 %; beyond the refinement's reach, or with it off, it is used as given.
+TEST(RecordAnalysis, AGivenSpeedIsRefinedByTheRecordsShaftLines) {
+  const double fr = 1773.0 / 60;
+  const std::vector<double> x = shaft_record(60000, fr, 1.0, 4);
+  const double stored = 1732 * two_pi / 60;
+  const RecordAnalysis a = analyse_record(x, kRate, "DE", "m/s^2", cwru_bearing(), given(stored));
+  ASSERT_TRUE(a.speed.given);
+  EXPECT_EQ(*a.speed.given, stored);
+  EXPECT_EQ(a.speed.source, SpeedSource::option);
+  EXPECT_NEAR(a.speed.speed / two_pi, fr, 0.02 * kRate / 60000);
+  EXPECT_NEAR(a.frequencies.shaft, a.speed.speed / two_pi, 1e-12);
+  RecordAnalysisSettings off;
+  off.speed_refinement = 0;
+  const RecordAnalysis b =
+      analyse_record(x, kRate, "DE", "m/s^2", cwru_bearing(), given(stored), off);
+  EXPECT_FALSE(b.speed.given);
+  EXPECT_EQ(b.speed.speed, stored);
+  const RecordAnalysis c =
+      analyse_record(x, kRate, "DE", "m/s^2", cwru_bearing(), given(0.95 * two_pi * fr));
+  EXPECT_FALSE(c.speed.given);  // the shaft lines lie 5 % away: nothing within ±3 %
+  RecordAnalysisSettings wide;
+  wide.speed_refinement = 0.2;
+  EXPECT_THROW(analyse_record(x, kRate, "DE", "m/s^2", cwru_bearing(), given(stored), wide),
+               InputError);
+}
+
 TEST(RecordAnalysis, EstimatesTheSpeedOfASyntheticRecord) {
   const double fr = 1791.3 / 60;  // off the nominal 1797 rpm by 0.3 %, between bins
   const std::vector<double> x = shaft_record(60000, fr, 1.0, 3);
@@ -368,13 +395,21 @@ TEST(RecordOutput, WritesRunsFilesAndKeysAllOrNothing) {
   EXPECT_EQ(j["peaks"]["DE"].size(), a.summary.channels.front().peaks.size());
   EXPECT_EQ(j["envelope"]["DE"]["band"][0], a.summary.envelopes.front().band.low);
   EXPECT_EQ(j["diagnosis"]["family"], "outer");
-  EXPECT_EQ(j["diagnosis"]["rule"], "line_to_floor");
+  EXPECT_EQ(j["diagnosis"]["rule"], "coherence");
+  EXPECT_EQ(j["diagnosis"]["margin"], a.coherence->margin);
+  EXPECT_EQ(j["diagnosis"]["named"][0], "outer");
+  EXPECT_EQ(j["coherence"]["bands"].size(), 25u);
+  EXPECT_EQ(j["coherence"]["map"]["inner"].size(), 25u);
+  EXPECT_EQ(j["coherence"]["families"]["outer"]["margin"], a.coherence->families[0].test.margin);
+  EXPECT_TRUE(j["coherence"]["families"]["outer"]["named"].get<bool>());
+  EXPECT_EQ(j["units"]["coherence.map"], "dB");
   EXPECT_EQ(j["fault_lines"]["outer"]["evidence"], a.lines->families[0].comb.evidence);
   EXPECT_TRUE(j["fault_lines"]["outer"]["detected"].get<bool>());
   EXPECT_TRUE(j["units"].contains("fault_lines.*.{evidence,threshold}"));
   // The readable summary says the same.
   const std::string text = record_summary_text(a, origin);
-  EXPECT_NE(text.find("Diagnosis: outer race"), std::string::npos) << text;
+  EXPECT_NE(text.find("Diagnosis: outer race (margin +"), std::string::npos) << text;
+  EXPECT_NE(text.find("Cyclic coherence by band (25 bands"), std::string::npos) << text;
   EXPECT_NE(text.find("rig/130.mat"), std::string::npos) << text;
   // A value that is not finite: nothing written, the earlier files as they were.
   const std::string before = read(dir / "summary.json");

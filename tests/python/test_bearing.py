@@ -467,13 +467,43 @@ class Analyse(unittest.TestCase):
         self.assertEqual(list(a.envelope), ["frequency", "env_DE", "ses_DE"])
         self.assertFalse(a.spectrum["DE"].flags.writeable)
 
+    def test_coherence_evidence_and_margin(self):
+        a = bearing.analyse(self.x, 12000, self.case, "1797 rpm", channel="DE")
+        self.assertEqual(a.family, a.summary["diagnosis"]["family"])
+        self.assertEqual(a.summary["diagnosis"]["rule"], "coherence")
+        self.assertEqual(a.margin, a.summary["diagnosis"]["margin"])
+        c = a.coherence
+        self.assertEqual(c, a.summary["coherence"])
+        self.assertEqual(len(c["bands"]), 25)
+        self.assertEqual(sorted(c["map"]), ["ball", "inner", "outer"])
+        for family, info in c["families"].items():
+            self.assertEqual(len(c["map"][family]), 25)
+            self.assertEqual(len(info["harmonics"]), 3)
+            self.assertEqual(info["named"], family in a.summary["diagnosis"]["named"])
+        if a.family not in ("none", "several"):
+            self.assertGreater(a.margin, 0)
+            self.assertTrue(c["families"][a.family]["named"])
+        self.assertIn("Cyclic coherence by band", str(a))
+        older = bearing.analyse(self.x, 12000, self.case, "1797 rpm", rule="line_to_floor")
+        self.assertEqual(older.summary["diagnosis"]["rule"], "line_to_floor")
+        self.assertEqual(older.family, older.summary["diagnosis"]["family"])
+        as_given = bearing.analyse(self.x, 12000, self.case, "1797 rpm", speed_refinement=0)
+        self.assertNotIn("given", as_given.summary["speed"])
+        self.assertAlmostEqual(as_given.summary["speed"]["rpm"], 1797, places=9)
+
     def test_speed_given_and_its_source(self):
-        a = bearing.analyse(self.x, 12000, self.case, "1796 rpm", speed_source="record")
+        a = bearing.analyse(self.x, 12000, self.case, "1796 rpm", speed_source="record",
+                            speed_refinement=0)
         self.assertEqual(a.summary["speed"]["source"], "record")
         self.assertAlmostEqual(a.summary["speed"]["rpm"], 1796, places=9)
+        # Refined from the record's shaft lines (at 1797 rpm), the given speed kept.
+        refined = bearing.analyse(self.x, 12000, self.case, "1796 rpm", speed_source="record")
+        self.assertAlmostEqual(refined.summary["speed"]["given"], 1796 * 2 * np.pi / 60, places=9)
+        self.assertAlmostEqual(refined.summary["speed"]["rpm"], 1797, delta=0.2)
         self.assertEqual(bearing.analyse(self.x, 12000, self.case).summary["speed"]["source"],
                          "case")
-        b = bearing.analyse(list(self.x[:60000]), 12000.0, self.case, 188.0, band=(2000, "4 kHz"))
+        b = bearing.analyse(list(self.x[:60000]), 12000.0, self.case, 188.0, band=(2000, "4 kHz"),
+                            speed_refinement=0)
         self.assertEqual(b.summary["speed"]["value"], 188.0)
         self.assertEqual(b.summary["envelope"]["record"]["band"], [2000, 4000])
         self.assertIsNone(bearing.analyse(self.x, 12000, self.case, band="none").envelope)
@@ -483,7 +513,9 @@ class Analyse(unittest.TestCase):
         r = bearing.run(case)
         # The run's analysis window: from the transient to the last sample, which it leaves out.
         steady = np.flatnonzero(r.t >= r.summary["case"]["transient"] - 1e-9)[0]
-        a = bearing.analyse(r.ay[steady:-1], r.summary["case"]["output_rate"], case, channel="ay")
+        # Not pre-whitened: the model's impacts are exactly periodic (docs/bearing-sim.md).
+        a = bearing.analyse(r.ay[steady:-1], r.summary["case"]["output_rate"], case, channel="ay",
+                            prewhiten=False)
         self.assertEqual(a.summary["channels"]["ay"], r.summary["channels"]["ay"])
         self.assertTrue(np.array_equal(bits(a.spectrum["ay"]), bits(r.spectrum["ay"])))
         self.assertEqual([p["frequency"] for p in a.summary["peaks"]["ay"]],

@@ -594,7 +594,8 @@ def case_analysis(args, plot):
         sys.exit(77)
     case = bearing.Case.from_toml('[bearing]\npreset = "6205"\n[operation]\nspeed = "1797 rpm"\n')
     analysis = bearing.analyse(outer_fault_record(), 12000, case, channel="DE", file="rig.mat")
-    sizes = {"spectrum": plot.SIZES["record_spectrum"], "envelope": plot.SIZES["record_envelope"]}
+    sizes = {"spectrum": plot.SIZES["record_spectrum"], "envelope": plot.SIZES["record_envelope"],
+             "coherence": plot.SIZES["record_coherence"]}
     for fmt in ("csv", "npy"):
         folder = os.path.join(args.work, "analysis_" + fmt)
         analysis.write(folder, fmt)
@@ -602,7 +603,8 @@ def case_analysis(args, plot):
         result = plot_cli(args, folder)
         check(result.returncode == 0, "bearing-plot ANALYSIS_DIR exits 0 (%s)"
               % result.stderr.strip()[-300:])
-        check_files(plot, os.path.join(folder, "plots"), ["spectrum", "envelope"], sizes=sizes)
+        check_files(plot, os.path.join(folder, "plots"), ["spectrum", "envelope", "coherence"],
+                    sizes=sizes)
         figures = plot.record_figures(plot.load_analysis(folder))
         spectrum = plot.read_table(folder, "spectrum")
         envelope = plot.read_table(folder, "envelope")
@@ -618,6 +620,17 @@ def case_analysis(args, plot):
         check(same(artist(figures["envelope"], "ses:outer").get_xdata(),
                    [l["frequency"] for l in outer]), "%s: the outer race's lines marked" % fmt)
         check(summary["diagnosis"]["family"] == "outer", "the synthetic outer fault is named")
+        # The coherence figure: each band of the map coloured by summary.json's margin, each
+        # family's three harmonic bars its excess.
+        coherence = summary["coherence"]
+        fig = figures["coherence"]
+        for family in ("outer", "inner", "ball"):
+            bars = [p.get_height() for p in fig.findobj(lambda o: o.get_gid() == "lines:" + family)]
+            check(same(bars, [h["excess"] for h in coherence["families"][family]["harmonics"]]),
+                  "%s: %s's bars are its harmonics' excess in its best band" % (fmt, family))
+            cells = fig.findobj(lambda o: (o.get_gid() or "").startswith("map:%s:" % family))
+            check(len(cells) == len(coherence["bands"]),
+                  "%s: one cell a band in %s's map" % (fmt, family))
 
 
 def check_contact(args, plot, folder, out):

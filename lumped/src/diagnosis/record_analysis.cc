@@ -65,12 +65,18 @@ std::string where_text(const EnvelopeSummary& e, bool prewhitened) {
 // reads the names, so it keeps the nominal ones.
 void rename_envelope_peaks(RecordAnalysis& a) {
   BearingFrequencies found = a.frequencies;
-  for (const FamilyLines& l : a.lines->families) {
-    if (!l.comb.detected) continue;
-    if (l.family == FaultFamily::outer) found.bpfo = l.comb.carrier;
-    if (l.family == FaultFamily::inner) found.bpfi = l.comb.carrier;
-    if (l.family == FaultFamily::ball)
-      found.bsf = 0.5 * l.comb.carrier, found.ftf = a.frequencies.ftf * (1 + l.comb.offset);
+  const auto found_at = [&](FaultFamily family, double carrier) {
+    if (family == FaultFamily::outer) found.bpfo = carrier;
+    if (family == FaultFamily::inner) found.bpfi = carrier;
+    if (family == FaultFamily::ball)
+      found.bsf = 0.5 * carrier, found.ftf = a.frequencies.ftf * carrier / (2 * a.frequencies.bsf);
+  };
+  if (a.settings.rule == DiagnosisRule::coherence) {
+    for (const FamilyEvidence& e : a.coherence->families)
+      if (e.named) found_at(e.family, e.test.harmonics[0].frequency);
+  } else {
+    for (const FamilyLines& l : a.lines->families)
+      if (l.comb.detected) found_at(l.family, l.comb.carrier);
   }
   EnvelopeSummary& e = a.summary.envelopes.front();
   const auto names = fault_frequency_names_up_to(0.5 * a.rate, found.shaft, found.ftf, found.bpfo,
@@ -78,9 +84,26 @@ void rename_envelope_peaks(RecordAnalysis& a) {
   e.peaks = find_peaks(e.spectrum, names, a.settings.peaks);
 }
 
+// A given speed refined by the record's own shaft harmonics within ±settings.speed_refinement,
+// where they stand out; kept as given where they do not.
+void refine_speed(const Spectrum& hann, const RecordAnalysisSettings& s, RecordSpeed& speed) {
+  if (s.speed_refinement <= 0) return;
+  if (!(s.speed_refinement < 0.1))
+    throw InputError("record analysis: speed refinement = " + format_number(s.speed_refinement) +
+                     ": allowed 0 (off) … < 0.1");
+  FundamentalEstimate e = estimate_fundamental(hann, speed.speed / two_pi, s.speed_refinement,
+                                               s.speed_harmonics, s.lines.false_alarm);
+  if (!e.found) return;
+  speed.given = speed.speed;
+  speed.speed = two_pi * e.frequency;
+  speed.estimate = std::move(e);
+}
+
 }  // namespace
 
 FaultFamily RecordAnalysis::family() const {
+  if (settings.rule == DiagnosisRule::coherence)
+    return coherence ? coherence->family : FaultFamily::none;
   if (settings.rule == DiagnosisRule::line_to_floor)
     return lines ? lines->family : FaultFamily::none;
   return summary.diagnosis ? summary.diagnosis->family : FaultFamily::none;
@@ -137,6 +160,7 @@ RecordAnalysis analyse_record(const std::vector<double>& x, double rate, const s
   } else {
     a.speed.source = speed.source;
     a.speed.speed = speed.speed;
+    refine_speed(hann, settings, a.speed);
   }
   const BearingFrequencies& f = a.frequencies = bearing_frequencies(bearing, a.speed.speed);
   if (a.settings.min_bandwidth <= 0)
@@ -179,7 +203,9 @@ RecordAnalysis analyse_record(const std::vector<double>& x, double rate, const s
   a.lines = diagnose_lines(
       search_fault_lines(*a.squared_envelope, e.band.high - e.band.low, f, settings.lines),
       settings.lines, where_text(e, a.prewhitened));
-  if (settings.rule == DiagnosisRule::line_to_floor) rename_envelope_peaks(a);
+  a.coherence = diagnose_coherence(x, rate, f, settings.coherence_levels, settings.coherence,
+                                   settings.prewhiten);
+  if (settings.rule != DiagnosisRule::envelope_peaks) rename_envelope_peaks(a);
   return a;
 }
 

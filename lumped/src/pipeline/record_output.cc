@@ -12,6 +12,7 @@
 #include "bearing/constants.h"
 #include "bearing/json_helpers.h"
 #include "bearing/units.h"
+#include "coherence_report.h"
 #include "envelope_report.h"
 #include "result_tables.h"
 
@@ -32,6 +33,7 @@ json speed_json(const RecordAnalysis& a, const RecordOrigin& origin) {
             {"rpm", sp.speed * 60 / two_pi},
             {"source", name_of(kSpeedSources, sp.source)},
             {"origin", origin.speed_origin}};
+  if (sp.given) j["given"] = *sp.given;
   if (sp.estimate) {
     const FundamentalEstimate& e = *sp.estimate;
     json harmonics = json::array();
@@ -127,7 +129,7 @@ void add_record_units(json& units, bool envelope) {
   units["record.rate"] = "Hz";
   units["record.duration"] = "s";
   units["case.speed"] = "rad/s";
-  units["speed.value"] = "rad/s";
+  units["speed.{value,given}"] = "rad/s";
   units["speed.shaft"] = "Hz";
   units["speed.rpm"] = "rpm";
   units["speed.estimate.nominal"] = "rad/s";
@@ -148,6 +150,7 @@ void add_record_units(json& units, bool envelope) {
   units["fault_lines.*.lines.level"] = "dB";
   units["diagnosis.evidence.level"] = "dB";
   units["diagnosis.{evidence_level,threshold,margin}"] = "dB";
+  add_coherence_units(units);
 }
 
 // printf into a string; the arguments' types must match the pattern's.
@@ -177,6 +180,7 @@ std::string speed_text(const RecordAnalysis& a) {
   }
   if (!sp.estimate) return out + "\n";
   const FundamentalEstimate& e = *sp.estimate;
+  if (sp.given) out += format(", refined from %.6g rpm", *sp.given * 60 / two_pi);
   out += ", estimated within ±" + format("%.3g %%", 100 * e.tolerance) + " of " +
          format("%.6g rpm", e.nominal * 60) + " from the shaft harmonics";
   for (const HarmonicLine& h : e.harmonics)
@@ -247,7 +251,10 @@ json record_summary_json(const RecordAnalysis& a, const RecordOrigin& origin) {
     j["envelope"] = envelope_json(a.summary.envelopes);
     j["envelope"][a.channel]["prewhitened"] = a.prewhitened;
     j["fault_lines"] = fault_lines_json(*a.lines);
-    if (a.settings.rule == DiagnosisRule::line_to_floor) {
+    j["coherence"] = coherence_json(*a.coherence);
+    if (a.settings.rule == DiagnosisRule::coherence) {
+      j["diagnosis"] = coherence_diagnosis_json(*a.coherence);
+    } else if (a.settings.rule == DiagnosisRule::line_to_floor) {
       j["diagnosis"] = line_diagnosis_json(a);
     } else {
       j["diagnosis"] = diagnosis_json(*a.summary.diagnosis);
@@ -296,7 +303,9 @@ std::string record_summary_text(const RecordAnalysis& a, const RecordOrigin& ori
   envelopes_only.diagnosis.reset();
   o << envelope_text(envelopes_only) << (a.prewhitened ? "  (of the pre-whitened record)\n" : "");
   o << fault_lines_text(*a.lines);
-  if (a.settings.rule == DiagnosisRule::line_to_floor) {
+  if (a.settings.rule == DiagnosisRule::coherence) {
+    o << coherence_text(*a.coherence);
+  } else if (a.settings.rule == DiagnosisRule::line_to_floor) {
     o << "Diagnosis: " << fault_family_text(a.lines->family) << " — " << a.lines->reason << "\n";
   } else {
     VibrationSummary run_rule;

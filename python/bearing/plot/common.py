@@ -23,6 +23,7 @@ SIZES = {
     "force_approach": (13.0, 5.8),
     "record_spectrum": (13.0, 6.0),
     "record_envelope": (13.0, 8.5),
+    "record_coherence": (13.0, 8.0),
     "calibration": (13.0, 10.0),
     "stiffness": (15.0, 5.4),
     "modes": (13.0, 8.0),  # its height follows the panels (modes_figure)

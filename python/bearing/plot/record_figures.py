@@ -1,11 +1,13 @@
 """The figures of an analysed record (``bearing-sim analyse``, ``bearing.analyse(...).write``):
-its spectrum with the named peaks, its envelope spectrum, and its squared envelope spectrum with
-each fault family's comb of lines and the diagnosis."""
+its spectrum with the named peaks, its envelope spectrum, its squared envelope spectrum with
+each fault family's comb of lines, and the coherence diagnosis's map and lines
+(coherence_figure.py)."""
 
 import os
 
 import numpy as np
 
+from .coherence_figure import coherence_figure
 from .common import (DISPLAY, FolderError, _frequency_limit, _nice_ceiling, _new_figure, _style,
                      channel_label)
 from .folders import _read_json, read_table
@@ -168,4 +170,6 @@ def record_figures(a):
     figures = {"spectrum": spectrum_figure(a)}
     if a.envelope is not None:
         figures["envelope"] = envelope_figure(a)
+    if "coherence" in a.summary:
+        figures["coherence"] = coherence_figure(a)
     return figures

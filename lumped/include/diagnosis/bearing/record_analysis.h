@@ -15,6 +15,7 @@
 
 #include "bearing/bearing.h"
 #include "bearing/choice.h"
+#include "bearing/coherence_diagnosis.h"
 #include "bearing/fault_lines.h"
 #include "bearing/kinematics.h"
 #include "bearing/signal/fundamental_estimate.h"
@@ -48,17 +49,22 @@ struct SpeedSetting {
 struct RecordSpeed {
   SpeedSource source = SpeedSource::case_file;
   double speed = 0;  ///< inner-ring speed [rad/s]
-  /// `estimate` only: the nominal, the tolerance, the shaft-harmonic comb and the harmonics the
-  /// refinement used (frequencies [Hz], levels over the floor [dB]).
+  /// `estimate`, or a given speed refined: the nominal, the tolerance, the shaft-harmonic comb and
+  /// the harmonics the refinement used (frequencies [Hz], levels over the floor [dB]).
   std::optional<FundamentalEstimate> estimate;
+  /// A given speed that the record's own shaft harmonics refined (speed_refinement): the speed
+  /// given [rad/s]; `speed` is then the record's.
+  std::optional<double> given;
 };
 
 /// Which rule names the fault family.
 enum class DiagnosisRule {
+  coherence,       ///< each family in its band of the cyclic-coherence map (coherence_diagnosis.h)
   line_to_floor,   ///< the fault lines of the squared envelope spectrum (fault_lines.h)
   envelope_peaks,  ///< `run`'s: spectral kurtosis and the envelope peaks' shares (diagnosis.h)
 };
 inline constexpr Named<DiagnosisRule> kDiagnosisRules[] = {
+    {DiagnosisRule::coherence, "coherence"},
     {DiagnosisRule::line_to_floor, "line_to_floor"},
     {DiagnosisRule::envelope_peaks, "envelope_peaks"}};
 
@@ -88,7 +94,17 @@ struct RecordAnalysisSettings {
   /// spectrum and raise false alarms (CWRU's healthy record 97 does without it).
   bool prewhiten = true;
   FaultLineSettings lines;  ///< the fault-line search and its false-alarm rate
-  DiagnosisRule rule = DiagnosisRule::line_to_floor;
+  /// The coherence diagnosis's line test (its false-alarm rate per family and record).
+  LineTestSettings coherence;
+  int coherence_levels = 3;  ///< levels of the band map (coherence_bands())
+  DiagnosisRule rule = DiagnosisRule::coherence;
+  /// A given speed (option, case, record) is refined from the record's own shaft harmonics within
+  /// ±this fraction, where they stand out (estimate_fundamental() with speed_harmonics, at the
+  /// fault lines' false-alarm rate); 0: the given speed is used as is. A speed written down by
+  /// hand is a reading: the CWRU fan-end record 279 (1 hp) stores 1732 rpm, its shaft lines say
+  /// 1773 rpm (2.4 % faster), and its shaft harmonics then fall outside the zones left out. ±3 %
+  /// lies inside the ±10 % within which a comb of shaft harmonics is unambiguous.
+  double speed_refinement = 0.03;
   double speed_tolerance = 0.1;  ///< `estimate`: the search within ±10 % of the nominal speed [-]
   int speed_harmonics = 3;       ///< `estimate`: shaft harmonics f_r … 3 f_r in the comb
 };
@@ -110,6 +126,8 @@ struct RecordAnalysis {
   /// With an envelope: the squared envelope spectrum of its band [unit²] and the fault lines in it.
   std::optional<Spectrum> squared_envelope;
   std::optional<LineDiagnosis> lines;
+  /// With an envelope: the diagnosis from the band-integrated cyclic spectral coherence.
+  std::optional<CoherenceDiagnosis> coherence;
   RecordAnalysisSettings settings;  ///< as applied (min_bandwidth resolved)
 
   /// The family the settings' rule names (none without an envelope).
