@@ -40,6 +40,7 @@ RecordAnalysis Context::analyse_record(const std::vector<double>& samples, doubl
   speed.speed *= perturbation_.analysis_speed;
   settings.prewhiten = settings.prewhiten && !perturbation_.drop_prewhitening;
   settings.lines.false_alarm *= perturbation_.false_alarm;
+  settings.coherence.false_alarm *= perturbation_.false_alarm;
   return bearing::analyse_record(samples, rate, "record", "m/s^2", b, speed, settings);
 }
 

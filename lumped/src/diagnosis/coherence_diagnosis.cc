@@ -147,6 +147,7 @@ CoherenceDiagnosis diagnose_coherence(const std::vector<double>& x, double rate,
         FamilyTest t =
             test_harmonics(view, families[i], rates[i], harmonic_probability(p_band, 2), needed, s);
         if (!t.rated) continue;
+        if (stage == 0 && t.detected) ++d.families[i].harmonic_bands;
         if (t.detected)
           t = test_family(view, families[i], rates[i], f.shaft, f.ftf, p_band, needed,
                           stage > 0 || t.standing_out < 3, s);

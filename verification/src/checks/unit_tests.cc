@@ -66,8 +66,10 @@ const std::vector<TestProgram>& programs() {
         "Kurtogram", "ComplexFft", "Prewhitening", "SquaredEnvelope", "LineFloor", "CombThreshold",
         "HarmonicComb", "FundamentalEstimate"}},
       {"envelope_tests",
-       "tests/lumped/test_envelope_analysis.cc, test_record_analysis.cc",
-       {"FaultFamily", "Diagnosis", "EnvelopeAnalysis", "RecordAnalysis"}},
+       "tests/lumped/test_envelope_analysis.cc, test_record_analysis.cc, "
+       "test_coherence_diagnosis.cc",
+       {"FaultFamily", "Diagnosis", "EnvelopeAnalysis", "RecordAnalysis", "CoherenceBands",
+        "FamilyTest", "CoherenceDiagnosis"}},
   };
   return table;
 }

@@ -45,6 +45,9 @@ struct FamilyEvidence {
   FamilyTest test;       ///< there
   bool named = false;    ///< part of the verdict
   int stage = 0;         ///< 0: tested as a first family; 1: again, after another was named
+  /// Bands in which its harmonics alone passed (2 of 3) at the first stage: the Gaussian test
+  /// before physics and decoys, whose rate over all bands is at most the stated one on noise.
+  int harmonic_bands = 0;
 };
 
 /// The verdict.
