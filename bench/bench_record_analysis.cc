@@ -1,11 +1,12 @@
-// Issue 29's benchmark: analyse_record() of a 10 s record at 12 kHz (target < 0.5 s on one core,
-// kurtogram included). The record is synthetic and of the CWRU rig's kind: a 6205 at 1797 rpm
-// whose inner race strikes a 3 kHz resonance at BPFI (1 % jitter), modulated at the shaft rate, in
-// Gaussian noise, with shaft harmonics. Rows: the kurtogram's band, the same with pre-whitening,
-// with the speed estimated, and a given band; each timed in interleaved rounds (one row after the
-// other, round after round, so load from other processes spreads over all of them), min and
-// median. A second length, 121 265 samples (CWRU record 105's, with the prime factor 24 253), shows
-// the cost of a length without small factors (Bluestein FFTs). Prints a table (bench/README.md).
+// Issues 29 and 41's benchmark: analyse_record() of a 10 s record at 12 kHz (target < 0.5 s on one
+// core, the kurtogram and the default rule's cyclic-coherence map included). The record is
+// synthetic and of the CWRU rig's kind: a 6205 at 1797 rpm whose inner race strikes a 3 kHz
+// resonance at BPFI (1 % jitter), modulated at the shaft rate, in Gaussian noise, with shaft
+// harmonics. Rows: the kurtogram's band, the same with pre-whitening, with the speed estimated, and
+// a given band; each timed in interleaved rounds (one row after the other, round after round, so
+// load from other processes spreads over all of them), min and median. A second length, 121 265
+// samples (CWRU record 105's, with the prime factor 24 253), shows the cost of a length without
+// small factors (Bluestein FFTs). Prints a table (bench/README.md).
 //
 //   bearing_bench_record [ROUNDS]      (default 15)
 
