@@ -221,8 +221,10 @@ TEST(CoherenceDiagnosis, ACombBorrowedFromAnothersSeriesIsThatOnes) {
   EXPECT_EQ(d.family, FaultFamily::ball) << d.reason;
   const FamilyTest& outer = d.families[0].test;
   RecordProperty("outer_standing_out", outer.standing_out);
-  if (outer.detected)  // it passed, and was explained by the ball's series
+  if (outer.detected) {  // it passed, and was explained by the ball's series
     EXPECT_NEAR(outer.harmonics[0].frequency, c - 3 * f.ftf, 0.5) << d.reason;
+    EXPECT_EQ(d.families[0].explained_by, FaultFamily::ball);
+  }
 }
 
 TEST(CoherenceDiagnosis, DeterministicLinesAreNotFaults) {

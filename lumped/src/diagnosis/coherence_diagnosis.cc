@@ -4,6 +4,7 @@
 #include "bearing/coherence_diagnosis.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdio>
 
@@ -99,10 +100,112 @@ std::string evidence_text(const FamilyEvidence& e, const std::vector<CoherenceBa
   return out + ")";
 }
 
-// Each family's best test over the bands at this stage (detected first, then the larger key).
-struct Stage {
-  std::vector<FamilyEvidence> best;  // outer, inner, ball
+constexpr FaultFamily kFamilies[3] = {FaultFamily::outer, FaultFamily::inner, FaultFamily::ball};
+
+// What every stage searches: the bands' SES power, the bins left out, the rates.
+struct Search {
+  std::vector<std::vector<double>> power;  // by band
+  double df = 0;                           // [Hz]
+  std::vector<char> mask;                  // 1: excluded
+  double p_band = 0;                       // each family's false-alarm rate in one band
+  std::array<double, 3> rates{};           // BPFO, BPFI, 2·BSF [Hz]
 };
+
+// Each open family's best band at `stage` (detected first, then the larger score over its decoys,
+// else the larger margin); the map holds the first stage's margins. found[i]: some band rated.
+std::vector<bool> search_bands(CoherenceDiagnosis& d, const Search& x, const BearingFrequencies& f,
+                               const LineTestSettings& s, int stage,
+                               const std::vector<bool>& open) {
+  std::vector<bool> found(3, false);
+  const int needed = stage == 0 ? 2 : 3;
+  for (std::size_t b = 0; b < d.bands.size(); ++b) {
+    const SesView view{&x.power[b], x.df, d.bands[b].band.high - d.bands[b].band.low, &x.mask};
+    for (int i = 0; i < 3; ++i) {
+      if (!open[i]) continue;
+      FamilyTest t = test_harmonics(view, kFamilies[i], x.rates[i],
+                                    harmonic_probability(x.p_band, 2), needed, s);
+      if (!t.rated) continue;
+      if (stage == 0 && t.detected) ++d.families[i].harmonic_bands;
+      if (t.detected)
+        t = test_family(view, kFamilies[i], x.rates[i], f.shaft, f.ftf, x.p_band, needed,
+                        stage > 0 || t.standing_out < 3, s);
+      if (stage == 0) d.map[i][b] = t.margin;
+      FamilyEvidence& e = d.families[i];
+      const double key = t.detected ? t.score - t.decoy_score : t.margin;
+      const double best = e.test.detected ? e.test.score - e.test.decoy_score : e.test.margin;
+      if (!found[i] || (t.detected && !e.test.detected) ||
+          (t.detected == e.test.detected && key > best)) {
+        e.band = b, e.test = t, e.stage = stage;
+        found[i] = true;
+      }
+    }
+  }
+  return found;
+}
+
+// The family to name next, or −1. Of the candidates, one whose fundamental is a line of another's
+// series while that one's is not of its series is that other's (a comb is anchored on its
+// fundamental: the 6205's 2·BSF − 3·FTF lies 1.9 % below BPFO, the 6203's BPFO + f_r 1.6 % above
+// 2·BSF); then a race before the ball, then the larger score over its decoys.
+int next_family(CoherenceDiagnosis& d, const Search& x, const BearingFrequencies& f,
+                const LineTestSettings& s, const std::vector<bool>& open,
+                const std::vector<bool>& found) {
+  std::vector<int> candidates;
+  for (int i = 0; i < 3; ++i)
+    if (open[i] && found[i] && d.families[i].test.detected &&
+        (d.named.empty() || is_race(kFamilies[i])))
+      candidates.push_back(i);
+  const auto series_holds = [&](int owner, int other) {
+    const FamilyEvidence& o = d.families[owner];
+    const double g = owner == 2 ? f.ftf * o.test.harmonics[0].frequency / x.rates[2] : f.shaft;
+    return in_series(d.families[other].test.harmonics[0].frequency, o, g, s.explained_sidebands,
+                     x.df);
+  };
+  std::vector<int> own;
+  std::vector<int> by(3, -1);  // the family whose series explains each candidate
+  for (int i : candidates) {
+    for (int j : candidates)
+      if (by[i] < 0 && j != i && series_holds(j, i) && !series_holds(i, j)) by[i] = j;
+    if (by[i] < 0) own.push_back(i);
+  }
+  if (own.empty()) own = candidates;
+  const auto key = [&](int j) {
+    const FamilyTest& t = d.families[j].test;
+    return std::make_pair(is_race(kFamilies[j]), t.score - t.decoy_score);
+  };
+  int next = -1;
+  for (int i : own)
+    if (next < 0 || key(i) > key(next)) next = i;
+  for (int i : candidates)
+    if (by[i] == next && next >= 0) d.families[i].explained_by = kFamilies[next];
+  return next;
+}
+
+// The verdict, its margin and its reason from the named families.
+void conclude(CoherenceDiagnosis& d, const LineTestSettings& s) {
+  if (d.named.empty()) {
+    d.margin = kUnrated;
+    std::string all;
+    for (const FamilyEvidence& e : d.families) {
+      d.margin = std::max(d.margin, e.test.margin);
+      if (e.test.rated) all += (all.empty() ? "" : "; ") + evidence_text(e, d.bands);
+    }
+    d.reason = all.empty() ? "no family could be rated in any band (record too short?)"
+                           : "no family's lines pass, at a false-alarm rate of " +
+                                 format("%.3g", s.false_alarm) + " per family: " + all;
+    return;
+  }
+  d.family = d.named.size() == 1 ? d.named.front() : FaultFamily::several;
+  d.margin = 1e300;
+  std::string named;
+  for (const FamilyEvidence& e : d.families)
+    if (e.named) {
+      d.margin = std::min(d.margin, e.test.margin);
+      named += (named.empty() ? "" : "; and ") + evidence_text(e, d.bands);
+    }
+  d.reason = (d.named.size() == 1 ? "" : "two families clearly present: ") + named +
+             ", at a false-alarm rate of " + format("%.3g", s.false_alarm) + " per family";
+}
 
 }  // namespace
 
@@ -116,113 +219,37 @@ CoherenceDiagnosis diagnose_coherence(const std::vector<double>& x, double rate,
   d.bands = coherence_bands(rate, levels);
   d.prewhitened = prewhiten;
   const std::vector<std::complex<double>> X = whitened_spectrum(x, prewhiten);
-  const double df = rate / static_cast<double>(x.size());
-  std::vector<std::vector<double>> power;
+  Search search;
+  search.df = rate / static_cast<double>(x.size());
+  std::size_t longest = 0;
   for (const CoherenceBand& b : d.bands) {
     std::vector<double> ses = band_squared_envelope(X, x.size(), rate, b.band);
     for (double& v : ses) v *= v;
-    power.push_back(std::move(ses));
+    longest = std::max(longest, ses.size());
+    search.power.push_back(std::move(ses));
   }
-  const double p_band = s.false_alarm / static_cast<double>(d.bands.size());
-  const FaultFamily families[3] = {FaultFamily::outer, FaultFamily::inner, FaultFamily::ball};
-  const double rates[3] = {f.bpfo, f.bpfi, 2 * f.bsf};
+  search.p_band = s.false_alarm / static_cast<double>(d.bands.size());
+  search.rates = {f.bpfo, f.bpfi, 2 * f.bsf};
+  search.mask.assign(longest, 0);
+  mark_shaft(search.mask, f.shaft, search.df, s.shaft_exclusion);
   const double modulation[3] = {f.shaft, f.shaft, f.ftf};
-  std::size_t longest = 0;
-  for (const auto& p : power) longest = std::max(longest, p.size());
-  std::vector<char> mask(longest, 0);
-  mark_shaft(mask, f.shaft, df, s.shaft_exclusion);
 
   d.families.resize(3);
-  for (int i = 0; i < 3; ++i) d.families[i].family = families[i], d.families[i].nominal = rates[i];
+  for (int i = 0; i < 3; ++i)
+    d.families[i].family = kFamilies[i], d.families[i].nominal = search.rates[i];
   d.map.assign(3, std::vector<double>(d.bands.size(), kUnrated));
   std::vector<bool> open = {true, true, true};
   for (int stage = 0; stage < 3; ++stage) {
-    // Each open family's best band at this stage.
-    std::vector<bool> found(3, false);
-    for (std::size_t b = 0; b < d.bands.size(); ++b) {
-      const SesView view{&power[b], df, d.bands[b].band.high - d.bands[b].band.low, &mask};
-      for (int i = 0; i < 3; ++i) {
-        if (!open[i]) continue;
-        const int needed = stage == 0 ? 2 : 3;
-        FamilyTest t =
-            test_harmonics(view, families[i], rates[i], harmonic_probability(p_band, 2), needed, s);
-        if (!t.rated) continue;
-        if (stage == 0 && t.detected) ++d.families[i].harmonic_bands;
-        if (t.detected)
-          t = test_family(view, families[i], rates[i], f.shaft, f.ftf, p_band, needed,
-                          stage > 0 || t.standing_out < 3, s);
-        if (stage == 0) d.map[i][b] = t.margin;
-        FamilyEvidence& e = d.families[i];
-        const double key = t.detected ? t.score - t.decoy_score : t.margin;
-        const double best_key = e.test.detected ? e.test.score - e.test.decoy_score : e.test.margin;
-        if (!found[i] || (t.detected && !e.test.detected) ||
-            (t.detected == e.test.detected && key > best_key)) {
-          e.band = b, e.test = t, e.stage = stage;
-          found[i] = true;
-        }
-      }
-    }
-    // The family to name. Of the candidates, one whose fundamental is a line of another's series
-    // while that one's is not of its series is that other's (a comb is anchored on its
-    // fundamental: the 6205's 2·BSF − 3·FTF lies 1.9 % below BPFO, the 6203's BPFO + f_r 1.6 %
-    // above 2·BSF); then a race before the ball, then the larger score over its decoys.
-    std::vector<int> candidates;
-    for (int i = 0; i < 3; ++i)
-      if (open[i] && found[i] && d.families[i].test.detected &&
-          (d.named.empty() || is_race(families[i])))
-        candidates.push_back(i);
-    const auto series_holds = [&](int owner, int other) {
-      const FamilyEvidence& o = d.families[owner];
-      const double g = owner == 2 ? f.ftf * o.test.harmonics[0].frequency / rates[2] : f.shaft;
-      return in_series(d.families[other].test.harmonics[0].frequency, o, g, s.explained_sidebands,
-                       df);
-    };
-    std::vector<int> own;
-    for (int i : candidates) {
-      bool explained = false;
-      for (int j : candidates)
-        explained = explained || (j != i && series_holds(j, i) && !series_holds(i, j));
-      if (!explained) own.push_back(i);
-    }
-    if (own.empty()) own = candidates;
-    int next = -1;
-    for (int i : own) {
-      const auto key = [&](int j) {
-        const FamilyTest& t = d.families[j].test;
-        return std::make_pair(is_race(families[j]), t.score - t.decoy_score);
-      };
-      if (next < 0 || key(i) > key(next)) next = i;
-    }
+    const std::vector<bool> found = search_bands(d, search, f, s, stage, open);
+    const int next = next_family(d, search, f, s, open, found);
     if (next < 0) break;
     d.families[next].named = true;
-    d.named.push_back(families[next]);
+    d.named.push_back(kFamilies[next]);
     open[next] = false;
     open[2] = false;  // the ball is never a second family (step 3): its first-stage test stays
-    mark_series(mask, d.families[next], modulation[next], s.explained_sidebands, df);
+    mark_series(search.mask, d.families[next], modulation[next], s.explained_sidebands, search.df);
   }
-
-  if (d.named.empty()) {
-    d.margin = kUnrated;
-    std::string all;
-    for (const FamilyEvidence& e : d.families) {
-      d.margin = std::max(d.margin, e.test.margin);
-      if (e.test.rated) all += (all.empty() ? "" : "; ") + evidence_text(e, d.bands);
-    }
-    d.reason = all.empty() ? "no family could be rated in any band (record too short?)"
-                           : "no family's lines pass, at a false-alarm rate of " +
-                                 format("%.3g", s.false_alarm) + " per family: " + all;
-    return d;
-  }
-  d.family = d.named.size() == 1 ? d.named.front() : FaultFamily::several;
-  d.margin = 1e300;
-  std::string named;
-  for (const FamilyEvidence& e : d.families)
-    if (e.named) {
-      d.margin = std::min(d.margin, e.test.margin);
-      named += (named.empty() ? "" : "; and ") + evidence_text(e, d.bands);
-    }
-  d.reason = (d.named.size() == 1 ? "" : "two families clearly present: ") + named +
-             ", at a false-alarm rate of " + format("%.3g", s.false_alarm) + " per family";
+  conclude(d, s);
   return d;
 }
 

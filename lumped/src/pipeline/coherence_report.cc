@@ -48,6 +48,8 @@ json test_json(const FamilyEvidence& e, const CoherenceDiagnosis& d) {
           {"band", {b.low, b.high}},
           {"band_index", e.band},
           {"stage", e.stage},
+          {"harmonic_bands", e.harmonic_bands},
+          {"explained_by", name_of(kFaultFamilies, e.explained_by)},
           {"named", e.named},
           {"detected", t.detected},
           {"standing_out", t.standing_out},
@@ -153,7 +155,14 @@ std::string coherence_text(const CoherenceDiagnosis& d) {
       out += format("; score %.1f dB vs %d decoys' best %.1f", t.score, t.decoys, t.decoy_score);
     if (!t.side_lines.empty())
       out += format("; %s %+.1f dB", t.side_lines.front().label, t.side_lines.front().excess);
-    out += e.named ? " — named\n" : "\n";
+    if (e.named)
+      out += " — named";
+    else if (e.explained_by != FaultFamily::none)
+      out += std::string(" — not named: its fundamental is a line of the ") +
+             fault_family_text(e.explained_by) + "'s series";
+    else if (t.detected)
+      out += " — not named: a race family passes (the ball goes after the races)";
+    out += "\n";
   }
   return out + "Diagnosis: " + fault_family_text(d.family) +
          format(" (margin %+.1f dB)", d.margin) + " — " + d.reason + "\n";

@@ -12,7 +12,8 @@ namespace bearing {
 
 /// summary.json `coherence`: settings, bands ([low, high] [Hz], level, shifted), map (each
 /// family's margin per band [dB], −100 unrated), families (each one's best band and test:
-/// harmonics, decoys, side lines, margin [dB]).
+/// harmonics, decoys, side lines, margin [dB]; harmonic_bands: the bands its harmonics alone
+/// passed in).
 nlohmann::json coherence_json(const CoherenceDiagnosis& d);
 
 /// summary.json `diagnosis` under the coherence rule: family ("outer" | "inner" | "ball" |

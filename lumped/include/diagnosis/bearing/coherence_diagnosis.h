@@ -48,6 +48,8 @@ struct FamilyEvidence {
   /// Bands in which its harmonics alone passed (2 of 3) at the first stage: the Gaussian test
   /// before physics and decoys, whose rate over all bands is at most the stated one on noise.
   int harmonic_bands = 0;
+  /// Passed, but its fundamental is a line of this named family's series (step 3); none if not.
+  FaultFamily explained_by = FaultFamily::none;
 };
 
 /// The verdict.
