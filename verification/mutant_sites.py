@@ -60,6 +60,9 @@ PHYSICS_FILES = [
     "lumped/src/signal/squared_envelope.cc", "lumped/src/signal/statistics.cc",
     # the analysis: a run's (pipeline), the diagnosis layer's, the run's line families and noise
     "lumped/src/pipeline/analysis.cc", "lumped/src/diagnosis/diagnosis.cc",
+    # the coherence diagnosis of a record (issue 41)
+    "lumped/src/diagnosis/coherence_bands.cc", "lumped/src/diagnosis/family_test.cc",
+    "lumped/src/diagnosis/coherence_diagnosis.cc",
     "lumped/src/diagnosis/envelope_analysis.cc", "lumped/src/diagnosis/fault_lines.cc",
     "lumped/src/diagnosis/record_analysis.cc", "lumped/src/pipeline/excitation_families.cc",
     "lumped/src/pipeline/noise.cc",
