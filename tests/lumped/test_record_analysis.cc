@@ -324,6 +324,27 @@ TEST(RecordAnalysis, GaussianNoiseFalseAlarmsStayWithinTheStatedRate) {
   EXPECT_LE(strict, 2);
 }
 
+// The verdict follows the rule: each rule's own diagnosis, whatever the others say.
+TEST(RecordAnalysis, TheVerdictIsTheRulesOwn) {
+  const BearingFrequencies f = bearing_frequencies(cwru_bearing(), kSpeed);
+  const std::vector<double> x = fault_record(f.bpfo, 0, 9);
+  for (DiagnosisRule rule :
+       {DiagnosisRule::coherence, DiagnosisRule::line_to_floor, DiagnosisRule::envelope_peaks}) {
+    RecordAnalysisSettings s;
+    s.rule = rule;
+    RecordAnalysis a = analyse_record(x, kRate, "DE", "m/s^2", cwru_bearing(), given(), s);
+    ASSERT_TRUE(a.coherence && a.lines && a.summary.diagnosis);
+    // Make the three disagree, then ask.
+    a.coherence->family = FaultFamily::several;
+    a.lines->family = FaultFamily::inner;
+    a.summary.diagnosis->family = FaultFamily::ball;
+    const FaultFamily expected = rule == DiagnosisRule::coherence       ? FaultFamily::several
+                                 : rule == DiagnosisRule::line_to_floor ? FaultFamily::inner
+                                                                        : FaultFamily::ball;
+    EXPECT_EQ(a.family(), expected) << name_of(kDiagnosisRules, rule);
+  }
+}
+
 TEST(RecordAnalysis, InputErrorsNameWhatIsWrong) {
   const auto message = [](const std::vector<double>& x, double rate, SpeedSetting speed) {
     try {
@@ -341,6 +362,12 @@ TEST(RecordAnalysis, InputErrorsNameWhatIsWrong) {
   std::string m = message(x, kRate, given());
   EXPECT_TRUE(contains(m, "record DE") && contains(m, "sample 1234")) << m;
   x[1234] = 0;
+  for (std::size_t at : {std::size_t{0}, x.size() - 1}) {  // the ends too
+    std::vector<double> y = x;
+    y[at] = -INFINITY;
+    m = message(y, kRate, given());
+    EXPECT_TRUE(contains(m, "sample " + std::to_string(at))) << m;
+  }
   m = message(x, 0, given());
   EXPECT_TRUE(contains(m, "sample rate = 0 Hz")) << m;
   m = message(x, -kRate, given());
