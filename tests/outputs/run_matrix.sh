@@ -9,15 +9,31 @@
 #     diff -r /tmp/old /tmp/new
 #
 # About 5 s. Not part of ctest: its expected output is whatever the previous build wrote.
+#
+#     tests/outputs/run_matrix.sh BEARING_SIM OUTDIR finer FROM      each run and sweep at its
+#     tests/outputs/run_matrix.sh BEARING_SIM OUTDIR perturbed FROM  integrator's finer setting, or
+#                                                                    with a round-off perturbation
+# read from FROM (a matrix of the same build): bench/output_change.sh's reference runs (issue 42).
 set -u
-[[ $# -eq 2 ]] || { echo "usage: $0 BEARING_SIM OUTDIR" >&2; exit 2; }
+[[ $# -eq 2 || ( $# -eq 4 && ( $3 == finer || $3 == perturbed ) ) ]] ||
+  { echo "usage: $0 BEARING_SIM OUTDIR [finer|perturbed FROM]" >&2; exit 2; }
 root=$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)
 sim=$(cd "$(dirname "$1")" && pwd)/$(basename "$1"); out=$2; ex=$root/examples
+variant=${3:-}; from=${4:-}
+extra() {  # extra NAME ARGS...: the variant's --set arguments for this command (none without one)
+  [[ -n $variant ]] || return 0
+  /usr/bin/python3 "$root/bench/output_change.py" "$variant" "$from/$1" "${@:2}"
+}
 rm -rf "$out"; mkdir -p "$out"
 n=0
 go() {  # go NAME ARGS...   (run gets --out $out/NAME)
   local name=$1; shift
   local cmd=$1; shift
+  if [[ $cmd == run || $cmd == sweep ]]; then
+    local more
+    mapfile -t more < <(extra "$name" "$@")
+    set -- "$@" "${more[@]}"
+  fi
   if [[ $cmd == run ]]; then
     (cd "$root" && "$sim" run "$@" --out "$out/$name" --quiet >"$out/$name.stdout" 2>"$out/$name.stderr"; echo $? >"$out/$name.rc")
   elif [[ $cmd == sweep ]]; then
