@@ -45,6 +45,15 @@ configure() {  # configure BUILD CC CXX FLAGS [extra cmake args]
   fi
 }
 
+build_stage() {  # build_stage BUILD CTEST_ARGS...: the GoogleTest programs and what the tests name
+  local dir=$1
+  shift
+  local listed targets
+  listed=$(/usr/bin/python3 "$src/tests/sanitize/stage_targets.py" "$dir" "$@")
+  mapfile -t targets <<<"$listed"
+  cmake --build "$dir" -j "$jobs" --target lumped_test_programs "${targets[@]}"
+}
+
 case $mode in
   asan)
     flags="-O1 -g -fno-omit-frame-pointer -fsanitize=address,undefined -fno-sanitize-recover=all"
@@ -54,8 +63,10 @@ case $mode in
       echo "sanitize: clang not found (Debian: clang): ASan/UBSan with $(c++ --version | head -1), fuzz targets replay only"
       configure "$build" cc c++ "$flags"
     fi
-    cmake --build "$build" -j "$jobs"
-    # The fast set: label lumped, without the FE, slow and MPI tests (see tests/CMakeLists.txt).
+    # The fast set: label lumped, without the FE, slow and MPI tests (see tests/CMakeLists.txt), and
+    # the fuzz stage's targets (same build): only what they run is built.
+    build_stage "$build" -L lumped -LE 'fem|slow|mpi'
+    build_stage "$build" -L fuzz -R '\.run$'
     ctest --test-dir "$build" -L lumped -LE 'fem|slow|mpi' -j "$jobs" --output-on-failure
     ;;
   fuzz)
