@@ -215,8 +215,11 @@ IntegrationStats rk4_loop(const std::string& method, double dt, double max_displ
   const Rk4Arrays r{q, v, a, qs, vs, as, sq, sv, head};
   const Rk4Arrays tail{q + head,  v + head,  a + head,  qs + head, vs + head,
                        as + head, sq + head, sv + head, n - head};
-  const bool wide = tail.n > 0;
-  const auto acceleration = [&](double t, const double* qq, const double* vv, double* aa) {
+  const bool wide = kDofs == 0 && tail.n > 0;  // never for a fixed count: nothing opaque
+  // Inlined at its four calls: a call would take the arrays' addresses out of the loop, so they
+  // could not stay in registers (the force itself is inline for the kinds' own RK4).
+  const auto acceleration = [&](double t, const double* qq, const double* vv, double* aa)
+      __attribute__((always_inline)) {
     force(t, qq, vv, aa);
     rk4_inline::scale(aa, w, head);
     if (wide) rk4_wide::scale(aa + head, w + head, tail.n);
