@@ -134,7 +134,14 @@ inline void plan_segment(double t, double dt, double t_out, std::vector<Rk4Step>
     const double h = last ? t_out - t : dt;
     ++k;
     const double next = last ? t_out : segment_start + static_cast<double>(k) * dt;
-    plan.push_back({t, h, t + 0.5 * h, t + h, next});
+    // Field by field: a whole Rk4Step built on the stack and copied in 16-byte moves had those
+    // loads wait for the 8-byte stores they straddle (a failed store forwarding per step).
+    Rk4Step& s = plan.emplace_back();
+    s.t = t;
+    s.h = h;
+    s.mid = t + 0.5 * h;
+    s.end = t + h;
+    s.next = next;
     t = next;
   }
 }
