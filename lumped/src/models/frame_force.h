@@ -17,12 +17,6 @@
 
 namespace bearing::detail {
 
-/// The workspace part of a model whose force at t depends on t only through the ball set's frame
-/// (Frame: BallFrame or RaceFrame). Model derives from FrameForce<Model, Frame, Base> (Base:
-/// BearingModel or an interface derived from it) and befriends it; it supplies
-///   const BallSet& ball_set() const;
-///   void force_in(const Frame& frame, const double* q, const double* v, double* f) const;
-/// the generalised force f at the frame's time [N per DOF, SI of each DOF].
 /// Whether Model has force_in_inline(const Frame&, q, v, f) (force_at).
 template <class M, class Frame, class = void>
 struct HasInlineForce : std::false_type {};
@@ -32,6 +26,12 @@ struct HasInlineForce<M, Frame,
                           std::declval<const Frame&>(), nullptr, nullptr, nullptr))>>
     : std::true_type {};
 
+/// The workspace part of a model whose force at t depends on t only through the ball set's frame
+/// (Frame: BallFrame or RaceFrame). Model derives from FrameForce<Model, Frame, Base> (Base:
+/// BearingModel or an interface derived from it) and befriends it; it supplies
+///   const BallSet& ball_set() const;
+///   void force_in(const Frame& frame, const double* q, const double* v, double* f) const;
+/// the generalised force f at the frame's time [N per DOF, SI of each DOF].
 template <class Model, class Frame, class Base>
 class FrameForce : public Base {
  public:
