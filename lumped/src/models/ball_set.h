@@ -30,6 +30,7 @@
 #include "contact_kernels.h"
 #include "defect_excitation.h"
 #include "frame_workspace.h"
+#include "inline_contacts.h"
 #include "max_balls.h"
 #include "model_input_checks.h"
 #include "phasor.h"
@@ -239,8 +240,9 @@ class BallSet {
   /// The frame at time t [s] in `workspace` (a FrameWorkspace<Frame> from the model's
   /// make_workspace()), evaluated only when t differs from the last t asked of it
   /// (frame_workspace.h); `ahead`: time_angles(t) computed ahead, or nullptr. The reference is
-  /// valid until the next call with this workspace.
-  template <class Frame>
+  /// valid until the next call with this workspace. kInline: the balls rotated by the inline
+  /// loop (inline_contacts.h; the same bits), for the kinds' own RK4.
+  template <class Frame, bool kInline = false>
   const Frame& frame(double t, MechanicalSystem::Workspace& workspace,
                      const TimeAngles* ahead = nullptr) const {
     assert(dynamic_cast<FrameWorkspace<Frame>*>(&workspace));
@@ -251,7 +253,7 @@ class BallSet {
       if (std::isnan(w.t) || excitation_varies())
         evaluate(t, a, w.frame);
       else
-        angles(a, w.frame);
+        angles<kInline>(a, w.frame);
       w.t = t;
     }
     return w.frame;
@@ -339,15 +341,20 @@ class BallSet {
 
  private:
   // θ_j and the shaft angle at t from time_angles(t): the precomputed (cos, sin) of φ₀ + 2πj/Z
-  // rotated by the one phasor of ω_c t (Frame: BallFrame or RaceFrame).
-  template <class Frame>
+  // rotated by the one phasor of ω_c t (Frame: BallFrame or RaceFrame); kInline: frame().
+  template <bool kInline = false, class Frame>
   void angles(const TimeAngles& ta, Frame& fr) const {
     const double cc = ta.cage.c, sc = ta.cage.s;
     fr.cos_shaft = ta.shaft.c;
     fr.sin_shaft = ta.shaft.s;
     fr.slip_rate = ta.slip_rate;
     static_assert(kMaxBalls % kKernelPad == 0, "the frame's arrays hold whole vectors");
-    kernels_.rotate(base_cos_.data(), base_sin_.data(), cc, sc, balls_, fr.cos_theta, fr.sin_theta);
+    if constexpr (kInline)
+      rotate_balls_inline(base_cos_.data(), base_sin_.data(), cc, sc, balls_, fr.cos_theta,
+                          fr.sin_theta);
+    else
+      kernels_.rotate(base_cos_.data(), base_sin_.data(), cc, sc, balls_, fr.cos_theta,
+                      fr.sin_theta);
   }
 
   // Adds each race's waviness at the balls of `fr` (angles set) to `inner` and `outer` (one array

@@ -7,6 +7,7 @@
 #include <cstdint>
 
 #include "contact_kernels.h"
+#include "inline_contacts.h"
 #include "phasor.h"
 
 #ifndef BEARING_WITHOUT_HIGHWAY
@@ -191,23 +192,13 @@ namespace {
 
 void rotate_balls_scalar(const double* base_cos, const double* base_sin, double cos_phi,
                          double sin_phi, int Z, double* cos_theta, double* sin_theta) {
-  for (int j = 0; j < Z; ++j) {
-    cos_theta[j] = base_cos[j] * cos_phi - base_sin[j] * sin_phi;
-    sin_theta[j] = base_sin[j] * cos_phi + base_cos[j] * sin_phi;
-  }
+  rotate_balls_inline(base_cos, base_sin, cos_phi, sin_phi, Z, cos_theta, sin_theta);
 }
 
 void radial_contacts_scalar(const double* cos_theta, const double* sin_theta,
                             const double* excitation, const double* stiffness, int Z, double x,
                             double y, double gap, double* fx, double* fy) {
-  for (int j = 0; j < Z; ++j) {
-    const double c = cos_theta[j], s = sin_theta[j];
-    const double delta = x * c + y * s - gap + excitation[j];
-    if (delta <= 0) continue;
-    const double q = stiffness[j] * delta * std::sqrt(delta);
-    *fx -= q * c;
-    *fy -= q * s;
-  }
+  radial_contacts_inline(cos_theta, sin_theta, excitation, stiffness, Z, x, y, gap, fx, fy);
 }
 
 void phasors_scalar(const double* theta, int n, double* cos_theta, double* sin_theta) {

@@ -7,6 +7,8 @@
 // evaluation costs one virtual call, as when each model spelled these lines out itself.
 
 #include <memory>
+#include <type_traits>
+#include <utility>
 #include <vector>
 
 #include "ball_set.h"
@@ -14,6 +16,15 @@
 #include "frame_workspace.h"
 
 namespace bearing::detail {
+
+/// Whether Model has force_in_inline(const Frame&, q, v, f) (force_at).
+template <class M, class Frame, class = void>
+struct HasInlineForce : std::false_type {};
+template <class M, class Frame>
+struct HasInlineForce<M, Frame,
+                      std::void_t<decltype(std::declval<const M&>().force_in_inline(
+                          std::declval<const Frame&>(), nullptr, nullptr, nullptr))>>
+    : std::true_type {};
 
 /// The workspace part of a model whose force at t depends on t only through the ball set's frame
 /// (Frame: BallFrame or RaceFrame). Model derives from FrameForce<Model, Frame, Base> (Base:
@@ -45,10 +56,17 @@ class FrameForce : public Base {
   /// force_with() for a caller that knows the model's type (static_rk4.h): no virtual call, so
   /// the force inlines into the caller's loop; `ahead`: the ball set's time_angles(t) computed
   /// ahead, or nullptr.
-  void force_at(FrameWorkspace<Frame>& workspace, double t, const double* q, const double* v,
-                double* f, const BallSet::TimeAngles* ahead = nullptr) const {
+  /// A model with force_in_inline() (its per-ball loops inline: inline_contacts.h, the same bits
+  /// as force_in) has it called here, with the frame's balls rotated inline too.
+  [[gnu::always_inline]] void force_at(FrameWorkspace<Frame>& workspace, double t, const double* q,
+                                       const double* v, double* f,
+                                       const BallSet::TimeAngles* ahead = nullptr) const {
     const Model& model = static_cast<const Model&>(*this);
-    model.force_in(model.ball_set().template frame<Frame>(t, workspace, ahead), q, v, f);
+    if constexpr (HasInlineForce<Model, Frame>::value)
+      model.force_in_inline(model.ball_set().template frame<Frame, true>(t, workspace, ahead), q, v,
+                            f);
+    else
+      model.force_in(model.ball_set().template frame<Frame>(t, workspace, ahead), q, v, f);
   }
 
   /// The ball set's time_angles() of n times at once (BallSet::TimeAngles), for a caller

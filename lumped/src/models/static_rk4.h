@@ -96,7 +96,7 @@ class StaticRk4 final : public Integrator {
         return n >= solvers_detail::kRk4WideDofs ? 0 : n;
     }
 
-    void operator()(double t, const double* q, const double* v, double* f) {
+    [[gnu::always_inline]] void operator()(double t, const double* q, const double* v, double* f) {
       // The calls come in the order of `times`, each new time after the last one used (a time
       // already in the workspace needs no angles).
       const BallSet::TimeAngles* found = nullptr;

@@ -128,6 +128,12 @@ class ThreeDofModel final
     m[2] = axial_mass_;
   }
 
+  // Its per-ball loop is inline already: force_in_inline (frame_force.h) only has the frame's
+  // balls rotated inline too.
+  void force_in_inline(const detail::BallFrame& fr, const double* q, const double* v,
+                       double* f) const {
+    force_in(fr, q, v, f);
+  }
   void force_in(const detail::BallFrame& fr, const double* q, const double* v, double* f) const {
     const double x = q[0], y = q[1], z = q[2], n = set_.exponent();
     const double w = geometry_.w0 + z;

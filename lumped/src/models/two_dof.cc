@@ -14,6 +14,7 @@
 #include "bearing/static_load.h"
 #include "frame_force.h"
 #include "housed_model.h"
+#include "inline_contacts.h"
 #include "model_input_checks.h"
 #include "static_rk4.h"
 
@@ -44,11 +45,27 @@ class TwoDofModel final : public detail::FrameForce<TwoDofModel, detail::BallFra
 
   // Contact loop: δ_j from the rotated ball directions, Q_j = K_j δ_j^n, summed on the ring.
   void force_in(const detail::BallFrame& fr, const double* q, const double* v, double* f) const {
+    contact_force<false>(fr, q, v, f);
+  }
+  // The same with the per-ball loop inline (frame_force.h, inline_contacts.h: the same bits).
+  [[gnu::always_inline]] void force_in_inline(const detail::BallFrame& fr, const double* q,
+                                              const double* v, double* f) const {
+    contact_force<true>(fr, q, v, f);
+  }
+
+ private:
+  // Always inline: the kind's own RK4 then keeps the state in registers (rk4_loop.h).
+  template <bool kInline>
+  [[gnu::always_inline]] void contact_force(const detail::BallFrame& fr, const double* q,
+                                            const double* v, double* f) const {
     const double x = q[0], y = q[1], n = set_.exponent();
     double fx = load_x_ + unbalance_force_ * fr.cos_shaft - damping_ * v[0];
     double fy = load_y_ + unbalance_force_ * fr.sin_shaft - damping_ * v[1];
     const int Z = set_.balls();
-    if (n == 1.5) {
+    if (n == 1.5 && kInline) {
+      detail::radial_contacts_inline(fr.cos_theta, fr.sin_theta, fr.excitation, fr.stiffness, Z, x,
+                                     y, gap_, &fx, &fy);
+    } else if (n == 1.5) {
       set_.kernels().radial(fr.cos_theta, fr.sin_theta, fr.excitation, fr.stiffness, Z, x, y, gap_,
                             &fx, &fy);
     } else {
@@ -65,6 +82,7 @@ class TwoDofModel final : public detail::FrameForce<TwoDofModel, detail::BallFra
     f[1] = fy;
   }
 
+ public:
   // ∂f/∂q = −Σ_j n K_j δ_j^{n−1} e_j e_jᵀ over the loaded balls (e_j = (cos θ_j, sin θ_j));
   // ∂f/∂v = −c I.
   void force_jacobian(double t, const double* q, const double* /*v*/, double* dfdq,
