@@ -599,14 +599,25 @@ TEST(IntegratorDense, HermiteStepReproducesPolynomials) {
       step.at(t, &qi, &vi);
       EXPECT_NEAR(qi, q, 1e-14) << "t2 = " << t2 << ", t = " << t;
       EXPECT_NEAR(vi, v, 1e-13) << "t2 = " << t2 << ", t = " << t;
+      // a = p''/h² (rk8pd-events' outputs, issue 42), with the same q and v to the bit.
+      double qa, va, ai;
+      step.at(t, &qa, &va, &ai);
+      EXPECT_EQ(qa, qi);
+      EXPECT_EQ(va, vi);
+      EXPECT_NEAR(ai, a, 1e-11) << "t2 = " << t2 << ", t = " << t;
     }
-    double q, v;
+    double q, v, a;
     step.at(t0, &q, &v);
     EXPECT_EQ(q, q0);
     EXPECT_EQ(v, v0);
     step.at(t1, &q, &v);
     EXPECT_EQ(q, q1);
     EXPECT_EQ(v, v1);
+    step.at(t0, &q, &v, &a);
+    EXPECT_EQ(a, a0);
+    step.at(t1, &q, &v, &a);
+    EXPECT_EQ(a, a1);
+    EXPECT_EQ(step.has_third_node(), t2 != 0.0);
   }
   // Degree 6 is beyond the quintic: its error is q⁽⁶⁾/6! (t − t0)³ (t − t1)³.
   const auto sixth = [](double t) { return std::pow(t, 6); };

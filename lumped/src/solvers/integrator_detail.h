@@ -135,6 +135,8 @@ IntegrationStats integrate_gsl(const std::string& method, const gsl_odeiv2_step_
 /// In both, v = p'(s)/h, the derivative of the same polynomial, so the interpolated (q, v) are
 /// consistent (v = dq/dt along the interpolant) and no third derivative (jerk, which would take
 /// the Jacobian) is needed. At s = 0 and s = 1 the step's own values are returned exactly.
+/// Optionally also a = p''(s)/h² (rk8pd-events' outputs, issue 42): O(h⁷) with the third node
+/// (it matches a at all three nodes), only O(h⁴) without it.
 class HermiteStep {
  public:
   /// q, v, a at t₀ (q0, v0, a0) and at t₁ (q1, v1, a1), n entries each; read now, not kept.
@@ -145,7 +147,7 @@ class HermiteStep {
     t1_ = t1;
     h_ = t1 - t0;
     third_ = false;
-    c_.resize(12 * static_cast<std::size_t>(n));
+    c_.resize(kRows * static_cast<std::size_t>(n));
     const double h = h_;
     for (int i = 0; i < n; ++i) {
       const double hv0 = h * v0[i], hha0 = h * h * a0[i];
@@ -161,6 +163,8 @@ class HermiteStep {
       coef(kC5)[i] = 6.0 * d0 - 3.0 * d1 + 0.5 * d2;
       coef(kQ1)[i] = q1[i];
       coef(kV1)[i] = v1[i];
+      coef(kA0)[i] = a0[i];
+      coef(kA1)[i] = a1[i];
     }
   }
 
@@ -188,44 +192,52 @@ class HermiteStep {
     third_ = true;
   }
 
-  /// q(t) and v(t) for t in [t₀, t₁] (n entries each).
-  void at(double t, double* q, double* v) const {
+  /// Whether add_node() raised the interpolant to degree 8.
+  bool has_third_node() const { return third_; }
+
+  /// q(t) and v(t) for t in [t₀, t₁] (n entries each), and a(t) too unless a is null.
+  void at(double t, double* q, double* v, double* a = nullptr) const {
     const int n = n_;
     if (t == t0_ || t == t1_) {
       const bool first = t == t0_;
       std::copy(coef(first ? kQ0 : kQ1), coef(first ? kQ0 : kQ1) + n, q);
       std::copy(coef(first ? kV0 : kV1), coef(first ? kV0 : kV1) + n, v);
+      if (a) std::copy(coef(first ? kA0 : kA1), coef(first ? kA0 : kA1) + n, a);
       return;
     }
     const double s = (t - t0_) / h_;
     const double inv_h = 1.0 / h_;
-    const double u = s * (s - 1.0), w = u * u * u, dw = 3.0 * u * u * (2.0 * s - 1.0);
+    const double u = s * (s - 1.0), du = 2.0 * s - 1.0;
+    const double w = u * u * u, dw = 3.0 * u * u * du, ddw = 6.0 * u * (du * du + u);
     const double x = s - sigma_;
     for (int i = 0; i < n; ++i) {
       const double c2 = coef(kC2)[i], c3 = coef(kC3)[i], c4 = coef(kC4)[i], c5 = coef(kC5)[i];
       const double hv0 = coef(kHv0)[i];
       double p = coef(kQ0)[i] + s * (hv0 + s * (c2 + s * (c3 + s * (c4 + s * c5))));
       double dp = hv0 + s * (2.0 * c2 + s * (3.0 * c3 + s * (4.0 * c4 + s * 5.0 * c5)));
+      double ddp = 2.0 * c2 + s * (6.0 * c3 + s * (12.0 * c4 + s * 20.0 * c5));
       if (third_) {
         const double g1 = coef(kG1)[i], g2 = coef(kG2)[i];
-        const double g = coef(kG0)[i] + x * (g1 + 0.5 * g2 * x);
+        const double g = coef(kG0)[i] + x * (g1 + 0.5 * g2 * x), dg = g1 + g2 * x;
         p += w * g;
-        dp += dw * g + w * (g1 + g2 * x);
+        dp += dw * g + w * dg;
+        ddp += ddw * g + 2.0 * dw * dg + w * g2;
       }
       q[i] = p;
       v[i] = dp * inv_h;
+      if (a) a[i] = ddp * (inv_h * inv_h);
     }
   }
 
  private:
-  enum Row { kQ0, kV0, kHv0, kC2, kC3, kC4, kC5, kQ1, kV1, kG0, kG1, kG2 };
+  enum Row { kQ0, kV0, kHv0, kC2, kC3, kC4, kC5, kQ1, kV1, kG0, kG1, kG2, kA0, kA1, kRows };
   double* coef(Row r) { return c_.data() + static_cast<std::size_t>(r) * n_; }
   const double* coef(Row r) const { return c_.data() + static_cast<std::size_t>(r) * n_; }
 
   int n_ = 0;
   double t0_ = 0.0, t1_ = 0.0, h_ = 0.0, sigma_ = 0.0;
   bool third_ = false;
-  std::vector<double> c_;  // rows of n: q₀, v₀, h v₀, ½h²a₀, c₃, c₄, c₅, q₁, v₁, g₀, g₁, g₂
+  std::vector<double> c_;  // rows of n: q₀, v₀, h v₀, ½h²a₀, c₃, c₄, c₅, q₁, v₁, g₀, g₁, g₂, a₀, a₁
 };
 
 }  // namespace solvers_detail
