@@ -27,10 +27,11 @@
 //      control's proposal after the short landing step.
 //
 // Dense output as in gsl_adaptive.cc (every output time inside an accepted step by Hermite
-// interpolation of q, v, a at its ends), with the degree-8 interpolant (the previous step's start
-// as a third node) only where no event lies between the nodes: the first step and every step
-// that starts on an event use the quintic. a at an output is the degree-8 interpolant's second
-// derivative; on a quintic step it is M⁻¹ f evaluated afresh (counted).
+// interpolation of q, v, a at its ends), with the degree-8 interpolant only where no event lies
+// between its nodes: the previous step's start as the third node, or, for the first step and a
+// step that starts on an event, the next step's end (its outputs wait for that step). a at an
+// output is the degree-8 interpolant's second derivative; only on a step between two events
+// (and a last step that starts on one) is it M⁻¹ f evaluated afresh (counted).
 //
 // Measured on the default case (bench/README.md, issue 18 target 3): 1e-4 on RMS ay at about
 // 11× fewer force evaluations than RK4 5 µs. What limits it is not the events (~250 per second,
@@ -175,6 +176,33 @@ class DenseOutput {
   void emit_state(double t, const double* q, const double* v, long step, double dt) {
     for (; due(t); ++next_) emit(times_[next_], q, v, step, dt);
   }
+  /// Holds a quintic step [t0, t1] (one that starts on an event, or the first) that ends on no
+  /// event: its outputs wait for the next step, whose end becomes its third node (flush), so
+  /// that they too get a from the degree-8 interpolant instead of a fresh evaluation.
+  void defer(HermiteStep& step, double t1, long number, double dt) {
+    std::swap(pending_, step);
+    pending_t1_ = t1;
+    pending_number_ = number;
+    pending_dt_ = dt;
+    has_pending_ = true;
+  }
+  /// Serves a deferred step's outputs, with the next step's end (t2; q, v, a) as its third node.
+  void flush(double t2, const double* q2, const double* v2, const double* a2,
+             ProgressThrottle& report) {
+    if (!has_pending_) return;
+    has_pending_ = false;
+    pending_.add_node(t2, q2, v2, a2);
+    serve(pending_, pending_t1_, pending_number_, pending_dt_, report);
+  }
+
+  /// Serves a step still deferred when the integration ends (not expected: the last step
+  /// flushes it), with the quintic's fresh a.
+  void finish(ProgressThrottle& report) {
+    if (!has_pending_) return;
+    has_pending_ = false;
+    serve(pending_, pending_t1_, pending_number_, pending_dt_, report);
+  }
+
   /// Every output time up to t1 from `step`'s interpolant, each reported as progress. With the
   /// degree-8 interpolant a is its second derivative (O(h⁷), matching a at its three nodes), so an
   /// output costs no force evaluation: that was 29 % of the default case's evaluations (issue
@@ -217,6 +245,10 @@ class DenseOutput {
   int n_;
   std::size_t next_ = 0;
   std::vector<double> q_, v_, a_;
+  HermiteStep pending_;  // a deferred quintic step (defer), while has_pending_
+  bool has_pending_ = false;
+  double pending_t1_ = 0.0, pending_dt_ = 0.0;
+  long pending_number_ = 0;
 };
 
 IntegrationStats EventAdaptive::integrate(const MechanicalSystem& system, double t0,
@@ -301,12 +333,16 @@ IntegrationStats EventAdaptive::integrate(const MechanicalSystem& system, double
       events.set_start(t1, y_try.data());  // the landing step's end, not the attempt's
     else if (events.active())
       events.advance();
+    out.flush(t1, y_try.data(), y_try.data() + n, dydt_end.data() + n, report);
     if (out.due(t1)) {
       step.set(n, t, t1, y.data(), y.data() + n, dydt.data() + n, y_try.data(), y_try.data() + n,
                dydt_end.data() + n);
       if (smooth_before)
         step.add_node(t_before, y_before.data(), y_before.data() + n, a_before.data());
-      out.serve(step, t1, stats.steps, h, report);
+      if (smooth_before || landing || final_step)
+        out.serve(step, t1, stats.steps, h, report);  // a quintic between two events: fresh a
+      else
+        out.defer(step, t1, stats.steps, h);
     }
     y_before.swap(y);
     std::copy(dydt.begin() + n, dydt.end(), a_before.begin());
@@ -322,6 +358,7 @@ IntegrationStats EventAdaptive::integrate(const MechanicalSystem& system, double
     landing = false;
     report.update(t);
   }
+  out.finish(report);
   stats.force_evaluations = context.force_evaluations;
   stats.jacobian_evaluations = context.jacobian_evaluations;
   report.finish();
