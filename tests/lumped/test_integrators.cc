@@ -619,6 +619,29 @@ TEST(IntegratorDense, HermiteStepReproducesPolynomials) {
     EXPECT_EQ(a, a1);
     EXPECT_EQ(step.has_third_node(), t2 != 0.0);
   }
+  // With a fourth node on the other side (rk8pd-events, issue 42): degree 11, a included.
+  for (const double t3 : {0.9, 1.4}) {
+    const double t2 = 0.1;
+    double q2, v2, a2, q3, v3, a3;
+    poly(11, t0, &q0, &v0, &a0);
+    poly(11, t1, &q1, &v1, &a1);
+    poly(11, t2, &q2, &v2, &a2);
+    poly(11, t3, &q3, &v3, &a3);
+    solvers_detail::HermiteStep step;
+    step.set(1, t0, t1, &q0, &v0, &a0, &q1, &v1, &a1);
+    step.add_node(t2, &q2, &v2, &a2);
+    step.add_fourth_node(t3, &q3, &v3, &a3);
+    EXPECT_TRUE(step.has_fourth_node());
+    for (int k = 0; k <= 20; ++k) {
+      const double t = t0 + (t1 - t0) * k / 20.0;
+      double q, v, a, qi, vi, ai;
+      poly(11, t, &q, &v, &a);
+      step.at(t, &qi, &vi, &ai);
+      EXPECT_NEAR(qi, q, 1e-14) << "t3 = " << t3 << ", t = " << t;
+      EXPECT_NEAR(vi, v, 1e-13) << "t3 = " << t3 << ", t = " << t;
+      EXPECT_NEAR(ai, a, 1e-11) << "t3 = " << t3 << ", t = " << t;
+    }
+  }
   // Degree 6 is beyond the quintic: its error is q⁽⁶⁾/6! (t − t0)³ (t − t1)³.
   const auto sixth = [](double t) { return std::pow(t, 6); };
   const double ends[2] = {t0, t1};

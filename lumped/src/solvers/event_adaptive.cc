@@ -26,17 +26,18 @@
 //      landing starts with the length of the attempt that crossed the event, not with the
 //      control's proposal after the short landing step.
 //
-// Dense output as in gsl_adaptive.cc (every output time inside an accepted step by Hermite
-// interpolation of q, v, a at its ends), with the degree-8 interpolant only where no event lies
-// between its nodes: the previous step's start as the third node, or, for the first step and a
-// step that starts on an event, the next step's end (its outputs wait for that step). a at an
-// output is the degree-8 interpolant's second derivative; only on a step between two events
-// (and a last step that starts on one) is it M⁻¹ f evaluated afresh (counted).
+// Dense output (hermite_step.h): every output time inside an accepted step by Hermite
+// interpolation of q, v, a at the step's ends and at up to two neighbouring nodes that are no
+// events: the previous step's start and the next step's end (the step's outputs wait for the next
+// step), degree 11 with both, 8 with one. a at an output is the interpolant's second derivative,
+// which costs no force evaluation (issue 42), except on a step with an event at an end: there a
+// has the Hertz law's |t − τ|^{3/2} term, which no polynomial follows, and M⁻¹ f is evaluated
+// afresh at the interpolated q, v (counted).
 //
-// Measured on the default case (bench/README.md, issue 18 target 3): 1e-4 on RMS ay at about
-// 11× fewer force evaluations than RK4 5 µs. What limits it is not the events (~250 per second,
-// ~26 evaluations each) but the ~1 kHz contact resonance, which needs ~4 000 steps per simulated
-// second at that accuracy, and the 20 000 output evaluations per second.
+// Measured on the default case (bench/README.md, issues 18 and 42): 1e-4 on RMS ay at 15× fewer
+// force evaluations than RK4 5 µs. What limits it is the ring's ~1 kHz contact mode: PD 8(7)'s
+// numerical damping of it, 1 − |R(iωh)|, sets the RMS error, and 1e-4 needs ωh ≲ 2 (~4 200
+// steps in 1.2 s) whatever the step control; the events (~250 per second) add ~20 evaluations each.
 
 #include <algorithm>
 #include <cmath>
@@ -61,6 +62,10 @@ namespace {
 // A landing ends this fraction of the crossing attempt past the located root, so that the
 // interpolant's error in the root does not leave the landing step short of the kink.
 constexpr double kLandingMargin = 1e-4;
+
+// A deferred step's outputs take the next step's end as a node only if that step is at least
+// this fraction of its own length (DenseOutput::flush).
+constexpr double kNodeSpacing = 0.5;
 
 struct StepFree {
   void operator()(gsl_odeiv2_step* s) const { gsl_odeiv2_step_free(s); }
@@ -176,9 +181,10 @@ class DenseOutput {
   void emit_state(double t, const double* q, const double* v, long step, double dt) {
     for (; due(t); ++next_) emit(times_[next_], q, v, step, dt);
   }
-  /// Holds a quintic step [t0, t1] (one that starts on an event, or the first) that ends on no
-  /// event: its outputs wait for the next step, whose end becomes its third node (flush), so
-  /// that they too get a from the degree-8 interpolant instead of a fresh evaluation.
+  /// Holds a step [t0, t1] with no event at its ends: its outputs wait for the next step, whose
+  /// end becomes one more node (flush), the fourth after the previous step's start (degree 11)
+  /// or the third (degree 8). a from p₈ alone met 1e-4 on RMS ay but was up to 8× further from
+  /// RK4 pointwise than a fresh evaluation; p₁₁'s is ~50× more accurate (hermite_step.h).
   void defer(HermiteStep& step, double t1, long number, double dt) {
     std::swap(pending_, step);
     pending_t1_ = t1;
@@ -186,29 +192,36 @@ class DenseOutput {
     pending_dt_ = dt;
     has_pending_ = true;
   }
-  /// Serves a deferred step's outputs, with the next step's end (t2; q, v, a) as its third node.
-  void flush(double t2, const double* q2, const double* v2, const double* a2,
+  /// Serves a deferred step's outputs, with the next step's end (t2; q, v, a) as one more node
+  /// unless that step landed on an event.
+  void flush(double t2, const double* q2, const double* v2, const double* a2, bool landed,
              ProgressThrottle& report) {
     if (!has_pending_) return;
     has_pending_ = false;
-    pending_.add_node(t2, q2, v2, a2);
-    serve(pending_, pending_t1_, pending_number_, pending_dt_, report);
+    // A much shorter next step adds a node too close to be of use: its data's errors would be
+    // amplified ~(h/(t2 − t1))³ (seen as 5× the error in RMS ay at rtol 3e-5).
+    if (!landed && t2 - pending_t1_ >= kNodeSpacing * pending_dt_) {
+      if (pending_.has_third_node())
+        pending_.add_fourth_node(t2, q2, v2, a2);
+      else
+        pending_.add_node(t2, q2, v2, a2);
+    }
+    serve(pending_, pending_t1_, pending_number_, pending_dt_, pending_.has_third_node(), report);
   }
-
   /// Serves a step still deferred when the integration ends (not expected: the last step
-  /// flushes it), with the quintic's fresh a.
+  /// flushes it).
   void finish(ProgressThrottle& report) {
     if (!has_pending_) return;
     has_pending_ = false;
-    serve(pending_, pending_t1_, pending_number_, pending_dt_, report);
+    serve(pending_, pending_t1_, pending_number_, pending_dt_, pending_.has_third_node(), report);
   }
 
-  /// Every output time up to t1 from `step`'s interpolant, each reported as progress. With the
-  /// degree-8 interpolant a is its second derivative (O(h⁷), matching a at its three nodes), so an
-  /// output costs no force evaluation: that was 29 % of the default case's evaluations (issue
-  /// 42). The quintic's a is only O(h⁴): there a is evaluated afresh.
-  void serve(const HermiteStep& step, double t1, long number, double dt, ProgressThrottle& report) {
-    const bool interpolate_a = step.has_third_node();
+  /// Every output time up to t1 from `step`'s interpolant, each reported as progress. With
+  /// interpolate_a (a step of degree 8 or 11, no event at its ends) a is the interpolant's second
+  /// derivative and costs no force evaluation (24 001 of the default case's 84 140 did, issue
+  /// 42); otherwise a = M⁻¹ f is evaluated afresh at the interpolated state.
+  void serve(const HermiteStep& step, double t1, long number, double dt, bool interpolate_a,
+             ProgressThrottle& report) {
     for (; due(t1); ++next_) {
       const double t = times_[next_];
       if (interpolate_a) {
@@ -292,7 +305,7 @@ IntegrationStats EventAdaptive::integrate(const MechanicalSystem& system, double
   HermiteStep step;
   std::vector<double> y_before(dim), a_before(static_cast<std::size_t>(n));
   double t = t0, t_before = t0, h = settings_.dt;
-  bool smooth_before = false;  // whether [t_before, t] is a step on the same side of every event
+  double t_event = -INFINITY;  // the latest event: the end of the latest landing step
   bool landing = false;        // whether this attempt ends on an event
   double h_crossing = 0.0;     // the attempt that crossed the event being landed on
   while (t < t_end) {
@@ -333,14 +346,19 @@ IntegrationStats EventAdaptive::integrate(const MechanicalSystem& system, double
       events.set_start(t1, y_try.data());  // the landing step's end, not the attempt's
     else if (events.active())
       events.advance();
-    out.flush(t1, y_try.data(), y_try.data() + n, dydt_end.data() + n, report);
+    out.flush(t1, y_try.data(), y_try.data() + n, dydt_end.data() + n, landing, report);
     if (out.due(t1)) {
       step.set(n, t, t1, y.data(), y.data() + n, dydt.data() + n, y_try.data(), y_try.data() + n,
                dydt_end.data() + n);
-      if (smooth_before)
+      // Next to an event a has a |t − τ|^{3/2} term (the Hertz law) that no polynomial in t
+      // follows: a step with an event at an end evaluates a afresh (q and v, smoother, stay
+      // interpolated), and an event is no node of another step's interpolant.
+      if (t_before < t && t_before > t_event)
         step.add_node(t_before, y_before.data(), y_before.data() + n, a_before.data());
-      if (smooth_before || landing || final_step)
-        out.serve(step, t1, stats.steps, h, report);  // a quintic between two events: fresh a
+      if (t == t_event || landing)
+        out.serve(step, t1, stats.steps, h, false, report);
+      else if (final_step)
+        out.serve(step, t1, stats.steps, h, step.has_third_node(), report);
       else
         out.defer(step, t1, stats.steps, h);
     }
@@ -350,10 +368,10 @@ IntegrationStats EventAdaptive::integrate(const MechanicalSystem& system, double
     y.swap(y_try);
     dydt.swap(dydt_end);
     t = t1;
-    smooth_before = !landing;
-    if (landing)
+    if (landing) {
+      t_event = t1;
       h = h_crossing;
-    else if (!final_step)
+    } else if (!final_step)
       h = h_next;
     landing = false;
     report.update(t);
