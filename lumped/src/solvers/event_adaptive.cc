@@ -174,6 +174,9 @@ class DenseOutput {
         a_(q_.size()) {}
 
   bool done() const { return next_ >= times_.size(); }
+  /// How far the outputs are served when the steps reached t: the progress to report, so that
+  /// it advances output by output rather than a step at a time ahead of them.
+  double served_until(double t) const { return has_pending_ ? pending_t0_ : t; }
   bool due(double t) const { return next_ < times_.size() && times_[next_] <= t; }
   std::size_t next() const { return next_; }
 
@@ -185,8 +188,9 @@ class DenseOutput {
   /// end becomes one more node (flush), the fourth after the previous step's start (degree 11)
   /// or the third (degree 8). a from p₈ alone met 1e-4 on RMS ay but was up to 8× further from
   /// RK4 pointwise than a fresh evaluation; p₁₁'s is ~50× more accurate (hermite_step.h).
-  void defer(HermiteStep& step, double t1, long number, double dt) {
+  void defer(HermiteStep& step, double t0, double t1, long number, double dt) {
     std::swap(pending_, step);
+    pending_t0_ = t0;
     pending_t1_ = t1;
     pending_number_ = number;
     pending_dt_ = dt;
@@ -260,7 +264,7 @@ class DenseOutput {
   std::vector<double> q_, v_, a_;
   HermiteStep pending_;  // a deferred quintic step (defer), while has_pending_
   bool has_pending_ = false;
-  double pending_t1_ = 0.0, pending_dt_ = 0.0;
+  double pending_t0_ = 0.0, pending_t1_ = 0.0, pending_dt_ = 0.0;
   long pending_number_ = 0;
 };
 
@@ -360,7 +364,7 @@ IntegrationStats EventAdaptive::integrate(const MechanicalSystem& system, double
       else if (final_step)
         out.serve(step, t1, stats.steps, h, step.has_third_node(), report);
       else
-        out.defer(step, t1, stats.steps, h);
+        out.defer(step, t, t1, stats.steps, h);
     }
     y_before.swap(y);
     std::copy(dydt.begin() + n, dydt.end(), a_before.begin());
@@ -374,7 +378,7 @@ IntegrationStats EventAdaptive::integrate(const MechanicalSystem& system, double
     } else if (!final_step)
       h = h_next;
     landing = false;
-    report.update(t);
+    report.update(out.served_until(t));
   }
   out.finish(report);
   stats.force_evaluations = context.force_evaluations;
