@@ -58,7 +58,7 @@ go help_run run --help
 go help_info info --help
 go help_sweep sweep --help
 S="--set solver.duration=0.15 --set solver.transient=0.05"
-for m in rk4 rkf45 rk8pd newmark bdf; do
+for m in rk4 rkf45 rk8pd rk8pd-events newmark bdf; do
   for k in 2dof 3dof; do
     go "m_${m}_${k}" run $S --set solver.method=$m --set model.kind=$k --set operation.axial_load=100 --set output.ball_loads=true --set output.ball_approach=true --set output.ball_motion=true --set output.window=flattop
   done
