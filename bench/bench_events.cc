@@ -1,19 +1,16 @@
-// Issues 18 (target 3) and 42: event-located contacts (rk8pd-events) against RK4 5 us on the
-// default case.
+// Issue 18, target 3: event-located contacts (rk8pd-events) against RK4 5 us on the default case.
 //
 //   bearing_bench_events [rtol ...]
 //
 // The default case as `bearing-sim run` solves it (6308 2-DOF, 2000 rpm, 20 N, 1.2 s, 0.2 s
 // transient, 20 kHz output); the figure is the RMS of ay over the post-transient window, the cost
-// IntegrationStats::force_evaluations (every one, as in summary.json: rk4's and rk8pd's 24 001 at
-// the outputs, rk8pd-events' only next to a contact change) and the wall time of simulate()
-// (integration and the response record; no files).
+// IntegrationStats::force_evaluations (the 24 001 output evaluations included, as in
+// summary.json) and the wall time of simulate() (integration and the response record; no files).
 //
 // 1. RK4 5 us, the reference. 2. rk8pd-events (and rk8pd) over rtol in half decades, the loosest
 // rtol from which every tighter one reaches 1e-4, refined by bisection in log(rtol). 3. Wall time
-// of RK4 and of each method at that rtol in interleaved rounds (minimum over the rounds). What
-// the evaluations are spent on follows from the table's steps, rejections and events
-// (bench/README.md, issue 42).
+// of RK4 and of each method at that rtol in interleaved rounds (minimum over the rounds). 4. The
+// floor: output evaluations + events x evaluations per event + steps between events.
 
 #include <algorithm>
 #include <chrono>

@@ -26,18 +26,15 @@
 //      landing starts with the length of the attempt that crossed the event, not with the
 //      control's proposal after the short landing step.
 //
-// Dense output (hermite_step.h): every output time inside an accepted step by Hermite
-// interpolation of q, v, a at the step's ends and at up to two neighbouring nodes that are no
-// events: the previous step's start and the next step's end (the step's outputs wait for the next
-// step), degree 11 with both, 8 with one. a at an output is the interpolant's second derivative,
-// which costs no force evaluation (issue 42), except on a step with an event at an end: there a
-// has the Hertz law's |t − τ|^{3/2} term, which no polynomial follows, and M⁻¹ f is evaluated
-// afresh at the interpolated q, v (counted).
+// Dense output as in gsl_adaptive.cc (every output time inside an accepted step by Hermite
+// interpolation of q, v, a at its ends, a = M⁻¹ f evaluated afresh at each output, counted), with
+// the degree-8 interpolant (the previous step's start as a third node) only where no event lies
+// between the nodes: the first step and every step that starts on an event use the quintic.
 //
-// Measured on the default case (bench/README.md, issues 18 and 42): 1e-4 on RMS ay at 15× fewer
-// force evaluations than RK4 5 µs. What limits it is the ring's ~1 kHz contact mode: PD 8(7)'s
-// numerical damping of it, 1 − |R(iωh)|, sets the RMS error, and 1e-4 needs ωh ≲ 2 (~4 200
-// steps in 1.2 s) whatever the step control; the events (~250 per second) add ~20 evaluations each.
+// Measured on the default case (bench/README.md, issue 18 target 3): 1e-4 on RMS ay at about
+// 11× fewer force evaluations than RK4 5 µs. What limits it is not the events (~250 per second,
+// ~26 evaluations each) but the ~1 kHz contact resonance, which needs ~4 000 steps per simulated
+// second at that accuracy, and the 20 000 output evaluations per second.
 
 #include <algorithm>
 #include <cmath>
@@ -62,10 +59,6 @@ namespace {
 // A landing ends this fraction of the crossing attempt past the located root, so that the
 // interpolant's error in the root does not leave the landing step short of the kink.
 constexpr double kLandingMargin = 1e-4;
-
-// A deferred step's outputs take the next step's end as a node only if that step is at least
-// this fraction of its own length (DenseOutput::flush).
-constexpr double kNodeSpacing = 0.5;
 
 struct StepFree {
   void operator()(gsl_odeiv2_step* s) const { gsl_odeiv2_step_free(s); }
@@ -174,9 +167,6 @@ class DenseOutput {
         a_(q_.size()) {}
 
   bool done() const { return next_ >= times_.size(); }
-  /// How far the outputs are served when the steps reached t: the progress to report, so that
-  /// it advances output by output rather than a step at a time ahead of them.
-  double served_until(double t) const { return has_pending_ ? pending_t0_ : t; }
   bool due(double t) const { return next_ < times_.size() && times_[next_] <= t; }
   std::size_t next() const { return next_; }
 
@@ -184,60 +174,12 @@ class DenseOutput {
   void emit_state(double t, const double* q, const double* v, long step, double dt) {
     for (; due(t); ++next_) emit(times_[next_], q, v, step, dt);
   }
-  /// Holds a step [t0, t1] with no event at its ends: its outputs wait for the next step, whose
-  /// end becomes one more node (flush), the fourth after the previous step's start (degree 11)
-  /// or the third (degree 8). a from p₈ alone met 1e-4 on RMS ay but was up to 8× further from
-  /// RK4 pointwise than a fresh evaluation; p₁₁'s is ~50× more accurate (hermite_step.h).
-  void defer(HermiteStep& step, double t0, double t1, long number, double dt) {
-    std::swap(pending_, step);
-    pending_t0_ = t0;
-    pending_t1_ = t1;
-    pending_number_ = number;
-    pending_dt_ = dt;
-    has_pending_ = true;
-  }
-  /// Serves a deferred step's outputs, with the next step's end (t2; q, v, a) as one more node
-  /// unless that step landed on an event.
-  void flush(double t2, const double* q2, const double* v2, const double* a2, bool landed,
-             ProgressThrottle& report) {
-    if (!has_pending_) return;
-    has_pending_ = false;
-    // A much shorter next step adds a node too close to be of use: its data's errors would be
-    // amplified ~(h/(t2 − t1))³ (seen as 5× the error in RMS ay at rtol 3e-5).
-    if (!landed && t2 - pending_t1_ >= kNodeSpacing * pending_dt_) {
-      if (pending_.has_third_node())
-        pending_.add_fourth_node(t2, q2, v2, a2);
-      else
-        pending_.add_node(t2, q2, v2, a2);
-    }
-    serve(pending_, pending_t1_, pending_number_, pending_dt_, pending_.has_third_node(), report);
-  }
-  /// Serves a step still deferred when the integration ends (not expected: the last step
-  /// flushes it).
-  void finish(ProgressThrottle& report) {
-    if (!has_pending_) return;
-    has_pending_ = false;
-    serve(pending_, pending_t1_, pending_number_, pending_dt_, pending_.has_third_node(), report);
-  }
-
-  /// Every output time up to t1 from `step`'s interpolant, each reported as progress. With
-  /// interpolate_a (a step of degree 8 or 11, no event at its ends) a is the interpolant's second
-  /// derivative and costs no force evaluation (24 001 of the default case's 84 140 did, issue
-  /// 42); otherwise a = M⁻¹ f is evaluated afresh at the interpolated state.
-  void serve(const HermiteStep& step, double t1, long number, double dt, bool interpolate_a,
-             ProgressThrottle& report) {
+  /// Every output time up to t1 from `step`'s interpolant, each reported as progress.
+  void serve(const HermiteStep& step, double t1, long number, double dt, ProgressThrottle& report) {
     for (; due(t1); ++next_) {
-      const double t = times_[next_];
-      if (interpolate_a) {
-        step.at(t, q_.data(), v_.data(), a_.data());
-        check_state(method_, t, number, dt, q_.data(), v_.data(), n_, bound_);
-        check_acceleration(method_, t, number, dt, a_.data(), n_);
-        if (observe_) observe_(t, q_.data(), v_.data(), a_.data());
-      } else {
-        step.at(t, q_.data(), v_.data());
-        emit(t, q_.data(), v_.data(), number, dt);
-      }
-      report.update(t);
+      step.at(times_[next_], q_.data(), v_.data());
+      emit(times_[next_], q_.data(), v_.data(), number, dt);
+      report.update(times_[next_]);
     }
   }
 
@@ -262,10 +204,6 @@ class DenseOutput {
   int n_;
   std::size_t next_ = 0;
   std::vector<double> q_, v_, a_;
-  HermiteStep pending_;  // a deferred quintic step (defer), while has_pending_
-  bool has_pending_ = false;
-  double pending_t0_ = 0.0, pending_t1_ = 0.0, pending_dt_ = 0.0;
-  long pending_number_ = 0;
 };
 
 IntegrationStats EventAdaptive::integrate(const MechanicalSystem& system, double t0,
@@ -309,7 +247,7 @@ IntegrationStats EventAdaptive::integrate(const MechanicalSystem& system, double
   HermiteStep step;
   std::vector<double> y_before(dim), a_before(static_cast<std::size_t>(n));
   double t = t0, t_before = t0, h = settings_.dt;
-  double t_event = -INFINITY;  // the latest event: the end of the latest landing step
+  bool smooth_before = false;  // whether [t_before, t] is a step on the same side of every event
   bool landing = false;        // whether this attempt ends on an event
   double h_crossing = 0.0;     // the attempt that crossed the event being landed on
   while (t < t_end) {
@@ -350,21 +288,12 @@ IntegrationStats EventAdaptive::integrate(const MechanicalSystem& system, double
       events.set_start(t1, y_try.data());  // the landing step's end, not the attempt's
     else if (events.active())
       events.advance();
-    out.flush(t1, y_try.data(), y_try.data() + n, dydt_end.data() + n, landing, report);
     if (out.due(t1)) {
       step.set(n, t, t1, y.data(), y.data() + n, dydt.data() + n, y_try.data(), y_try.data() + n,
                dydt_end.data() + n);
-      // Next to an event a has a |t − τ|^{3/2} term (the Hertz law) that no polynomial in t
-      // follows: a step with an event at an end evaluates a afresh (q and v, smoother, stay
-      // interpolated), and an event is no node of another step's interpolant.
-      if (t_before < t && t_before > t_event)
+      if (smooth_before)
         step.add_node(t_before, y_before.data(), y_before.data() + n, a_before.data());
-      if (t == t_event || landing)
-        out.serve(step, t1, stats.steps, h, false, report);
-      else if (final_step)
-        out.serve(step, t1, stats.steps, h, step.has_third_node(), report);
-      else
-        out.defer(step, t, t1, stats.steps, h);
+      out.serve(step, t1, stats.steps, h, report);
     }
     y_before.swap(y);
     std::copy(dydt.begin() + n, dydt.end(), a_before.begin());
@@ -372,15 +301,14 @@ IntegrationStats EventAdaptive::integrate(const MechanicalSystem& system, double
     y.swap(y_try);
     dydt.swap(dydt_end);
     t = t1;
-    if (landing) {
-      t_event = t1;
+    smooth_before = !landing;
+    if (landing)
       h = h_crossing;
-    } else if (!final_step)
+    else if (!final_step)
       h = h_next;
     landing = false;
-    report.update(out.served_until(t));
+    report.update(t);
   }
-  out.finish(report);
   stats.force_evaluations = context.force_evaluations;
   stats.jacobian_evaluations = context.jacobian_evaluations;
   report.finish();
