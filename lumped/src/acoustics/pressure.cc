@@ -8,23 +8,24 @@
 #include <cmath>
 #include <complex>
 #include <cstdlib>
-#include <cstring>
 #include <stdexcept>
 #include <string>
 
 #include "bearing/constants.h"
 #include "bearing/errors.h"
 #include "bearing/units.h"
+#include "delay_kernel.h"
 
 namespace bearing {
 
 namespace {
 
-// Windowed-sinc interpolation: 2·kHalfWidth taps, Kaiser β for an 80 dB stopband (Kaiser's
-// formula β = 0.1102 (A − 8.7)); the kernel is tabulated at kPhases fractional positions per
-// sample and interpolated linearly between them (error ~(π/kPhases)²/8 per tap).
-constexpr int kHalfWidth = 16;
-constexpr int kPhases = 2048;
+// Windowed-sinc interpolation (delay_kernel.h: kHalfWidth, kPhases): Kaiser β for an 80 dB
+// stopband (Kaiser's formula β = 0.1102 (A − 8.7)); the kernel is tabulated at kPhases
+// fractional positions per sample and interpolated linearly between them (error ~(π/kPhases)²/8
+// per tap).
+using detail::kHalfWidth;
+using detail::kPhases;
 constexpr double kKaiserBeta = 0.1102 * (80.0 - 8.7);
 
 // The kernel at u [samples]; `norm` = 1/I0(β).
@@ -84,114 +85,10 @@ std::vector<double> filter(const std::vector<std::complex<double>>& U, double ra
   return fft.inverse(P);
 }
 
-// What pressure_from places at every sample.
-struct Placement {
-  const double* x;          // FilteredRecord::interleaved()
-  std::size_t n;            // samples
-  const double* distance;   // r_n
-  const double* cos_angle;  // cos ψ_n, or nullptr for a breathing body (Θ = 1)
-  const int* powers;        // of (a/r), one per term
-  const double* ramp;       // one per term
-  double a, samples_per_metre;
-};
-
-// Θ_n Σ_m (a/r_n)^m (value_m + ramp_m), in the order of the operations that defined the output.
-template <int M>
-double combine(const Placement& pl, std::size_t i, const double* value) {
-  const double r = pl.distance[i];
-  double sum = 0;
-  for (int m = 0; m < M; ++m) {
-    double weight = 1;  // (a/r)^m, m a small whole number
-    for (int e = 0; e < pl.powers[m]; ++e) weight *= pl.a / r;
-    sum += weight * (value[m] + pl.ramp[m]);
-  }
-  return (pl.cos_angle ? pl.cos_angle[i] : 1.0) * sum;
-}
-
-// The fractional sample position of the delayed time at sample i.
-double position(const Placement& pl, std::size_t i) {
-  return static_cast<double>(i) - (pl.distance[i] - pl.a) * pl.samples_per_metre;
-}
-
-// One sample: on a sample the record's own value, else PeriodicInterpolator::apply's sum.
-template <int M>
-double place_one(const Placement& pl, const PeriodicInterpolator& at, std::size_t i) {
-  constexpr int T = PeriodicInterpolator::kTaps;
-  const double s = position(pl, i);
-  double value[M] = {};
-  if (s == static_cast<double>(i)) {
-    for (int m = 0; m < M; ++m) value[m] = pl.x[i * M + m];
-  } else {
-    double w[T];
-    const double* x = pl.x + at.taps(s, pl.n, w) * M;
-    for (int t = 0; t < T; ++t)
-      for (int m = 0; m < M; ++m) value[m] += w[t] * x[t * M + m];
-  }
-  return combine<M>(pl, i, value);
-}
-
-// acc[g][m] = Σ_t w[g][t] x[g][t·M + m] for G samples at once, each sum in the order of a single
-// one (t ascending: the same bits as PeriodicInterpolator::apply).
-template <int M, int G>
-void tap_sums(const double (*w)[PeriodicInterpolator::kTaps], const double* const* x,
-              double (*acc)[M]) {
-  for (int t = 0; t < PeriodicInterpolator::kTaps; ++t)
-    for (int g = 0; g < G; ++g)
-      for (int m = 0; m < M; ++m) acc[g][m] += w[g][t] * x[g][t * M + m];
-}
-
-#if defined(__GNUC__)
-// Two terms (the oscillating sphere) as the two lanes of one SSE2 register, x86-64's baseline:
-// GCC's vector extension (Clang has it too), 12 % faster than the loop above, which GCC 12
-// vectorises along t with shuffles instead.
-template <>
-void tap_sums<2, 2>(const double (*w)[PeriodicInterpolator::kTaps], const double* const* x,
-                    double (*acc)[2]) {
-  typedef double Pair __attribute__((vector_size(16)));
-  Pair sum[2] = {};
-  for (int t = 0; t < PeriodicInterpolator::kTaps; ++t)
-    for (int g = 0; g < 2; ++g) {
-      Pair q;
-      std::memcpy(&q, x[g] + 2 * t, sizeof q);
-      sum[g] += w[g][t] * q;
-    }
-  for (int g = 0; g < 2; ++g) acc[g][0] = sum[g][0], acc[g][1] = sum[g][1];
-}
-#endif
-
-// Every sample, G at a time: their G·M sums of kTaps products run side by side, each in the
-// order of a single sum (the same bits), so neither the dependency chain of one sum nor the
-// scalar arithmetic bounds the speed.
-template <int M>
-void place(const Placement& pl, const PeriodicInterpolator& at, double* p) {
-  constexpr int T = PeriodicInterpolator::kTaps, G = 2;
-  std::size_t i = 0;
-  if (pl.samples_per_metre != 0) {  // else every sample is on a sample
-    alignas(16) double w[G][T];
-    const double* x[G];
-    for (; i + G <= pl.n; i += G) {
-      bool on_sample = false;
-      for (int g = 0; g < G; ++g) {
-        const double s = position(pl, i + g);
-        on_sample = on_sample || s == static_cast<double>(i + g);
-        x[g] = pl.x + at.taps(s, pl.n, w[g]) * M;
-      }
-      if (on_sample) {
-        for (int g = 0; g < G; ++g) p[i + g] = place_one<M>(pl, at, i + g);
-        continue;
-      }
-      double acc[G][M] = {};
-      tap_sums<M, G>(w, x, acc);
-      for (int g = 0; g < G; ++g) p[i + g] = combine<M>(pl, i + g, acc[g]);
-    }
-  }
-  for (; i < pl.n; ++i) p[i] = place_one<M>(pl, at, i);
-}
-
 }  // namespace
 
 PeriodicInterpolator::PeriodicInterpolator() {
-  static_assert(kTaps == 2 * kHalfWidth, "taps");
+  static_assert(kTaps == detail::kDelayTaps, "taps");
   // Every entry is the even kernel at u = j / kPhases for an integer j (tap l, phase p:
   // j = p − l·kPhases): evaluate it once per |j|.
   const double norm = 1 / gsl_sf_bessel_I0(kKaiserBeta);
@@ -304,10 +201,12 @@ FilteredRecord::FilteredRecord(const std::vector<std::vector<double>>& terms,
   for (const auto& q : terms)
     if (q.size() != n_) throw std::invalid_argument("FilteredRecord: terms of unequal lengths");
   const std::size_t length = n_ + PeriodicInterpolator::kTaps - 1;
-  interleaved_.resize(length * M);
-  for (std::size_t m = 0; m < M; ++m)
+  terms_.resize(M);
+  for (std::size_t m = 0; m < M; ++m) {
+    terms_[m].resize(length);
     for (std::size_t i = 0, k = 0; i < length; ++i, k = k + 1 == n_ ? 0 : k + 1)
-      interleaved_[i * M + m] = terms[m][k];
+      terms_[m][i] = terms[m][k];
+  }
 }
 
 FilteredRecord filter_moving(const RadialSeriesSource& source, const std::vector<double>& velocity,
@@ -351,28 +250,21 @@ void pressure_from(const RadialSeriesSource& source, const FilteredRecord& recor
                        std::string(source.name()) + " of radius " + format_number(a) +
                        " m: it must lie outside the body");
 
-  const Placement pl{record.interleaved(),
-                     n,
-                     path.distance.data(),
-                     source.pattern() == Pattern::breathing ? nullptr : path.cos_angle.data(),
-                     powers.data(),
-                     record.ramp().data(),
-                     a,
-                     source.delayed() ? rate / source.air().sound_speed : 0.0};
+  const double* terms[3];
+  if (powers.size() > 3) throw std::logic_error("pressure_from: a source of more than 3 terms");
+  for (std::size_t m = 0; m < powers.size(); ++m) terms[m] = record.term(m);
+  const detail::DelayedPlacement pl{
+      terms,
+      n,
+      path.distance.data(),
+      source.pattern() == Pattern::breathing ? nullptr : path.cos_angle.data(),
+      powers.data(),
+      record.ramp().data(),
+      a,
+      source.delayed() ? rate / source.air().sound_speed : 0.0,
+      at.table()};
   p.resize(n);
-  switch (powers.size()) {
-    case 1:
-      place<1>(pl, at, p.data());
-      break;
-    case 2:
-      place<2>(pl, at, p.data());
-      break;
-    case 3:
-      place<3>(pl, at, p.data());
-      break;
-    default:
-      throw std::logic_error("pressure_from: a source of more than 3 terms");
-  }
+  detail::place_delayed(pl, static_cast<int>(powers.size()), p.data());
 }
 
 Summation parse_summation(const std::string& name, const std::string& key) {

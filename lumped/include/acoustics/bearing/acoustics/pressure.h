@@ -94,6 +94,8 @@ class PeriodicInterpolator {
   double operator()(const std::vector<double>& x, double s) const {
     return apply(taps(s, x.size()), x);
   }
+  /// The kernel table: kPhases + 1 rows of kTaps weights (phase p / kPhases of a sample).
+  const double* table() const { return table_.data(); }
 
  private:
   std::vector<double> table_;  // kernel at phases i / kPhases of each tap
@@ -115,14 +117,14 @@ class FilteredRecord {
   std::size_t size() const { return n_; }             ///< N
   std::size_t terms() const { return ramp_.size(); }  ///< M
   const std::vector<double>& ramp() const { return ramp_; }
-  /// q_m(t_i) at [i·M + m] for i = 0 … N + kTaps − 2, continued periodically past N: the taps
-  /// of any delayed position are one contiguous run, and the terms share each tap's weight.
-  const double* interleaved() const { return interleaved_.data(); }
+  /// q_m(t_i) for i = 0 … N + kTaps − 2, continued periodically past N: the taps of any delayed
+  /// position are one contiguous run. m < terms().
+  const double* term(std::size_t m) const { return terms_[m].data(); }
 
  private:
   std::size_t n_;
   std::vector<double> ramp_;
-  std::vector<double> interleaved_;
+  std::vector<std::vector<double>> terms_;
 };
 
 /// The filtered record of `velocity` (N + 1 samples at `rate`, as radiate_fixed). Throws as

@@ -1,0 +1,33 @@
+#pragma once
+// The hot loop of a moving source's pressure (pressure.h, pressure_from): at every sample the
+// delayed values q_m(t_n − τ_n) by the Kaiser-windowed sinc of PeriodicInterpolator, weighted by
+// the geometry. Private to the acoustics library.
+
+#include <cstddef>
+
+namespace bearing::detail {
+
+// The interpolation kernel: 2·kHalfWidth taps, tabulated at kPhases fractional positions per
+// sample (PeriodicInterpolator's table: row p holds the kTaps weights at phase p / kPhases).
+constexpr int kHalfWidth = 16;
+constexpr int kDelayTaps = 2 * kHalfWidth;
+constexpr int kPhases = 2048;
+
+// What place_delayed needs: one source's filtered terms (each N + kDelayTaps − 1 samples, continued
+// periodically: FilteredRecord::term) and its path seen from one point.
+struct DelayedPlacement {
+  const double* const* terms;  // M records
+  std::size_t n;               // samples N
+  const double* distance;      // r_n [m]
+  const double* cos_angle;     // cos ψ_n, or nullptr for a breathing body (Θ = 1)
+  const int* powers;           // of (a/r), one per term
+  const double* ramp;          // one per term [Pa]
+  double a;                    // the body's radius [m]
+  double samples_per_metre;    // rate / c₀, or 0 for a field without delay
+  const double* table;         // the kernel table, (kPhases + 1) rows of kDelayTaps
+};
+
+// p_n = Θ_n Σ_m (a/r_n)^m (q_m(t_n − τ_n) + ramp_m), n = 0 … N − 1, for M = 1, 2 or 3 terms.
+void place_delayed(const DelayedPlacement& placement, int terms, double* p);
+
+}  // namespace bearing::detail
