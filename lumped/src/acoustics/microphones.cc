@@ -41,6 +41,18 @@ BallOrbit ball_orbit(double theta0, double cage_speed, const std::vector<double>
   return o;
 }
 
+BallOrbit rotate_orbit(const BallOrbit& orbit, double angle) {
+  const double c = std::cos(angle), s = std::sin(angle);
+  BallOrbit o;
+  o.cos.resize(orbit.cos.size());
+  o.sin.resize(orbit.sin.size());
+  for (std::size_t n = 0; n < orbit.cos.size(); ++n) {
+    o.cos[n] = orbit.cos[n] * c - orbit.sin[n] * s;
+    o.sin[n] = orbit.sin[n] * c + orbit.cos[n] * s;
+  }
+  return o;
+}
+
 void ball_path(const Eigen::Vector2d& at, double pitch_radius, const BallOrbit& orbit,
                const std::vector<double>& radial, SourcePath& path) {
   const std::size_t n = radial.size();

@@ -2,8 +2,6 @@
 
 #include "bearing/acoustics/pressure.h"
 
-#include <gsl/gsl_sf_bessel.h>
-
 #include <algorithm>
 #include <cmath>
 #include <complex>
@@ -28,12 +26,46 @@ using detail::kHalfWidth;
 using detail::kPhases;
 constexpr double kKaiserBeta = 0.1102 * (80.0 - 8.7);
 
-// The kernel at u [samples]; `norm` = 1/I0(β).
-double kernel(double u, double norm) {
-  const double t = u / kHalfWidth;
-  if (std::fabs(t) >= 1) return 0.0;
-  const double sinc = u == 0 ? 1.0 : std::sin(pi * u) / (pi * u);
-  return sinc * gsl_sf_bessel_I0(kKaiserBeta * std::sqrt(1 - t * t)) * norm;
+// I₀(x_j) for every x_j ≤ kKaiserBeta side by side (the loop over j vectorises): its power
+// series Σ_k (x²/4)^k/(k!)², every term positive; at x = β (x²/4 ≈ 15.4) the terms after the
+// 30th are below 1e-24 of the sum.
+std::vector<double> bessel_i0(const std::vector<double>& x) {
+  std::vector<double> y(x.size()), term(x.size(), 1.0), sum(x.size(), 1.0);
+  for (std::size_t j = 0; j < x.size(); ++j) y[j] = 0.25 * x[j] * x[j];
+  for (int k = 1; k <= 30; ++k) {
+    const double inverse = 1.0 / (static_cast<double>(k) * k);
+    for (std::size_t j = 0; j < x.size(); ++j) {
+      term[j] *= y[j] * inverse;
+      sum[j] += term[j];
+    }
+  }
+  return sum;
+}
+
+// The kernel at u_j = j / kPhases [samples], j = 0 … kHalfWidth·kPhases: sinc(u) times the Kaiser
+// window I₀(β √(1 − (u/kHalfWidth)²)) / I₀(β). sin(πu) from one half period,
+// sin(π(q + r/kPhases)) = (−1)^q sin(πr/kPhases): kPhases sines instead of one per point.
+std::vector<double> kernel_grid() {
+  const int size = kHalfWidth * kPhases + 1;
+  std::vector<double> x(static_cast<std::size_t>(size + 1));
+  for (int j = 0; j < size; ++j) {
+    const double t = static_cast<double>(j) / (kHalfWidth * kPhases);
+    x[static_cast<std::size_t>(j)] = kKaiserBeta * std::sqrt(std::max(0.0, 1 - t * t));
+  }
+  x.back() = kKaiserBeta;  // the norm's
+  const std::vector<double> window = bessel_i0(x);
+  std::vector<double> half(static_cast<std::size_t>(kPhases));
+  for (int r = 0; r < kPhases; ++r)
+    half[static_cast<std::size_t>(r)] = std::sin(pi * static_cast<double>(r) / kPhases);
+  std::vector<double> grid(static_cast<std::size_t>(size), 0.0);  // 0 at |t| = 1
+  grid[0] = 1.0;
+  for (int j = 1; j < size - 1; ++j) {
+    const double u = static_cast<double>(j) / kPhases;
+    const double sine = (j / kPhases % 2 ? -1 : 1) * half[static_cast<std::size_t>(j % kPhases)];
+    grid[static_cast<std::size_t>(j)] =
+        sine / (pi * u) * window[static_cast<std::size_t>(j)] / window.back();
+  }
+  return grid;
 }
 
 void check_record(const std::vector<double>& velocity, double rate, const RealFft& fft) {
@@ -91,10 +123,7 @@ PeriodicInterpolator::PeriodicInterpolator() {
   static_assert(kTaps == detail::kDelayTaps, "taps");
   // Every entry is the even kernel at u = j / kPhases for an integer j (tap l, phase p:
   // j = p − l·kPhases): evaluate it once per |j|.
-  const double norm = 1 / gsl_sf_bessel_I0(kKaiserBeta);
-  std::vector<double> grid(static_cast<std::size_t>(kHalfWidth * kPhases + 1));
-  for (std::size_t j = 0; j < grid.size(); ++j)
-    grid[j] = kernel(static_cast<double>(j) / kPhases, norm);
+  const std::vector<double> grid = kernel_grid();
   table_.resize(static_cast<std::size_t>((kPhases + 1) * kTaps));
   for (int p = 0; p <= kPhases; ++p)
     for (int l = -kHalfWidth + 1; l <= kHalfWidth; ++l)
@@ -209,16 +238,36 @@ FilteredRecord::FilteredRecord(const std::vector<std::vector<double>>& terms,
   }
 }
 
+SeriesFactors::SeriesFactors(const RadialSeriesSource& source, double rate, std::size_t n)
+    : source_(source), rate_(rate), n_(n) {
+  for (std::size_t m = 0; m < source.powers().size(); ++m) {
+    std::vector<std::complex<double>>& F = factors_.emplace_back(n / 2 + 1);
+    for (std::size_t k = 1; k < F.size(); ++k)  // filter()'s band
+      if (2 * static_cast<double>(k) <= kPressureBandFraction * static_cast<double>(n))
+        F[k] = source.factor(m, angular_frequency(k, rate, n));
+  }
+}
+
 FilteredRecord filter_moving(const RadialSeriesSource& source, const std::vector<double>& velocity,
                              double rate, RealFft& fft) {
+  return filter_moving(SeriesFactors(source, rate, fft.size()), velocity, fft);
+}
+
+FilteredRecord filter_moving(const SeriesFactors& factors, const std::vector<double>& velocity,
+                             RealFft& fft) {
+  if (factors.size() != fft.size())
+    throw std::logic_error("filter_moving: factors for another record length");
+  const double rate = factors.rate();
   check_record(velocity, rate, fft);
   const Detrended d = detrend(velocity, rate, fft);
   std::vector<std::vector<double>> terms;
   std::vector<double> ramp;
-  for (std::size_t m = 0; m < source.powers().size(); ++m) {
-    terms.push_back(
-        filter(d.spectrum, rate, fft, [&](double omega) { return source.factor(m, omega); }));
-    ramp.push_back(d.slope * source.ramp_factor(m));
+  for (std::size_t m = 0; m < factors.source().powers().size(); ++m) {
+    const std::vector<std::complex<double>>& F = factors.term(m);
+    std::vector<std::complex<double>> P(d.spectrum.size());
+    for (std::size_t k = 1; k < P.size(); ++k) P[k] = F[k] * d.spectrum[k];
+    terms.push_back(fft.inverse(P));
+    ramp.push_back(d.slope * factors.source().ramp_factor(m));
   }
   return FilteredRecord(terms, std::move(ramp));
 }

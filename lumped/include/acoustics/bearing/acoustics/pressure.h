@@ -30,6 +30,7 @@
 // moving source would not be reliable, hence the band.
 
 #include <array>
+#include <complex>
 #include <cstddef>
 #include <string>
 #include <vector>
@@ -127,10 +128,32 @@ class FilteredRecord {
   std::vector<std::vector<double>> terms_;
 };
 
+/// A series source's factors F_m(ω_k) at the bins k = 0 … N/2 of an N-sample record at `rate`,
+/// zero at DC and above the band: what filter_moving multiplies a record's spectrum by. Alike
+/// bodies (the balls of a bearing) share one. `source` must outlive it.
+class SeriesFactors {
+ public:
+  SeriesFactors(const RadialSeriesSource& source, double rate, std::size_t n);
+  const RadialSeriesSource& source() const { return source_; }
+  double rate() const { return rate_; }
+  std::size_t size() const { return n_; }  ///< N
+  /// F_m(ω_k) [Pa/(m/s)] for the m-th power of source().powers(), k = 0 … N/2.
+  const std::vector<std::complex<double>>& term(std::size_t m) const { return factors_[m]; }
+
+ private:
+  const RadialSeriesSource& source_;
+  double rate_;
+  std::size_t n_;
+  std::vector<std::vector<std::complex<double>>> factors_;
+};
+
 /// The filtered record of `velocity` (N + 1 samples at `rate`, as radiate_fixed). Throws as
 /// radiate_fixed for a bad record.
 FilteredRecord filter_moving(const RadialSeriesSource& source, const std::vector<double>& velocity,
                              double rate, RealFft& fft);
+/// The same with the factors evaluated once (the same bits); `fft` of length factors.size().
+FilteredRecord filter_moving(const SeriesFactors& factors, const std::vector<double>& velocity,
+                             RealFft& fft);
 
 /// radiate_moving from a filtered record of `source`: p_n = Θ_n Σ_m (a/r_n)^m [q_m(t_n − τ_n) +
 /// ramp_m]. Throws InputError if the path does not have N entries or the point is inside the
