@@ -52,19 +52,16 @@ inline void tap_sums(const DelayedPlacement& pl, double s, double* value) {
   const double floor_s = std::floor(s);
   const double phase = (s - floor_s) * kPhases;
   const int p = std::min(static_cast<int>(phase), kPhases - 1);
-  const double w = phase - p, v = 1 - w;
-  const double* k0 = pl.table + static_cast<std::size_t>(p) * kDelayTaps;
-  const double* k1 = k0 + kDelayTaps;
+  alignas(64) double weight[kDelayTaps];
+  interpolate_rows(pl.table, p, phase - p, weight);
   const std::size_t first = first_tap(floor_s, pl.n);
   Lanes acc[M] = {};
   for (int b = 0; b < kDelayTaps; b += 8) {
-    Lanes lo, hi, x;  // no function returning Lanes: its ABI differs between the clones
-    std::memcpy(&lo, k0 + b, sizeof lo);
-    std::memcpy(&hi, k1 + b, sizeof hi);
-    const Lanes weight = v * lo + w * hi;
+    Lanes wb, x;  // no function returning Lanes: its ABI differs between the clones
+    std::memcpy(&wb, weight + b, sizeof wb);
     for (int m = 0; m < M; ++m) {
       std::memcpy(&x, pl.terms[m] + first + b, sizeof x);
-      acc[m] += weight * x;
+      acc[m] += wb * x;
     }
   }
   for (int m = 0; m < M; ++m)

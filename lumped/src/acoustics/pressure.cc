@@ -124,8 +124,8 @@ PeriodicInterpolator::PeriodicInterpolator() {
   // Every entry is the even kernel at u = j / kPhases for an integer j (tap l, phase p:
   // j = p − l·kPhases): evaluate it once per |j|.
   const std::vector<double> grid = kernel_grid();
-  table_.resize(static_cast<std::size_t>((kPhases + 1) * kTaps));
-  for (int p = 0; p <= kPhases; ++p)
+  table_.resize(static_cast<std::size_t>(detail::kTableRows * kTaps));
+  for (int p = 0; p < detail::kTableRows; ++p)
     for (int l = -kHalfWidth + 1; l <= kHalfWidth; ++l)
       table_[static_cast<std::size_t>(p * kTaps + l + kHalfWidth - 1)] =
           grid[static_cast<std::size_t>(std::abs(p - l * kPhases))];
@@ -141,10 +141,7 @@ std::size_t PeriodicInterpolator::taps(double s, std::size_t n, double* weight) 
   const double floor_s = std::floor(s);
   const double phase = (s - floor_s) * kPhases;
   const int p = std::min(static_cast<int>(phase), kPhases - 1);
-  const double w = phase - p;
-  const double* k0 = &table_[static_cast<std::size_t>(p * kTaps)];
-  const double* k1 = k0 + kTaps;
-  for (int i = 0; i < kTaps; ++i) weight[i] = (1 - w) * k0[i] + w * k1[i];
+  detail::interpolate_rows(table_.data(), p, phase - p, weight);
   long first = (static_cast<long>(floor_s) - kHalfWidth + 1) % static_cast<long>(n);
   if (first < 0) first += static_cast<long>(n);
   return static_cast<std::size_t>(first);

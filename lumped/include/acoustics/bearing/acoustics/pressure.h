@@ -75,7 +75,7 @@ struct SourcePath {
 /// does not have N entries or the point is inside the body at some sample.
 /// Band-limited value of a periodic record x (period N samples) at the fractional sample
 /// position s (any real; s = n gives x_n): the Kaiser-windowed sinc interpolation radiate_moving
-/// uses for its delays. Building its kernel table costs ~10 ms: build one and share it.
+/// uses for its delays. Building its kernel table costs ~1 ms: build one and share it.
 class PeriodicInterpolator {
  public:
   static constexpr int kTaps = 32;
@@ -95,7 +95,8 @@ class PeriodicInterpolator {
   double operator()(const std::vector<double>& x, double s) const {
     return apply(taps(s, x.size()), x);
   }
-  /// The kernel table: kPhases + 1 rows of kTaps weights (phase p / kPhases of a sample).
+  /// The kernel table: its rows 0 … kPhases/2 of kTaps weights (phase p / kPhases of a sample;
+  /// the kernel is even, so row kPhases − p is row p reversed).
   const double* table() const { return table_.data(); }
 
  private:
