@@ -16,9 +16,17 @@ constexpr int kDelayTaps = 2 * kHalfWidth;
 constexpr int kPhases = 2048;
 constexpr int kTableRows = kPhases / 2 + 1;
 
+// Inlined into each instruction set's clone of the kernel (an out-of-line helper would be
+// compiled for the baseline only).
+#if defined(__GNUC__)
+#define BEARING_KERNEL_INLINE inline __attribute__((always_inline))
+#else
+#define BEARING_KERNEL_INLINE inline
+#endif
+
 // The weights at phase (p + w) / kPhases, 0 ≤ p < kPhases, 0 ≤ w ≤ 1: rows p and p + 1 of the
 // kernel interpolated linearly, (1 − w) row_p + w row_{p+1}, from the half table.
-inline void interpolate_rows(const double* table, int p, double w, double* weight) {
+BEARING_KERNEL_INLINE void interpolate_rows(const double* table, int p, double w, double* weight) {
   const double v = 1 - w;
   if (p < kPhases / 2) {
     const double* k0 = table + static_cast<std::size_t>(p) * kDelayTaps;
