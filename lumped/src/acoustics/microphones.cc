@@ -6,6 +6,7 @@
 #include <string>
 
 #include "bearing/errors.h"
+#include "bearing/target_clones.h"
 
 namespace bearing {
 
@@ -41,6 +42,38 @@ BallOrbit ball_orbit(double theta0, double cage_speed, const std::vector<double>
   return o;
 }
 
+BallOrbit rotate_orbit(const BallOrbit& orbit, double angle) {
+  const double c = std::cos(angle), s = std::sin(angle);
+  BallOrbit o;
+  o.cos.resize(orbit.cos.size());
+  o.sin.resize(orbit.sin.size());
+  for (std::size_t n = 0; n < orbit.cos.size(); ++n) {
+    o.cos[n] = orbit.cos[n] * c - orbit.sin[n] * s;
+    o.sin[n] = orbit.sin[n] * c + orbit.cos[n] * s;
+  }
+  return o;
+}
+
+namespace {
+
+// d = at − (R + r_k) e_k, |d|, e_k · d / |d| for every sample, in the order Eigen's norm() and
+// dot() use. Compiled per instruction set (bearing/target_clones.h; no fused multiply-adds on
+// this file): square roots and divisions are correctly rounded in every one, so every clone gives
+// the same bits.
+BEARING_TARGET_CLONES void path_arrays(double ax, double ay, double pitch_radius, std::size_t n,
+                                       const double* cosine, const double* sine,
+                                       const double* radial, double* distance, double* cos_angle) {
+  for (std::size_t k = 0; k < n; ++k) {
+    const double c = cosine[k], s = sine[k], R = pitch_radius + radial[k];
+    const double dx = ax - R * c, dy = ay - R * s;
+    const double r = std::sqrt(dx * dx + dy * dy);
+    distance[k] = r;
+    cos_angle[k] = r > 0 ? (c * dx + s * dy) / r : 0.0;
+  }
+}
+
+}  // namespace
+
 void ball_path(const Eigen::Vector2d& at, double pitch_radius, const BallOrbit& orbit,
                const std::vector<double>& radial, SourcePath& path) {
   const std::size_t n = radial.size();
@@ -49,16 +82,8 @@ void ball_path(const Eigen::Vector2d& at, double pitch_radius, const BallOrbit& 
                      " samples and " + std::to_string(n) + " radial positions");
   path.distance.resize(n);
   path.cos_angle.resize(n);
-  // Plain arithmetic on arrays (it vectorises): d = at − (R + r_n) e_n, |d|, e_n · d / |d|, in
-  // the order Eigen's norm() and dot() use.
-  const double ax = at.x(), ay = at.y();
-  for (std::size_t k = 0; k < n; ++k) {
-    const double c = orbit.cos[k], s = orbit.sin[k], R = pitch_radius + radial[k];
-    const double dx = ax - R * c, dy = ay - R * s;
-    const double r = std::sqrt(dx * dx + dy * dy);
-    path.distance[k] = r;
-    path.cos_angle[k] = r > 0 ? (c * dx + s * dy) / r : 0.0;
-  }
+  path_arrays(at.x(), at.y(), pitch_radius, n, orbit.cos.data(), orbit.sin.data(), radial.data(),
+              path.distance.data(), path.cos_angle.data());
 }
 
 Eigen::Vector2d ball_annulus(const Bearing& b) {

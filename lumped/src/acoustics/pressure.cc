@@ -2,37 +2,70 @@
 
 #include "bearing/acoustics/pressure.h"
 
-#include <gsl/gsl_sf_bessel.h>
-
 #include <algorithm>
 #include <cmath>
 #include <complex>
 #include <cstdlib>
-#include <cstring>
 #include <stdexcept>
 #include <string>
 
 #include "bearing/constants.h"
 #include "bearing/errors.h"
 #include "bearing/units.h"
+#include "delay_kernel.h"
 
 namespace bearing {
 
 namespace {
 
-// Windowed-sinc interpolation: 2·kHalfWidth taps, Kaiser β for an 80 dB stopband (Kaiser's
-// formula β = 0.1102 (A − 8.7)); the kernel is tabulated at kPhases fractional positions per
-// sample and interpolated linearly between them (error ~(π/kPhases)²/8 per tap).
-constexpr int kHalfWidth = 16;
-constexpr int kPhases = 2048;
+// Windowed-sinc interpolation (delay_kernel.h: kHalfWidth, kPhases): Kaiser β for an 80 dB
+// stopband (Kaiser's formula β = 0.1102 (A − 8.7)); the kernel is tabulated at kPhases
+// fractional positions per sample and interpolated linearly between them (error ~(π/kPhases)²/8
+// per tap).
+using detail::kHalfWidth;
+using detail::kPhases;
 constexpr double kKaiserBeta = 0.1102 * (80.0 - 8.7);
 
-// The kernel at u [samples]; `norm` = 1/I0(β).
-double kernel(double u, double norm) {
-  const double t = u / kHalfWidth;
-  if (std::fabs(t) >= 1) return 0.0;
-  const double sinc = u == 0 ? 1.0 : std::sin(pi * u) / (pi * u);
-  return sinc * gsl_sf_bessel_I0(kKaiserBeta * std::sqrt(1 - t * t)) * norm;
+// I₀(x_j) for every x_j ≤ kKaiserBeta side by side (the loop over j vectorises): its power
+// series Σ_k (x²/4)^k/(k!)², every term positive; at x = β (x²/4 ≈ 15.4) the terms after the
+// 30th are below 1e-24 of the sum.
+std::vector<double> bessel_i0(const std::vector<double>& x) {
+  std::vector<double> y(x.size()), term(x.size(), 1.0), sum(x.size(), 1.0);
+  for (std::size_t j = 0; j < x.size(); ++j) y[j] = 0.25 * x[j] * x[j];
+  for (int k = 1; k <= 30; ++k) {
+    const double inverse = 1.0 / (static_cast<double>(k) * k);
+    for (std::size_t j = 0; j < x.size(); ++j) {
+      term[j] *= y[j] * inverse;
+      sum[j] += term[j];
+    }
+  }
+  return sum;
+}
+
+// The kernel at u_j = j / kPhases [samples], j = 0 … kHalfWidth·kPhases: sinc(u) times the Kaiser
+// window I₀(β √(1 − (u/kHalfWidth)²)) / I₀(β). sin(πu) from one half period,
+// sin(π(q + r/kPhases)) = (−1)^q sin(πr/kPhases): kPhases sines instead of one per point.
+std::vector<double> kernel_grid() {
+  const int size = kHalfWidth * kPhases + 1;
+  std::vector<double> x(static_cast<std::size_t>(size + 1));
+  for (int j = 0; j < size; ++j) {
+    const double t = static_cast<double>(j) / (kHalfWidth * kPhases);
+    x[static_cast<std::size_t>(j)] = kKaiserBeta * std::sqrt(std::max(0.0, 1 - t * t));
+  }
+  x.back() = kKaiserBeta;  // the norm's
+  const std::vector<double> window = bessel_i0(x);
+  std::vector<double> half(static_cast<std::size_t>(kPhases));
+  for (int r = 0; r < kPhases; ++r)
+    half[static_cast<std::size_t>(r)] = std::sin(pi * static_cast<double>(r) / kPhases);
+  std::vector<double> grid(static_cast<std::size_t>(size), 0.0);  // 0 at |t| = 1
+  grid[0] = 1.0;
+  for (int j = 1; j < size - 1; ++j) {
+    const double u = static_cast<double>(j) / kPhases;
+    const double sine = (j / kPhases % 2 ? -1 : 1) * half[static_cast<std::size_t>(j % kPhases)];
+    grid[static_cast<std::size_t>(j)] =
+        sine / (pi * u) * window[static_cast<std::size_t>(j)] / window.back();
+  }
+  return grid;
 }
 
 void check_record(const std::vector<double>& velocity, double rate, const RealFft& fft) {
@@ -84,122 +117,15 @@ std::vector<double> filter(const std::vector<std::complex<double>>& U, double ra
   return fft.inverse(P);
 }
 
-// What pressure_from places at every sample.
-struct Placement {
-  const double* x;          // FilteredRecord::interleaved()
-  std::size_t n;            // samples
-  const double* distance;   // r_n
-  const double* cos_angle;  // cos ψ_n, or nullptr for a breathing body (Θ = 1)
-  const int* powers;        // of (a/r), one per term
-  const double* ramp;       // one per term
-  double a, samples_per_metre;
-};
-
-// Θ_n Σ_m (a/r_n)^m (value_m + ramp_m), in the order of the operations that defined the output.
-template <int M>
-double combine(const Placement& pl, std::size_t i, const double* value) {
-  const double r = pl.distance[i];
-  double sum = 0;
-  for (int m = 0; m < M; ++m) {
-    double weight = 1;  // (a/r)^m, m a small whole number
-    for (int e = 0; e < pl.powers[m]; ++e) weight *= pl.a / r;
-    sum += weight * (value[m] + pl.ramp[m]);
-  }
-  return (pl.cos_angle ? pl.cos_angle[i] : 1.0) * sum;
-}
-
-// The fractional sample position of the delayed time at sample i.
-double position(const Placement& pl, std::size_t i) {
-  return static_cast<double>(i) - (pl.distance[i] - pl.a) * pl.samples_per_metre;
-}
-
-// One sample: on a sample the record's own value, else PeriodicInterpolator::apply's sum.
-template <int M>
-double place_one(const Placement& pl, const PeriodicInterpolator& at, std::size_t i) {
-  constexpr int T = PeriodicInterpolator::kTaps;
-  const double s = position(pl, i);
-  double value[M] = {};
-  if (s == static_cast<double>(i)) {
-    for (int m = 0; m < M; ++m) value[m] = pl.x[i * M + m];
-  } else {
-    double w[T];
-    const double* x = pl.x + at.taps(s, pl.n, w) * M;
-    for (int t = 0; t < T; ++t)
-      for (int m = 0; m < M; ++m) value[m] += w[t] * x[t * M + m];
-  }
-  return combine<M>(pl, i, value);
-}
-
-// acc[g][m] = Σ_t w[g][t] x[g][t·M + m] for G samples at once, each sum in the order of a single
-// one (t ascending: the same bits as PeriodicInterpolator::apply).
-template <int M, int G>
-void tap_sums(const double (*w)[PeriodicInterpolator::kTaps], const double* const* x,
-              double (*acc)[M]) {
-  for (int t = 0; t < PeriodicInterpolator::kTaps; ++t)
-    for (int g = 0; g < G; ++g)
-      for (int m = 0; m < M; ++m) acc[g][m] += w[g][t] * x[g][t * M + m];
-}
-
-#if defined(__GNUC__)
-// Two terms (the oscillating sphere) as the two lanes of one SSE2 register, x86-64's baseline:
-// GCC's vector extension (Clang has it too), 12 % faster than the loop above, which GCC 12
-// vectorises along t with shuffles instead.
-template <>
-void tap_sums<2, 2>(const double (*w)[PeriodicInterpolator::kTaps], const double* const* x,
-                    double (*acc)[2]) {
-  typedef double Pair __attribute__((vector_size(16)));
-  Pair sum[2] = {};
-  for (int t = 0; t < PeriodicInterpolator::kTaps; ++t)
-    for (int g = 0; g < 2; ++g) {
-      Pair q;
-      std::memcpy(&q, x[g] + 2 * t, sizeof q);
-      sum[g] += w[g][t] * q;
-    }
-  for (int g = 0; g < 2; ++g) acc[g][0] = sum[g][0], acc[g][1] = sum[g][1];
-}
-#endif
-
-// Every sample, G at a time: their G·M sums of kTaps products run side by side, each in the
-// order of a single sum (the same bits), so neither the dependency chain of one sum nor the
-// scalar arithmetic bounds the speed.
-template <int M>
-void place(const Placement& pl, const PeriodicInterpolator& at, double* p) {
-  constexpr int T = PeriodicInterpolator::kTaps, G = 2;
-  std::size_t i = 0;
-  if (pl.samples_per_metre != 0) {  // else every sample is on a sample
-    alignas(16) double w[G][T];
-    const double* x[G];
-    for (; i + G <= pl.n; i += G) {
-      bool on_sample = false;
-      for (int g = 0; g < G; ++g) {
-        const double s = position(pl, i + g);
-        on_sample = on_sample || s == static_cast<double>(i + g);
-        x[g] = pl.x + at.taps(s, pl.n, w[g]) * M;
-      }
-      if (on_sample) {
-        for (int g = 0; g < G; ++g) p[i + g] = place_one<M>(pl, at, i + g);
-        continue;
-      }
-      double acc[G][M] = {};
-      tap_sums<M, G>(w, x, acc);
-      for (int g = 0; g < G; ++g) p[i + g] = combine<M>(pl, i + g, acc[g]);
-    }
-  }
-  for (; i < pl.n; ++i) p[i] = place_one<M>(pl, at, i);
-}
-
 }  // namespace
 
 PeriodicInterpolator::PeriodicInterpolator() {
-  static_assert(kTaps == 2 * kHalfWidth, "taps");
+  static_assert(kTaps == detail::kDelayTaps, "taps");
   // Every entry is the even kernel at u = j / kPhases for an integer j (tap l, phase p:
   // j = p − l·kPhases): evaluate it once per |j|.
-  const double norm = 1 / gsl_sf_bessel_I0(kKaiserBeta);
-  std::vector<double> grid(static_cast<std::size_t>(kHalfWidth * kPhases + 1));
-  for (std::size_t j = 0; j < grid.size(); ++j)
-    grid[j] = kernel(static_cast<double>(j) / kPhases, norm);
-  table_.resize(static_cast<std::size_t>((kPhases + 1) * kTaps));
-  for (int p = 0; p <= kPhases; ++p)
+  const std::vector<double> grid = kernel_grid();
+  table_.resize(static_cast<std::size_t>(detail::kTableRows * kTaps));
+  for (int p = 0; p < detail::kTableRows; ++p)
     for (int l = -kHalfWidth + 1; l <= kHalfWidth; ++l)
       table_[static_cast<std::size_t>(p * kTaps + l + kHalfWidth - 1)] =
           grid[static_cast<std::size_t>(std::abs(p - l * kPhases))];
@@ -215,10 +141,7 @@ std::size_t PeriodicInterpolator::taps(double s, std::size_t n, double* weight) 
   const double floor_s = std::floor(s);
   const double phase = (s - floor_s) * kPhases;
   const int p = std::min(static_cast<int>(phase), kPhases - 1);
-  const double w = phase - p;
-  const double* k0 = &table_[static_cast<std::size_t>(p * kTaps)];
-  const double* k1 = k0 + kTaps;
-  for (int i = 0; i < kTaps; ++i) weight[i] = (1 - w) * k0[i] + w * k1[i];
+  detail::interpolate_rows(table_.data(), p, phase - p, weight);
   long first = (static_cast<long>(floor_s) - kHalfWidth + 1) % static_cast<long>(n);
   if (first < 0) first += static_cast<long>(n);
   return static_cast<std::size_t>(first);
@@ -304,22 +227,44 @@ FilteredRecord::FilteredRecord(const std::vector<std::vector<double>>& terms,
   for (const auto& q : terms)
     if (q.size() != n_) throw std::invalid_argument("FilteredRecord: terms of unequal lengths");
   const std::size_t length = n_ + PeriodicInterpolator::kTaps - 1;
-  interleaved_.resize(length * M);
-  for (std::size_t m = 0; m < M; ++m)
+  terms_.resize(M);
+  for (std::size_t m = 0; m < M; ++m) {
+    terms_[m].resize(length);
     for (std::size_t i = 0, k = 0; i < length; ++i, k = k + 1 == n_ ? 0 : k + 1)
-      interleaved_[i * M + m] = terms[m][k];
+      terms_[m][i] = terms[m][k];
+  }
+}
+
+SeriesFactors::SeriesFactors(const RadialSeriesSource& source, double rate, std::size_t n)
+    : source_(source), rate_(rate), n_(n) {
+  for (std::size_t m = 0; m < source.powers().size(); ++m) {
+    std::vector<std::complex<double>>& F = factors_.emplace_back(n / 2 + 1);
+    for (std::size_t k = 1; k < F.size(); ++k)  // filter()'s band
+      if (2 * static_cast<double>(k) <= kPressureBandFraction * static_cast<double>(n))
+        F[k] = source.factor(m, angular_frequency(k, rate, n));
+  }
 }
 
 FilteredRecord filter_moving(const RadialSeriesSource& source, const std::vector<double>& velocity,
                              double rate, RealFft& fft) {
+  return filter_moving(SeriesFactors(source, rate, fft.size()), velocity, fft);
+}
+
+FilteredRecord filter_moving(const SeriesFactors& factors, const std::vector<double>& velocity,
+                             RealFft& fft) {
+  if (factors.size() != fft.size())
+    throw std::logic_error("filter_moving: factors for another record length");
+  const double rate = factors.rate();
   check_record(velocity, rate, fft);
   const Detrended d = detrend(velocity, rate, fft);
   std::vector<std::vector<double>> terms;
   std::vector<double> ramp;
-  for (std::size_t m = 0; m < source.powers().size(); ++m) {
-    terms.push_back(
-        filter(d.spectrum, rate, fft, [&](double omega) { return source.factor(m, omega); }));
-    ramp.push_back(d.slope * source.ramp_factor(m));
+  for (std::size_t m = 0; m < factors.source().powers().size(); ++m) {
+    const std::vector<std::complex<double>>& F = factors.term(m);
+    std::vector<std::complex<double>> P(d.spectrum.size());
+    for (std::size_t k = 1; k < P.size(); ++k) P[k] = F[k] * d.spectrum[k];
+    terms.push_back(fft.inverse(P));
+    ramp.push_back(d.slope * factors.source().ramp_factor(m));
   }
   return FilteredRecord(terms, std::move(ramp));
 }
@@ -351,28 +296,21 @@ void pressure_from(const RadialSeriesSource& source, const FilteredRecord& recor
                        std::string(source.name()) + " of radius " + format_number(a) +
                        " m: it must lie outside the body");
 
-  const Placement pl{record.interleaved(),
-                     n,
-                     path.distance.data(),
-                     source.pattern() == Pattern::breathing ? nullptr : path.cos_angle.data(),
-                     powers.data(),
-                     record.ramp().data(),
-                     a,
-                     source.delayed() ? rate / source.air().sound_speed : 0.0};
+  const double* terms[3];
+  if (powers.size() > 3) throw std::logic_error("pressure_from: a source of more than 3 terms");
+  for (std::size_t m = 0; m < powers.size(); ++m) terms[m] = record.term(m);
+  const detail::DelayedPlacement pl{
+      terms,
+      n,
+      path.distance.data(),
+      source.pattern() == Pattern::breathing ? nullptr : path.cos_angle.data(),
+      powers.data(),
+      record.ramp().data(),
+      a,
+      source.delayed() ? rate / source.air().sound_speed : 0.0,
+      at.table()};
   p.resize(n);
-  switch (powers.size()) {
-    case 1:
-      place<1>(pl, at, p.data());
-      break;
-    case 2:
-      place<2>(pl, at, p.data());
-      break;
-    case 3:
-      place<3>(pl, at, p.data());
-      break;
-    default:
-      throw std::logic_error("pressure_from: a source of more than 3 terms");
-  }
+  detail::place_delayed(pl, static_cast<int>(powers.size()), p.data());
 }
 
 Summation parse_summation(const std::string& name, const std::string& key) {

@@ -102,11 +102,14 @@ BearingNoise radiate(const Response& response, const AcousticsOptions& ac, const
     if (!response.cage_slip.empty())
       slip.assign(response.cage_slip.begin() + static_cast<std::ptrdiff_t>(response.first_steady),
                   response.cage_slip.end() - 1);
+    const SeriesFactors factors(*ball, rate, n);  // F_m(ω_k): the balls are alike
     for (int j = 0; j < Z; ++j) {
       radial.push_back(response.steady("r" + std::to_string(j + 1)));
       filtered.push_back(
-          filter_moving(*ball, window_and_next(response, "vr" + std::to_string(j + 1)), rate, fft));
-      orbits.push_back(ball_orbit(2 * pi * j / Z, cage_speed, out.time, slip));
+          filter_moving(factors, window_and_next(response, "vr" + std::to_string(j + 1)), fft));
+      // Ball j is ball 1 turned by 2πj/Z: its sines and cosines by rotation.
+      orbits.push_back(j == 0 ? ball_orbit(0.0, cage_speed, out.time, slip)
+                              : rotate_orbit(orbits.front(), 2 * pi * j / Z));
     }
   }
 

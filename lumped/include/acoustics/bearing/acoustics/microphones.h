@@ -34,6 +34,11 @@ struct BallOrbit {
 BallOrbit ball_orbit(double theta0, double cage_speed, const std::vector<double>& times,
                      const std::vector<double>& slip = {});
 
+/// The orbit of `orbit`'s ball turned by `angle` [rad] (θ_n + angle): each sine and cosine by
+/// the angle-sum formulas, the same values as ball_orbit(theta0 + angle, …) to rounding, without
+/// evaluating a sine or cosine per sample. The balls of one cage share one orbit so.
+BallOrbit rotate_orbit(const BallOrbit& orbit, double angle);
+
 /// ball_path from the ball's orbit, into `path` (its storage reused from call to call): the same
 /// values, bit for bit.
 void ball_path(const Eigen::Vector2d& at, double pitch_radius, const BallOrbit& orbit,

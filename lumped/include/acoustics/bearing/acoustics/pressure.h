@@ -30,6 +30,7 @@
 // moving source would not be reliable, hence the band.
 
 #include <array>
+#include <complex>
 #include <cstddef>
 #include <string>
 #include <vector>
@@ -74,7 +75,7 @@ struct SourcePath {
 /// does not have N entries or the point is inside the body at some sample.
 /// Band-limited value of a periodic record x (period N samples) at the fractional sample
 /// position s (any real; s = n gives x_n): the Kaiser-windowed sinc interpolation radiate_moving
-/// uses for its delays. Building its kernel table costs ~10 ms: build one and share it.
+/// uses for its delays. Building its kernel table costs ~1 ms: build one and share it.
 class PeriodicInterpolator {
  public:
   static constexpr int kTaps = 32;
@@ -94,6 +95,9 @@ class PeriodicInterpolator {
   double operator()(const std::vector<double>& x, double s) const {
     return apply(taps(s, x.size()), x);
   }
+  /// The kernel table: its rows 0 … kPhases/2 of kTaps weights (phase p / kPhases of a sample;
+  /// the kernel is even, so row kPhases − p is row p reversed).
+  const double* table() const { return table_.data(); }
 
  private:
   std::vector<double> table_;  // kernel at phases i / kPhases of each tap
@@ -115,20 +119,42 @@ class FilteredRecord {
   std::size_t size() const { return n_; }             ///< N
   std::size_t terms() const { return ramp_.size(); }  ///< M
   const std::vector<double>& ramp() const { return ramp_; }
-  /// q_m(t_i) at [i·M + m] for i = 0 … N + kTaps − 2, continued periodically past N: the taps
-  /// of any delayed position are one contiguous run, and the terms share each tap's weight.
-  const double* interleaved() const { return interleaved_.data(); }
+  /// q_m(t_i) for i = 0 … N + kTaps − 2, continued periodically past N: the taps of any delayed
+  /// position are one contiguous run. m < terms().
+  const double* term(std::size_t m) const { return terms_[m].data(); }
 
  private:
   std::size_t n_;
   std::vector<double> ramp_;
-  std::vector<double> interleaved_;
+  std::vector<std::vector<double>> terms_;
+};
+
+/// A series source's factors F_m(ω_k) at the bins k = 0 … N/2 of an N-sample record at `rate`,
+/// zero at DC and above the band: what filter_moving multiplies a record's spectrum by. Alike
+/// bodies (the balls of a bearing) share one. `source` must outlive it.
+class SeriesFactors {
+ public:
+  SeriesFactors(const RadialSeriesSource& source, double rate, std::size_t n);
+  const RadialSeriesSource& source() const { return source_; }
+  double rate() const { return rate_; }
+  std::size_t size() const { return n_; }  ///< N
+  /// F_m(ω_k) [Pa/(m/s)] for the m-th power of source().powers(), k = 0 … N/2.
+  const std::vector<std::complex<double>>& term(std::size_t m) const { return factors_[m]; }
+
+ private:
+  const RadialSeriesSource& source_;
+  double rate_;
+  std::size_t n_;
+  std::vector<std::vector<std::complex<double>>> factors_;
 };
 
 /// The filtered record of `velocity` (N + 1 samples at `rate`, as radiate_fixed). Throws as
 /// radiate_fixed for a bad record.
 FilteredRecord filter_moving(const RadialSeriesSource& source, const std::vector<double>& velocity,
                              double rate, RealFft& fft);
+/// The same with the factors evaluated once (the same bits); `fft` of length factors.size().
+FilteredRecord filter_moving(const SeriesFactors& factors, const std::vector<double>& velocity,
+                             RealFft& fft);
 
 /// radiate_moving from a filtered record of `source`: p_n = Θ_n Σ_m (a/r_n)^m [q_m(t_n − τ_n) +
 /// ramp_m]. Throws InputError if the path does not have N entries or the point is inside the
