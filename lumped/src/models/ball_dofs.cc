@@ -139,6 +139,7 @@ class BallDofs final : public detail::FrameForce<BallDofs, detail::RaceFrame, Ba
     std::fill(m + ring_ + balls_, m + ring_ + 2 * balls_, ball_inertia_);
   }
   bool cyclic(int i) const override { return i >= ring_ + balls_; }
+  int wide_from() const { return dofs(); }
 
   // One instantiation per geometry and friction on/off: the hot loop has no per-ball branches
   // on them. The planar model with both exponents 3/2 (the usual case) runs the SIMD kernel.
@@ -356,11 +357,9 @@ class BallDofs final : public detail::FrameForce<BallDofs, detail::RaceFrame, Ba
     in.drive_inner = a.inner, in.drive_outer = a.outer;
     in.traction_gain = traction_gain_, in.traction_cap = mu_max_;
     in.friction = friction_;
-    double fx = load_x_ + unbalance_force_ * fr.cos_shaft - damping_ * v[0];
-    double fy = load_y_ + unbalance_force_ * fr.sin_shaft - damping_ * v[1];
-    set_.kernels().planar_balls(in, f + ring_, f + ring_ + balls_, &fx, &fy);
-    f[0] = fx;
-    f[1] = fy;
+    in.fx = load_x_ + unbalance_force_ * fr.cos_shaft - damping_ * v[0];
+    in.fy = load_y_ + unbalance_force_ * fr.sin_shaft - damping_ * v[1];
+    set_.kernels().planar_balls(in, f, f + ring_, f + ring_ + balls_);
   }
 
   // force(): the equations of ball_dofs.h (the planar model with both exponents 3/2:

@@ -15,8 +15,7 @@
 #define BEARING_CONTACT_KERNELS_SHARED
 namespace bearing::detail {
 // The planar balls one at a time (below), for targets with fewer than kPlanarLanes lanes too.
-void planar_balls_scalar(const PlanarBalls& in, double* radial, double* torque, double* fx,
-                         double* fy);
+void planar_balls_scalar(const PlanarBalls& in, double* ring, double* radial, double* torque);
 // The ring force from its kPlanarLanes lane sums, in one fixed order for every target.
 inline double planar_ring_sum(double start, const double* lanes) {
   static_assert(kPlanarLanes == 4, "the order below adds four lanes");
@@ -94,10 +93,32 @@ void RadialContactsImpl(const double* HWY_RESTRICT cos_theta, const double* HWY_
 // vectors runs the scalar loop, which adds in the same order, so every target gives its bits.
 using PlanarTag = hn::CappedTag<double, kPlanarLanes>;
 
-void PlanarBallsImpl(const PlanarBalls& in, double* HWY_RESTRICT radial,
-                     double* HWY_RESTRICT torque, double* fx, double* fy) {
+// ring = (fx, fy) + planar_ring_sum of the lanes of (sx, sy): x and y side by side in the two
+// lanes of 128-bit vectors, stored as one pair. Targets of fewer than kPlanarLanes lanes never
+// call it (their kernel is the scalar loop), so they do not compile it.
+template <class D, class V>
+void StoreRingSums(D d, V sx, V sy, double fx, double fy, double* HWY_RESTRICT ring) {
+#if HWY_TARGET != HWY_SCALAR  // one lane: no halves
+  if constexpr (hn::MaxLanes(D()) == kPlanarLanes) {
+    const hn::Half<D> h;
+    const auto lo_x = hn::LowerHalf(h, sx), lo_y = hn::LowerHalf(h, sy);
+    const auto hi_x = hn::UpperHalf(h, sx), hi_y = hn::UpperHalf(h, sy);
+    const auto lanes01 =
+        hn::Add(hn::InterleaveLower(h, lo_x, lo_y), hn::InterleaveUpper(h, lo_x, lo_y));
+    const auto lanes23 =
+        hn::Add(hn::InterleaveLower(h, hi_x, hi_y), hn::InterleaveUpper(h, hi_x, hi_y));
+    HWY_ALIGN const double start[2] = {fx, fy};
+    hn::StoreU(hn::Add(hn::Load(h, start), hn::Add(lanes01, lanes23)), h, ring);
+    return;
+  }
+#endif
+  (void)d, (void)sx, (void)sy, (void)fx, (void)fy, (void)ring;
+}
+
+void PlanarBallsImpl(const PlanarBalls& in, double* HWY_RESTRICT ring, double* HWY_RESTRICT radial,
+                     double* HWY_RESTRICT torque) {
   const PlanarTag d;
-  if (hn::Lanes(d) < kPlanarLanes) return planar_balls_scalar(in, radial, torque, fx, fy);
+  if (hn::Lanes(d) < kPlanarLanes) return planar_balls_scalar(in, ring, radial, torque);
   const std::size_t N = kPlanarLanes, n = static_cast<std::size_t>(in.balls);
   const auto x = hn::Set(d, in.x), y = hn::Set(d, in.y), gap = hn::Set(d, in.gap);
   const auto vx = hn::Set(d, in.vx), vy = hn::Set(d, in.vy), zero = hn::Zero(d);
@@ -140,11 +161,7 @@ void PlanarBallsImpl(const PlanarBalls& in, double* HWY_RESTRICT radial,
     }
     done = j + N;
   }
-  HWY_ALIGN double lx[kPlanarLanes], ly[kPlanarLanes];
-  hn::Store(sx, d, lx);
-  hn::Store(sy, d, ly);
-  *fx = planar_ring_sum(*fx, lx);
-  *fy = planar_ring_sum(*fy, ly);
+  StoreRingSums(d, sx, sy, in.fx, in.fy, ring);
 }
 
 // phasor() (phasor.h) lane by lane: the same operations in the same order, the table entry
@@ -240,8 +257,7 @@ const char* dispatched_target() {
 // The SIMD kernel's arithmetic ball by ball: the balls in lanes of kPlanarLanes as the kernel
 // takes them (the last group ending at the last ball, its lanes already done adding zero), each
 // lane's ring sum in the same order, the lanes added by planar_ring_sum.
-void planar_balls_scalar(const PlanarBalls& in, double* radial, double* torque, double* fx,
-                         double* fy) {
+void planar_balls_scalar(const PlanarBalls& in, double* ring, double* radial, double* torque) {
   constexpr int N = kPlanarLanes;
   const double cap = in.traction_cap;
   double sx[N] = {}, sy[N] = {};
@@ -276,8 +292,8 @@ void planar_balls_scalar(const PlanarBalls& in, double* radial, double* torque, 
     }
     done = first + N;
   }
-  *fx = planar_ring_sum(*fx, sx);
-  *fy = planar_ring_sum(*fy, sy);
+  ring[0] = planar_ring_sum(in.fx, sx);
+  ring[1] = planar_ring_sum(in.fy, sy);
 }
 
 ContactKernels contact_kernels(ContactLoop loop, int balls) {

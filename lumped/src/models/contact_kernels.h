@@ -55,15 +55,17 @@ struct PlanarBalls {
   double traction_gain = 0;                 ///< μ_m/Δv_m [s/m]; with friction
   double traction_cap = 0;                  ///< μ_m [-]
   bool friction = false;
+  double fx = 0, fy = 0;                    ///< the ring force without the balls [N]
 };
 
 /// For each ball: δ_o = s_j + e_o,j, δ_i = x c_j + y s_j − s_j − γ + e_i,j, Q = K [δ]_+^{3/2};
 /// radial[j] = Q_i − Q_o + F_c − c_b ṡ_j [N]; with friction μ = clamp(μ_m/Δv_m Δv, ±μ_m) at
 /// Δv_i = A_i − L_s ω_b + (v_y c − v_x s) and Δv_o = A_o − L_s ω_b, torque[j] = L_s (μ_i Q_i +
-/// μ_o Q_o) [N m] (0 without). Subtracts Q_i (c_j, s_j) from (*fx, *fy) and adds μ_i Q_i (s_j,
-/// −c_j), ball by ball in order.
-using PlanarBallForces = void (*)(const PlanarBalls& in, double* radial, double* torque, double* fx,
-                                  double* fy);
+/// μ_o Q_o) [N m] (0 without). ring[0], ring[1]: (in.fx, in.fy) minus Σ Q_i (c_j, s_j) plus
+/// Σ μ_i Q_i (s_j, −c_j), summed in lanes of kPlanarLanes (contact_kernels.cc) and written as one
+/// pair, so that a caller's vector load of both forwards from the store.
+using PlanarBallForces = void (*)(const PlanarBalls& in, double* ring, double* radial,
+                                  double* torque);
 
 /// (cos θ_i, sin θ_i) of n angles θ_i [rad], each with phasor()'s bits (phasor.h: the same
 /// operations lane by lane, the table entry gathered). Arrays with room for n rounded up to a
