@@ -100,15 +100,12 @@ template <class D, class V>
 void StoreRingSums(D d, V sx, V sy, double fx, double fy, double* HWY_RESTRICT ring) {
 #if HWY_TARGET != HWY_SCALAR  // one lane: no halves
   if constexpr (hn::MaxLanes(D()) == kPlanarLanes) {
+    // (x0 + x1, y0 + y1, x2 + x3, y2 + y3): interleaving works within 128-bit blocks.
+    const auto pairs = hn::Add(hn::InterleaveLower(d, sx, sy), hn::InterleaveUpper(d, sx, sy));
     const hn::Half<D> h;
-    const auto lo_x = hn::LowerHalf(h, sx), lo_y = hn::LowerHalf(h, sy);
-    const auto hi_x = hn::UpperHalf(h, sx), hi_y = hn::UpperHalf(h, sy);
-    const auto lanes01 =
-        hn::Add(hn::InterleaveLower(h, lo_x, lo_y), hn::InterleaveUpper(h, lo_x, lo_y));
-    const auto lanes23 =
-        hn::Add(hn::InterleaveLower(h, hi_x, hi_y), hn::InterleaveUpper(h, hi_x, hi_y));
+    const auto sums = hn::Add(hn::LowerHalf(h, pairs), hn::UpperHalf(h, pairs));
     HWY_ALIGN const double start[2] = {fx, fy};
-    hn::StoreU(hn::Add(hn::Load(h, start), hn::Add(lanes01, lanes23)), h, ring);
+    hn::StoreU(hn::Add(hn::Load(h, start), sums), h, ring);
     return;
   }
 #endif
@@ -132,33 +129,34 @@ void PlanarBallsImpl(const PlanarBalls& in, double* HWY_RESTRICT ring, double* H
     const auto fresh = hn::Not(hn::FirstN(d, done - j));  // lanes not yet summed
     const auto c = hn::LoadU(d, in.cos_theta + j), s = hn::LoadU(d, in.sin_theta + j);
     const auto pos = hn::LoadU(d, in.position + j);
+    // The ring's position enters last (it is known last): δ_i = (x c + y s) − (s_j + γ − e_i).
     const auto delta_o = hn::Max(hn::Add(pos, hn::LoadU(d, in.outer_excitation + j)), zero);
-    const auto delta_i =
-        hn::Max(hn::Add(hn::Sub(hn::Sub(hn::Add(hn::Mul(x, c), hn::Mul(y, s)), pos), gap),
-                        hn::LoadU(d, in.inner_excitation + j)),
-                zero);
+    const auto shift_i = hn::Add(pos, hn::Sub(gap, hn::LoadU(d, in.inner_excitation + j)));
+    const auto delta_i = hn::Max(hn::Sub(hn::Add(hn::Mul(x, c), hn::Mul(y, s)), shift_i), zero);
     const auto load_o =
         hn::Mul(hn::Mul(hn::LoadU(d, in.outer_stiffness + j), delta_o), hn::Sqrt(delta_o));
     const auto load_i =
         hn::Mul(hn::Mul(hn::LoadU(d, in.inner_stiffness + j), delta_i), hn::Sqrt(delta_i));
-    const auto speed = hn::LoadU(d, in.speed + j);
-    hn::StoreU(hn::Sub(hn::Add(hn::Sub(load_i, load_o), fc), hn::Mul(cb, speed)), d, radial + j);
-    const auto ring_load = hn::IfThenElseZero(fresh, load_i);
-    sx = hn::Sub(sx, hn::Mul(ring_load, c));
-    sy = hn::Sub(sy, hn::Mul(ring_load, s));
+    const auto rest = hn::Sub(fc, hn::Mul(cb, hn::LoadU(d, in.speed + j)));
+    hn::StoreU(hn::Add(hn::Sub(load_i, load_o), rest), d, radial + j);
+    // The ring force per unit Q_i, (−c + μ_i s, −s − μ_i c), ready before Q_i is.
+    auto ux = hn::Neg(c), uy = hn::Neg(s);
     if (in.friction) {
       const auto spin = hn::Mul(lever, hn::LoadU(d, in.spin + j));
       const auto dvi = hn::Add(hn::Sub(ai, spin), hn::Sub(hn::Mul(vy, c), hn::Mul(vx, s)));
       const auto dvo = hn::Sub(ao, spin);
-      const auto pi = hn::Mul(hn::Min(hn::Max(hn::Mul(gain, dvi), minus_cap), cap), load_i);
-      const auto po = hn::Mul(hn::Min(hn::Max(hn::Mul(gain, dvo), minus_cap), cap), load_o);
-      hn::StoreU(hn::Mul(lever, hn::Add(pi, po)), d, torque + j);
-      const auto ring_pi = hn::IfThenElseZero(fresh, pi);
-      sx = hn::Add(sx, hn::Mul(ring_pi, s));  // μ Q_i τ_j on the ring
-      sy = hn::Sub(sy, hn::Mul(ring_pi, c));
+      const auto mu_i = hn::Min(hn::Max(hn::Mul(gain, dvi), minus_cap), cap);
+      const auto mu_o = hn::Min(hn::Max(hn::Mul(gain, dvo), minus_cap), cap);
+      hn::StoreU(hn::Add(hn::Mul(hn::Mul(lever, mu_i), load_i),
+                         hn::Mul(hn::Mul(lever, mu_o), load_o)),
+                 d, torque + j);
+      ux = hn::Sub(hn::Mul(mu_i, s), c);  // μ Q_i τ_j on the ring
+      uy = hn::Neg(hn::Add(s, hn::Mul(mu_i, c)));
     } else {
       hn::StoreU(zero, d, torque + j);
     }
+    sx = hn::Add(sx, hn::Mul(load_i, hn::IfThenElseZero(fresh, ux)));
+    sy = hn::Add(sy, hn::Mul(load_i, hn::IfThenElseZero(fresh, uy)));
     done = j + N;
   }
   StoreRingSums(d, sx, sy, in.fx, in.fy, ring);
@@ -265,30 +263,29 @@ void planar_balls_scalar(const PlanarBalls& in, double* ring, double* radial, do
     const int first = in.balls >= N ? std::min(done, in.balls - N) : 0;
     for (int k = 0; k < N && first + k < in.balls; ++k) {
       const int j = first + k;
-      const bool fresh = j >= done;  // not yet in the ring sums
       const double c = in.cos_theta[j], s = in.sin_theta[j];
       const double delta_o = std::max(in.position[j] + in.outer_excitation[j], 0.0);
-      const double delta_i =
-          std::max(in.x * c + in.y * s - in.position[j] - in.gap + in.inner_excitation[j], 0.0);
+      const double shift_i = in.position[j] + (in.gap - in.inner_excitation[j]);
+      const double delta_i = std::max((in.x * c + in.y * s) - shift_i, 0.0);
       const double load_o = in.outer_stiffness[j] * delta_o * std::sqrt(delta_o);
       const double load_i = in.inner_stiffness[j] * delta_i * std::sqrt(delta_i);
-      radial[j] = load_i - load_o + in.centrifugal - in.ball_damping * in.speed[j];
-      const double ring_load = fresh ? load_i : 0.0;
-      sx[k] -= ring_load * c;
-      sy[k] -= ring_load * s;
-      if (!in.friction) {
+      radial[j] = (load_i - load_o) + (in.centrifugal - in.ball_damping * in.speed[j]);
+      double ux = -c, uy = -s;
+      if (in.friction) {
+        const double spin = in.lever * in.spin[j];
+        const double dvi = in.drive_inner - spin + (in.vy * c - in.vx * s);
+        const double dvo = in.drive_outer - spin;
+        const double mu_i = std::min(std::max(in.traction_gain * dvi, -cap), cap);
+        const double mu_o = std::min(std::max(in.traction_gain * dvo, -cap), cap);
+        torque[j] = in.lever * mu_i * load_i + in.lever * mu_o * load_o;
+        ux = mu_i * s - c;  // μ Q_i τ_j on the ring
+        uy = -(s + mu_i * c);
+      } else {
         torque[j] = 0.0;
-        continue;
       }
-      const double spin = in.lever * in.spin[j];
-      const double dvi = in.drive_inner - spin + (in.vy * c - in.vx * s);
-      const double dvo = in.drive_outer - spin;
-      const double pi = std::min(std::max(in.traction_gain * dvi, -cap), cap) * load_i;
-      const double po = std::min(std::max(in.traction_gain * dvo, -cap), cap) * load_o;
-      torque[j] = in.lever * (pi + po);
-      const double ring_pi = fresh ? pi : 0.0;
-      sx[k] += ring_pi * s;  // μ Q_i τ_j on the ring
-      sy[k] -= ring_pi * c;
+      const bool fresh = j >= done;  // not yet in the ring sums
+      sx[k] += load_i * (fresh ? ux : 0.0);
+      sy[k] += load_i * (fresh ? uy : 0.0);
     }
     done = first + N;
   }
