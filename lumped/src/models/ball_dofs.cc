@@ -531,8 +531,40 @@ std::unique_ptr<BallDofModel> make_ball_dof_model(const ModelInputs& inputs) {
   return std::make_unique<BallDofs>(inputs);
 }
 
+namespace {
+
+// The ball model's RK4: for the usual planar ball counts (Z = 7, 8, 9) with the DOF count a
+// compile-time constant, so that the stage loops are unrolled (issue 42); else the count known at
+// run time. The same stage arithmetic either way: the same bits.
+class BallDofRk4 final : public Integrator {
+ public:
+  explicit BallDofRk4(const IntegratorSettings& settings)
+      : any_(settings), z7_(settings), z8_(settings), z9_(settings) {}
+
+  IntegrationStats integrate(const MechanicalSystem& system, double t0,
+                             const std::vector<double>& q0, const std::vector<double>& v0,
+                             const std::vector<double>& output_times, const Observer& observe,
+                             const Progress& progress) const override {
+    const Integrator& rk4 = system.dofs() == 16   ? static_cast<const Integrator&>(z7_)
+                            : system.dofs() == 18 ? static_cast<const Integrator&>(z8_)
+                            : system.dofs() == 20 ? static_cast<const Integrator&>(z9_)
+                                                  : static_cast<const Integrator&>(any_);
+    return rk4.integrate(system, t0, q0, v0, output_times, observe, progress);
+  }
+
+  std::string name() const override { return "rk4"; }
+
+ private:
+  detail::StaticRk4<BallDofs, 0> any_;
+  detail::StaticRk4<BallDofs, 16> z7_;
+  detail::StaticRk4<BallDofs, 18> z8_;
+  detail::StaticRk4<BallDofs, 20> z9_;
+};
+
+}  // namespace
+
 std::unique_ptr<Integrator> make_ball_dof_rk4(const IntegratorSettings& settings) {
-  return std::make_unique<detail::StaticRk4<BallDofs, 0>>(settings);
+  return std::make_unique<BallDofRk4>(settings);
 }
 
 }  // namespace bearing

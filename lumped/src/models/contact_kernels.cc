@@ -125,7 +125,7 @@ void PlanarBallsImpl(const PlanarBalls& in, double* HWY_RESTRICT ring, double* H
   const auto cap = hn::Set(d, in.traction_cap), minus_cap = hn::Neg(cap);
   auto sx = zero, sy = zero;  // the ring force, lane-wise
   for (std::size_t done = 0; done < n;) {
-    const std::size_t j = std::min(done, n - N);  // the last vector ends at ball Z − 1
+    const std::size_t j = std::min(done, n - N);          // the last vector ends at ball Z − 1
     const auto fresh = hn::Not(hn::FirstN(d, done - j));  // lanes not yet summed
     const auto c = hn::LoadU(d, in.cos_theta + j), s = hn::LoadU(d, in.sin_theta + j);
     const auto pos = hn::LoadU(d, in.position + j);
@@ -147,9 +147,9 @@ void PlanarBallsImpl(const PlanarBalls& in, double* HWY_RESTRICT ring, double* H
       const auto dvo = hn::Sub(ao, spin);
       const auto mu_i = hn::Min(hn::Max(hn::Mul(gain, dvi), minus_cap), cap);
       const auto mu_o = hn::Min(hn::Max(hn::Mul(gain, dvo), minus_cap), cap);
-      hn::StoreU(hn::Add(hn::Mul(hn::Mul(lever, mu_i), load_i),
-                         hn::Mul(hn::Mul(lever, mu_o), load_o)),
-                 d, torque + j);
+      hn::StoreU(
+          hn::Add(hn::Mul(hn::Mul(lever, mu_i), load_i), hn::Mul(hn::Mul(lever, mu_o), load_o)), d,
+          torque + j);
       ux = hn::Sub(hn::Mul(mu_i, s), c);  // μ Q_i τ_j on the ring
       uy = hn::Neg(hn::Add(s, hn::Mul(mu_i, c)));
     } else {

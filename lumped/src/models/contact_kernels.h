@@ -55,7 +55,7 @@ struct PlanarBalls {
   double traction_gain = 0;                 ///< μ_m/Δv_m [s/m]; with friction
   double traction_cap = 0;                  ///< μ_m [-]
   bool friction = false;
-  double fx = 0, fy = 0;                    ///< the ring force without the balls [N]
+  double fx = 0, fy = 0;  ///< the ring force without the balls [N]
 };
 
 /// For each ball: δ_o = s_j + e_o,j, δ_i = x c_j + y s_j − s_j − γ + e_i,j, Q = K [δ]_+^{3/2};
