@@ -139,6 +139,8 @@ class BallDofs final : public detail::FrameForce<BallDofs, detail::RaceFrame, Ba
     std::fill(m + ring_ + balls_, m + ring_ + 2 * balls_, ball_inertia_);
   }
   bool cyclic(int i) const override { return i >= ring_ + balls_; }
+  // RK4's stage loops one DOF at a time (rk4_loop.h): their vectorised form loads the force in
+  // vectors that span the planar kernel's 4-lane stores, which cannot forward (issue 42).
   int wide_from() const { return dofs(); }
 
   // One instantiation per geometry and friction on/off: the hot loop has no per-ball branches

@@ -5,8 +5,10 @@
 // time, so a binary built for any x86-64 uses AVX-512 or AVX2 where the CPU has them) and
 // `scalar` (one ball at a time, kept for checking). Same bits because each ball's arithmetic is
 // the same sequence of IEEE operations in both (no fused multiply–add: the kernels' file is built
-// with -ffp-contract=off), and the ring force is summed over the loaded balls in ball order in
-// both, never by a lane-width-dependent reduction; so a run is also bit-reproducible across CPUs.
+// with -ffp-contract=off), and the ring force is summed in one order fixed by the kernel, never
+// by a lane-width-dependent reduction (the radial contacts: the loaded balls in ball order; the
+// planar balls: four lane sums, then the lanes, the scalar loop mirroring the lanes); so a run is
+// also bit-reproducible across CPUs.
 
 #include <string>
 #include <vector>
