@@ -350,7 +350,7 @@ class BallDofs final : public detail::FrameForce<BallDofs, detail::RaceFrame, Ba
     in.speed = v + ring_;
     in.spin = v + ring_ + balls_;
     in.balls = balls_;
-    in.x = q[0], in.y = q[1], in.vx = v[0], in.vy = v[1];
+    in.vx = v[0], in.vy = v[1];
     in.gap = gap_;
     in.centrifugal = centrifugal_along_;
     in.ball_damping = ball_damping_;
@@ -361,7 +361,7 @@ class BallDofs final : public detail::FrameForce<BallDofs, detail::RaceFrame, Ba
     in.friction = friction_;
     in.fx = load_x_ + unbalance_force_ * fr.cos_shaft - damping_ * v[0];
     in.fy = load_y_ + unbalance_force_ * fr.sin_shaft - damping_ * v[1];
-    set_.kernels().planar_balls(in, f, f + ring_, f + ring_ + balls_);
+    set_.kernels().planar_balls(in, q[0], q[1], f, f + ring_, f + ring_ + balls_);
   }
 
   // force(): the equations of ball_dofs.h (the planar model with both exponents 3/2:

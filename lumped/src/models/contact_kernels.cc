@@ -15,7 +15,8 @@
 #define BEARING_CONTACT_KERNELS_SHARED
 namespace bearing::detail {
 // The planar balls one at a time (below), for targets with fewer than kPlanarLanes lanes too.
-void planar_balls_scalar(const PlanarBalls& in, double* ring, double* radial, double* torque);
+void planar_balls_scalar(const PlanarBalls& in, double x, double y, double* ring, double* radial,
+                         double* torque);
 // The ring force from its kPlanarLanes lane sums, in one fixed order for every target.
 inline double planar_ring_sum(double start, const double* lanes) {
   static_assert(kPlanarLanes == 4, "the order below adds four lanes");
@@ -112,12 +113,13 @@ void StoreRingSums(D d, V sx, V sy, double fx, double fy, double* HWY_RESTRICT r
   (void)d, (void)sx, (void)sy, (void)fx, (void)fy, (void)ring;
 }
 
-void PlanarBallsImpl(const PlanarBalls& in, double* HWY_RESTRICT ring, double* HWY_RESTRICT radial,
-                     double* HWY_RESTRICT torque) {
+void PlanarBallsImpl(const PlanarBalls& in, double ring_x, double ring_y, double* HWY_RESTRICT ring,
+                     double* HWY_RESTRICT radial, double* HWY_RESTRICT torque) {
   const PlanarTag d;
-  if (hn::Lanes(d) < kPlanarLanes) return planar_balls_scalar(in, ring, radial, torque);
+  if (hn::Lanes(d) < kPlanarLanes)
+    return planar_balls_scalar(in, ring_x, ring_y, ring, radial, torque);
   const std::size_t N = kPlanarLanes, n = static_cast<std::size_t>(in.balls);
-  const auto x = hn::Set(d, in.x), y = hn::Set(d, in.y), gap = hn::Set(d, in.gap);
+  const auto x = hn::Set(d, ring_x), y = hn::Set(d, ring_y), gap = hn::Set(d, in.gap);
   const auto vx = hn::Set(d, in.vx), vy = hn::Set(d, in.vy), zero = hn::Zero(d);
   const auto fc = hn::Set(d, in.centrifugal), cb = hn::Set(d, in.ball_damping);
   const auto lever = hn::Set(d, in.lever), ai = hn::Set(d, in.drive_inner);
@@ -255,7 +257,8 @@ const char* dispatched_target() {
 // The SIMD kernel's arithmetic ball by ball: the balls in lanes of kPlanarLanes as the kernel
 // takes them (the last group ending at the last ball, its lanes already done adding zero), each
 // lane's ring sum in the same order, the lanes added by planar_ring_sum.
-void planar_balls_scalar(const PlanarBalls& in, double* ring, double* radial, double* torque) {
+void planar_balls_scalar(const PlanarBalls& in, double x, double y, double* ring, double* radial,
+                         double* torque) {
   constexpr int N = kPlanarLanes;
   const double cap = in.traction_cap;
   double sx[N] = {}, sy[N] = {};
@@ -266,7 +269,7 @@ void planar_balls_scalar(const PlanarBalls& in, double* ring, double* radial, do
       const double c = in.cos_theta[j], s = in.sin_theta[j];
       const double delta_o = std::max(in.position[j] + in.outer_excitation[j], 0.0);
       const double shift_i = in.position[j] + (in.gap - in.inner_excitation[j]);
-      const double delta_i = std::max((in.x * c + in.y * s) - shift_i, 0.0);
+      const double delta_i = std::max((x * c + y * s) - shift_i, 0.0);
       const double load_o = in.outer_stiffness[j] * delta_o * std::sqrt(delta_o);
       const double load_i = in.inner_stiffness[j] * delta_i * std::sqrt(delta_i);
       radial[j] = (load_i - load_o) + (in.centrifugal - in.ball_damping * in.speed[j]);

@@ -47,7 +47,6 @@ struct PlanarBalls {
   const double* speed;                      ///< ṡ_j [m/s]
   const double* spin;                       ///< ω_b,j [rad/s]
   int balls = 0;                            ///< Z
-  double x = 0, y = 0;                      ///< ring position [m]
   double vx = 0, vy = 0;                    ///< ring velocity [m/s]
   double gap = 0;                           ///< γ [m]
   double centrifugal = 0;                   ///< F_c along the DOF [N]
@@ -66,8 +65,11 @@ struct PlanarBalls {
 /// μ_o Q_o) [N m] (0 without). ring[0], ring[1]: (in.fx, in.fy) minus Σ Q_i (c_j, s_j) plus
 /// Σ μ_i Q_i (s_j, −c_j), summed in lanes of kPlanarLanes (contact_kernels.cc) and written as one
 /// pair, so that a caller's vector load of both forwards from the store.
-using PlanarBallForces = void (*)(const PlanarBalls& in, double* ring, double* radial,
-                                  double* torque);
+/// The ring's position (x, y) [m] comes as arguments, in registers: it is the last input known
+/// (the end of the previous stage's ring sums), and a trip through memory would lengthen the
+/// chain.
+using PlanarBallForces = void (*)(const PlanarBalls& in, double x, double y, double* ring,
+                                  double* radial, double* torque);
 
 /// (cos θ_i, sin θ_i) of n angles θ_i [rad], each with phasor()'s bits (phasor.h: the same
 /// operations lane by lane, the table entry gathered). Arrays with room for n rounded up to a
