@@ -123,17 +123,19 @@ TEST(ContactKernels, PlanarBallsInEveryInstructionSetGiveTheScalarBits) {
           in.inner_stiffness = Ki.data(), in.outer_stiffness = Ko.data();
           in.position = pos.data(), in.speed = speed.data(), in.spin = spin.data();
           in.balls = Z;
-          in.x = 2e-5 * u(rng), in.y = 2e-5 * u(rng), in.vx = 1e-3 * u(rng), in.vy = 1e-3 * u(rng);
+          const double x = 2e-5 * u(rng), y = 2e-5 * u(rng);
+          in.vx = 1e-3 * u(rng), in.vy = 1e-3 * u(rng);
           in.gap = 5e-6, in.centrifugal = 3.0, in.ball_damping = 200, in.lever = 3e-3;
           in.drive_inner = 6.0, in.drive_outer = 6.1, in.traction_gain = 0.1,
           in.traction_cap = 0.01;
           in.friction = friction;
           std::vector<double> r1(Z), t1(Z), r2(Z), t2(Z);
-          double fx1 = 3.0, fy1 = -2.0, fx2 = 3.0, fy2 = -2.0;
-          t.kernels.planar_balls(in, r1.data(), t1.data(), &fx1, &fy1);
-          scalar.planar_balls(in, r2.data(), t2.data(), &fx2, &fy2);
-          ASSERT_EQ(fx1, fx2);
-          ASSERT_EQ(fy1, fy2);
+          in.fx = 3.0, in.fy = -2.0;
+          double ring1[2], ring2[2];
+          t.kernels.planar_balls(in, x, y, ring1, r1.data(), t1.data());
+          scalar.planar_balls(in, x, y, ring2, r2.data(), t2.data());
+          ASSERT_EQ(ring1[0], ring2[0]);
+          ASSERT_EQ(ring1[1], ring2[1]);
           for (int j = 0; j < Z; ++j) {
             ASSERT_EQ(r1[j], r2[j]) << j;
             ASSERT_EQ(t1[j], t2[j]) << j;

@@ -139,6 +139,9 @@ class BallDofs final : public detail::FrameForce<BallDofs, detail::RaceFrame, Ba
     std::fill(m + ring_ + balls_, m + ring_ + 2 * balls_, ball_inertia_);
   }
   bool cyclic(int i) const override { return i >= ring_ + balls_; }
+  // RK4's stage loops one DOF at a time (rk4_loop.h): their vectorised form loads the force in
+  // vectors that span the planar kernel's 4-lane stores, which cannot forward (issue 42).
+  int wide_from() const { return dofs(); }
 
   // One instantiation per geometry and friction on/off: the hot loop has no per-ball branches
   // on them. The planar model with both exponents 3/2 (the usual case) runs the SIMD kernel.
@@ -347,7 +350,7 @@ class BallDofs final : public detail::FrameForce<BallDofs, detail::RaceFrame, Ba
     in.speed = v + ring_;
     in.spin = v + ring_ + balls_;
     in.balls = balls_;
-    in.x = q[0], in.y = q[1], in.vx = v[0], in.vy = v[1];
+    in.vx = v[0], in.vy = v[1];
     in.gap = gap_;
     in.centrifugal = centrifugal_along_;
     in.ball_damping = ball_damping_;
@@ -356,11 +359,9 @@ class BallDofs final : public detail::FrameForce<BallDofs, detail::RaceFrame, Ba
     in.drive_inner = a.inner, in.drive_outer = a.outer;
     in.traction_gain = traction_gain_, in.traction_cap = mu_max_;
     in.friction = friction_;
-    double fx = load_x_ + unbalance_force_ * fr.cos_shaft - damping_ * v[0];
-    double fy = load_y_ + unbalance_force_ * fr.sin_shaft - damping_ * v[1];
-    set_.kernels().planar_balls(in, f + ring_, f + ring_ + balls_, &fx, &fy);
-    f[0] = fx;
-    f[1] = fy;
+    in.fx = load_x_ + unbalance_force_ * fr.cos_shaft - damping_ * v[0];
+    in.fy = load_y_ + unbalance_force_ * fr.sin_shaft - damping_ * v[1];
+    set_.kernels().planar_balls(in, q[0], q[1], f, f + ring_, f + ring_ + balls_);
   }
 
   // force(): the equations of ball_dofs.h (the planar model with both exponents 3/2:
@@ -532,8 +533,40 @@ std::unique_ptr<BallDofModel> make_ball_dof_model(const ModelInputs& inputs) {
   return std::make_unique<BallDofs>(inputs);
 }
 
+namespace {
+
+// The ball model's RK4: for the usual planar ball counts (Z = 7, 8, 9) with the DOF count a
+// compile-time constant, so that the stage loops are unrolled (issue 42); else the count known at
+// run time. The same stage arithmetic either way: the same bits.
+class BallDofRk4 final : public Integrator {
+ public:
+  explicit BallDofRk4(const IntegratorSettings& settings)
+      : any_(settings), z7_(settings), z8_(settings), z9_(settings) {}
+
+  IntegrationStats integrate(const MechanicalSystem& system, double t0,
+                             const std::vector<double>& q0, const std::vector<double>& v0,
+                             const std::vector<double>& output_times, const Observer& observe,
+                             const Progress& progress) const override {
+    const Integrator& rk4 = system.dofs() == 16   ? static_cast<const Integrator&>(z7_)
+                            : system.dofs() == 18 ? static_cast<const Integrator&>(z8_)
+                            : system.dofs() == 20 ? static_cast<const Integrator&>(z9_)
+                                                  : static_cast<const Integrator&>(any_);
+    return rk4.integrate(system, t0, q0, v0, output_times, observe, progress);
+  }
+
+  std::string name() const override { return "rk4"; }
+
+ private:
+  detail::StaticRk4<BallDofs, 0> any_;
+  detail::StaticRk4<BallDofs, 16> z7_;
+  detail::StaticRk4<BallDofs, 18> z8_;
+  detail::StaticRk4<BallDofs, 20> z9_;
+};
+
+}  // namespace
+
 std::unique_ptr<Integrator> make_ball_dof_rk4(const IntegratorSettings& settings) {
-  return std::make_unique<detail::StaticRk4<BallDofs, 0>>(settings);
+  return std::make_unique<BallDofRk4>(settings);
 }
 
 }  // namespace bearing

@@ -10,6 +10,21 @@
 #include "inline_contacts.h"
 #include "phasor.h"
 
+// Once, before the per-target code (foreach_target.h includes this file once per target).
+#ifndef BEARING_CONTACT_KERNELS_SHARED
+#define BEARING_CONTACT_KERNELS_SHARED
+namespace bearing::detail {
+// The planar balls one at a time (below), for targets with fewer than kPlanarLanes lanes too.
+void planar_balls_scalar(const PlanarBalls& in, double x, double y, double* ring, double* radial,
+                         double* torque);
+// The ring force from its kPlanarLanes lane sums, in one fixed order for every target.
+inline double planar_ring_sum(double start, const double* lanes) {
+  static_assert(kPlanarLanes == 4, "the order below adds four lanes");
+  return start + ((lanes[0] + lanes[1]) + (lanes[2] + lanes[3]));
+}
+}  // namespace bearing::detail
+#endif
+
 #ifndef BEARING_WITHOUT_HIGHWAY
 #undef HWY_TARGET_INCLUDE
 #define HWY_TARGET_INCLUDE "models/contact_kernels.cc"  // this file, from lumped/src
@@ -69,68 +84,84 @@ void RadialContactsImpl(const double* HWY_RESTRICT cos_theta, const double* HWY_
   *fy = sy;
 }
 
-// The planar balls in vectors of at most 4 (AVX2's width, also on AVX-512 machines: 7 to 9
-// balls are common). The last vector ends at the last ball and overlaps the one before, so no
-// load or store passes the arrays' end (the ball DOFs sit in the integrator's state vectors); its
-// lanes already done are stored again with the same values and left out of the ring sums.
-// Needs Z >= the lane count (contact_kernels() gives the scalar loop for fewer balls).
+// The planar balls in vectors of 4 (AVX2's width, also on AVX-512 machines: 7 to 9 balls are
+// common). The last vector ends at the last ball and overlaps the one before, so no load or store
+// passes the arrays' end (the ball DOFs sit in the integrator's state vectors); its lanes already
+// done are stored again with the same values and add zero to the ring sums. The ring force is
+// summed lane-wise and the four lanes added last (planar_ring_sum): a dependency chain of two
+// vector additions and three scalar ones instead of one addition per ball (issue 42). Needs
+// Z >= 4 (contact_kernels() gives the scalar loop for fewer balls); a target with narrower
+// vectors runs the scalar loop, which adds in the same order, so every target gives its bits.
 using PlanarTag = hn::CappedTag<double, kPlanarLanes>;
 
-void PlanarBallsImpl(const PlanarBalls& in, double* HWY_RESTRICT radial,
-                     double* HWY_RESTRICT torque, double* fx, double* fy) {
+// ring = (fx, fy) + planar_ring_sum of the lanes of (sx, sy): x and y side by side in the two
+// lanes of 128-bit vectors, stored as one pair. Targets of fewer than kPlanarLanes lanes never
+// call it (their kernel is the scalar loop), so they do not compile it.
+template <class D, class V>
+void StoreRingSums(D d, V sx, V sy, double fx, double fy, double* HWY_RESTRICT ring) {
+#if HWY_TARGET != HWY_SCALAR  // one lane: no halves
+  if constexpr (hn::MaxLanes(D()) == kPlanarLanes) {
+    // (x0 + x1, y0 + y1, x2 + x3, y2 + y3): interleaving works within 128-bit blocks.
+    const auto pairs = hn::Add(hn::InterleaveLower(d, sx, sy), hn::InterleaveUpper(d, sx, sy));
+    const hn::Half<D> h;
+    const auto sums = hn::Add(hn::LowerHalf(h, pairs), hn::UpperHalf(h, pairs));
+    HWY_ALIGN const double start[2] = {fx, fy};
+    hn::StoreU(hn::Add(hn::Load(h, start), sums), h, ring);
+    return;
+  }
+#endif
+  (void)d, (void)sx, (void)sy, (void)fx, (void)fy, (void)ring;
+}
+
+void PlanarBallsImpl(const PlanarBalls& in, double ring_x, double ring_y, double* HWY_RESTRICT ring,
+                     double* HWY_RESTRICT radial, double* HWY_RESTRICT torque) {
   const PlanarTag d;
-  const std::size_t N = hn::Lanes(d), n = static_cast<std::size_t>(in.balls);
-  const auto x = hn::Set(d, in.x), y = hn::Set(d, in.y), gap = hn::Set(d, in.gap);
+  if (hn::Lanes(d) < kPlanarLanes)
+    return planar_balls_scalar(in, ring_x, ring_y, ring, radial, torque);
+  const std::size_t N = kPlanarLanes, n = static_cast<std::size_t>(in.balls);
+  const auto x = hn::Set(d, ring_x), y = hn::Set(d, ring_y), gap = hn::Set(d, in.gap);
   const auto vx = hn::Set(d, in.vx), vy = hn::Set(d, in.vy), zero = hn::Zero(d);
   const auto fc = hn::Set(d, in.centrifugal), cb = hn::Set(d, in.ball_damping);
   const auto lever = hn::Set(d, in.lever), ai = hn::Set(d, in.drive_inner);
   const auto ao = hn::Set(d, in.drive_outer), gain = hn::Set(d, in.traction_gain);
   const auto cap = hn::Set(d, in.traction_cap), minus_cap = hn::Neg(cap);
-  HWY_ALIGN double qc[kPlanarLanes] = {}, qs[kPlanarLanes] = {}, pc[kPlanarLanes] = {},
-                   ps[kPlanarLanes] = {};
-  double sx = *fx, sy = *fy;
+  auto sx = zero, sy = zero;  // the ring force, lane-wise
   for (std::size_t done = 0; done < n;) {
-    const std::size_t j = std::min(done, n - N);  // the last vector ends at ball Z − 1
+    const std::size_t j = std::min(done, n - N);          // the last vector ends at ball Z − 1
+    const auto fresh = hn::Not(hn::FirstN(d, done - j));  // lanes not yet summed
     const auto c = hn::LoadU(d, in.cos_theta + j), s = hn::LoadU(d, in.sin_theta + j);
     const auto pos = hn::LoadU(d, in.position + j);
+    // The ring's position enters last (it is known last): δ_i = (x c + y s) − (s_j + γ − e_i).
     const auto delta_o = hn::Max(hn::Add(pos, hn::LoadU(d, in.outer_excitation + j)), zero);
-    const auto delta_i =
-        hn::Max(hn::Add(hn::Sub(hn::Sub(hn::Add(hn::Mul(x, c), hn::Mul(y, s)), pos), gap),
-                        hn::LoadU(d, in.inner_excitation + j)),
-                zero);
+    const auto shift_i = hn::Add(pos, hn::Sub(gap, hn::LoadU(d, in.inner_excitation + j)));
+    const auto delta_i = hn::Max(hn::Sub(hn::Add(hn::Mul(x, c), hn::Mul(y, s)), shift_i), zero);
     const auto load_o =
         hn::Mul(hn::Mul(hn::LoadU(d, in.outer_stiffness + j), delta_o), hn::Sqrt(delta_o));
     const auto load_i =
         hn::Mul(hn::Mul(hn::LoadU(d, in.inner_stiffness + j), delta_i), hn::Sqrt(delta_i));
-    const auto speed = hn::LoadU(d, in.speed + j);
-    hn::StoreU(hn::Sub(hn::Add(hn::Sub(load_i, load_o), fc), hn::Mul(cb, speed)), d, radial + j);
-    hn::Store(hn::Mul(load_i, c), d, qc);
-    hn::Store(hn::Mul(load_i, s), d, qs);
+    const auto rest = hn::Sub(fc, hn::Mul(cb, hn::LoadU(d, in.speed + j)));
+    hn::StoreU(hn::Add(hn::Sub(load_i, load_o), rest), d, radial + j);
+    // The ring force per unit Q_i, (−c + μ_i s, −s − μ_i c), ready before Q_i is.
+    auto ux = hn::Neg(c), uy = hn::Neg(s);
     if (in.friction) {
       const auto spin = hn::Mul(lever, hn::LoadU(d, in.spin + j));
       const auto dvi = hn::Add(hn::Sub(ai, spin), hn::Sub(hn::Mul(vy, c), hn::Mul(vx, s)));
       const auto dvo = hn::Sub(ao, spin);
-      const auto pi = hn::Mul(hn::Min(hn::Max(hn::Mul(gain, dvi), minus_cap), cap), load_i);
-      const auto po = hn::Mul(hn::Min(hn::Max(hn::Mul(gain, dvo), minus_cap), cap), load_o);
-      hn::StoreU(hn::Mul(lever, hn::Add(pi, po)), d, torque + j);
-      hn::Store(hn::Mul(pi, s), d, ps);
-      hn::Store(hn::Mul(pi, c), d, pc);
+      const auto mu_i = hn::Min(hn::Max(hn::Mul(gain, dvi), minus_cap), cap);
+      const auto mu_o = hn::Min(hn::Max(hn::Mul(gain, dvo), minus_cap), cap);
+      hn::StoreU(
+          hn::Add(hn::Mul(hn::Mul(lever, mu_i), load_i), hn::Mul(hn::Mul(lever, mu_o), load_o)), d,
+          torque + j);
+      ux = hn::Sub(hn::Mul(mu_i, s), c);  // μ Q_i τ_j on the ring
+      uy = hn::Neg(hn::Add(s, hn::Mul(mu_i, c)));
     } else {
       hn::StoreU(zero, d, torque + j);
     }
-    // The ring force ball by ball, in the scalar loop's order, from the first ball not yet added.
-    for (std::size_t k = done - j; k < N; ++k) {
-      sx -= qc[k];
-      sy -= qs[k];
-      if (in.friction) {
-        sx += ps[k];
-        sy -= pc[k];
-      }
-    }
+    sx = hn::Add(sx, hn::Mul(load_i, hn::IfThenElseZero(fresh, ux)));
+    sy = hn::Add(sy, hn::Mul(load_i, hn::IfThenElseZero(fresh, uy)));
     done = j + N;
   }
-  *fx = sx;
-  *fy = sy;
+  StoreRingSums(d, sx, sy, in.fx, in.fy, ring);
 }
 
 // phasor() (phasor.h) lane by lane: the same operations in the same order, the table entry
@@ -209,34 +240,6 @@ void phasors_scalar(const double* theta, int n, double* cos_theta, double* sin_t
   }
 }
 
-void planar_balls_scalar(const PlanarBalls& in, double* radial, double* torque, double* fx,
-                         double* fy) {
-  const double cap = in.traction_cap;
-  for (int j = 0; j < in.balls; ++j) {
-    const double c = in.cos_theta[j], s = in.sin_theta[j];
-    const double delta_o = std::max(in.position[j] + in.outer_excitation[j], 0.0);
-    const double delta_i =
-        std::max(in.x * c + in.y * s - in.position[j] - in.gap + in.inner_excitation[j], 0.0);
-    const double load_o = in.outer_stiffness[j] * delta_o * std::sqrt(delta_o);
-    const double load_i = in.inner_stiffness[j] * delta_i * std::sqrt(delta_i);
-    *fx -= load_i * c;
-    *fy -= load_i * s;
-    radial[j] = load_i - load_o + in.centrifugal - in.ball_damping * in.speed[j];
-    if (!in.friction) {
-      torque[j] = 0.0;
-      continue;
-    }
-    const double spin = in.lever * in.spin[j];
-    const double dvi = in.drive_inner - spin + (in.vy * c - in.vx * s);
-    const double dvo = in.drive_outer - spin;
-    const double pi = std::min(std::max(in.traction_gain * dvi, -cap), cap) * load_i;
-    const double po = std::min(std::max(in.traction_gain * dvo, -cap), cap) * load_o;
-    *fx += pi * s;  // μ Q_i τ_j on the ring
-    *fy -= pi * c;
-    torque[j] = in.lever * (pi + po);
-  }
-}
-
 #ifndef BEARING_WITHOUT_HIGHWAY
 HWY_EXPORT(KernelsImpl);
 HWY_EXPORT(TargetImpl);
@@ -250,6 +253,48 @@ const char* dispatched_target() {
 #endif
 
 }  // namespace
+
+// The SIMD kernel's arithmetic ball by ball: the balls in lanes of kPlanarLanes as the kernel
+// takes them (the last group ending at the last ball, its lanes already done adding zero), each
+// lane's ring sum in the same order, the lanes added by planar_ring_sum.
+void planar_balls_scalar(const PlanarBalls& in, double x, double y, double* ring, double* radial,
+                         double* torque) {
+  constexpr int N = kPlanarLanes;
+  const double cap = in.traction_cap;
+  double sx[N] = {}, sy[N] = {};
+  for (int done = 0; done < in.balls;) {
+    const int first = in.balls >= N ? std::min(done, in.balls - N) : 0;
+    for (int k = 0; k < N && first + k < in.balls; ++k) {
+      const int j = first + k;
+      const double c = in.cos_theta[j], s = in.sin_theta[j];
+      const double delta_o = std::max(in.position[j] + in.outer_excitation[j], 0.0);
+      const double shift_i = in.position[j] + (in.gap - in.inner_excitation[j]);
+      const double delta_i = std::max((x * c + y * s) - shift_i, 0.0);
+      const double load_o = in.outer_stiffness[j] * delta_o * std::sqrt(delta_o);
+      const double load_i = in.inner_stiffness[j] * delta_i * std::sqrt(delta_i);
+      radial[j] = (load_i - load_o) + (in.centrifugal - in.ball_damping * in.speed[j]);
+      double ux = -c, uy = -s;
+      if (in.friction) {
+        const double spin = in.lever * in.spin[j];
+        const double dvi = in.drive_inner - spin + (in.vy * c - in.vx * s);
+        const double dvo = in.drive_outer - spin;
+        const double mu_i = std::min(std::max(in.traction_gain * dvi, -cap), cap);
+        const double mu_o = std::min(std::max(in.traction_gain * dvo, -cap), cap);
+        torque[j] = in.lever * mu_i * load_i + in.lever * mu_o * load_o;
+        ux = mu_i * s - c;  // μ Q_i τ_j on the ring
+        uy = -(s + mu_i * c);
+      } else {
+        torque[j] = 0.0;
+      }
+      const bool fresh = j >= done;  // not yet in the ring sums
+      sx[k] += load_i * (fresh ? ux : 0.0);
+      sy[k] += load_i * (fresh ? uy : 0.0);
+    }
+    done = first + N;
+  }
+  ring[0] = planar_ring_sum(in.fx, sx);
+  ring[1] = planar_ring_sum(in.fy, sy);
+}
 
 ContactKernels contact_kernels(ContactLoop loop, int balls) {
 #ifndef BEARING_WITHOUT_HIGHWAY

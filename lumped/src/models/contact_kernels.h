@@ -5,8 +5,10 @@
 // time, so a binary built for any x86-64 uses AVX-512 or AVX2 where the CPU has them) and
 // `scalar` (one ball at a time, kept for checking). Same bits because each ball's arithmetic is
 // the same sequence of IEEE operations in both (no fused multiply–add: the kernels' file is built
-// with -ffp-contract=off), and the ring force is summed over the loaded balls in ball order in
-// both, never by a lane-width-dependent reduction; so a run is also bit-reproducible across CPUs.
+// with -ffp-contract=off), and the ring force is summed in one order fixed by the kernel, never
+// by a lane-width-dependent reduction (the radial contacts: the loaded balls in ball order; the
+// planar balls: four lane sums, then the lanes, the scalar loop mirroring the lanes); so a run is
+// also bit-reproducible across CPUs.
 
 #include <string>
 #include <vector>
@@ -45,7 +47,6 @@ struct PlanarBalls {
   const double* speed;                      ///< ṡ_j [m/s]
   const double* spin;                       ///< ω_b,j [rad/s]
   int balls = 0;                            ///< Z
-  double x = 0, y = 0;                      ///< ring position [m]
   double vx = 0, vy = 0;                    ///< ring velocity [m/s]
   double gap = 0;                           ///< γ [m]
   double centrifugal = 0;                   ///< F_c along the DOF [N]
@@ -55,15 +56,20 @@ struct PlanarBalls {
   double traction_gain = 0;                 ///< μ_m/Δv_m [s/m]; with friction
   double traction_cap = 0;                  ///< μ_m [-]
   bool friction = false;
+  double fx = 0, fy = 0;  ///< the ring force without the balls [N]
 };
 
 /// For each ball: δ_o = s_j + e_o,j, δ_i = x c_j + y s_j − s_j − γ + e_i,j, Q = K [δ]_+^{3/2};
 /// radial[j] = Q_i − Q_o + F_c − c_b ṡ_j [N]; with friction μ = clamp(μ_m/Δv_m Δv, ±μ_m) at
 /// Δv_i = A_i − L_s ω_b + (v_y c − v_x s) and Δv_o = A_o − L_s ω_b, torque[j] = L_s (μ_i Q_i +
-/// μ_o Q_o) [N m] (0 without). Subtracts Q_i (c_j, s_j) from (*fx, *fy) and adds μ_i Q_i (s_j,
-/// −c_j), ball by ball in order.
-using PlanarBallForces = void (*)(const PlanarBalls& in, double* radial, double* torque, double* fx,
-                                  double* fy);
+/// μ_o Q_o) [N m] (0 without). ring[0], ring[1]: (in.fx, in.fy) minus Σ Q_i (c_j, s_j) plus
+/// Σ μ_i Q_i (s_j, −c_j), summed in lanes of kPlanarLanes (contact_kernels.cc) and written as one
+/// pair, so that a caller's vector load of both forwards from the store.
+/// The ring's position (x, y) [m] comes as arguments, in registers: it is the last input known
+/// (the end of the previous stage's ring sums), and a trip through memory would lengthen the
+/// chain.
+using PlanarBallForces = void (*)(const PlanarBalls& in, double x, double y, double* ring,
+                                  double* radial, double* torque);
 
 /// (cos θ_i, sin θ_i) of n angles θ_i [rad], each with phasor()'s bits (phasor.h: the same
 /// operations lane by lane, the table entry gathered). Arrays with room for n rounded up to a
