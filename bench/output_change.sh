@@ -10,10 +10,11 @@
 #   WORK     where the four matrices go (default /tmp/bearing-output-change)
 #
 # Runs the matrix with OLD_SIM, NEW_SIM, OLD_SIM at each integrator's finer setting (dt/2, or
-# tolerance/10 for an adaptive method) and OLD_SIM with a round-off perturbation of the speed,
+# tolerance/10 for an adaptive method) and OLD_SIM with round-off perturbations (speed and load
+# one unit in the last place up, and down),
 # then prints every output that changed: by how much, against which bound, and the cases that
 # amplify round-off (bench/output_change.py says how each is judged). Exit 0: all within bound.
-# About 30 s. Paste its table into the note of a hot-path change.
+# About 1.5 min. Paste its table into the note of a hot-path change.
 set -euo pipefail
 here=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)
 [[ $# -ge 2 && $# -le 3 ]] || { echo "usage: bench/output_change.sh OLD_SIM NEW_SIM [WORK]" >&2; exit 2; }
@@ -28,5 +29,6 @@ echo "output_change.sh: the matrix with the old build, the new, the old at the f
 "$matrix" "$2" "$work/new" >/dev/null
 "$matrix" "$1" "$work/fine" finer "$work/old" >/dev/null
 "$matrix" "$1" "$work/perturbed" perturbed "$work/old" >/dev/null
+"$matrix" "$1" "$work/perturbed-down" perturbed-down "$work/old" >/dev/null
 exec /usr/bin/python3 "$here/output_change.py" compare "$work/old" "$work/new" "$work/fine" \
-  "$work/perturbed" --report "$work/report.md"
+  "$work/perturbed" "$work/perturbed-down" --report "$work/report.md"

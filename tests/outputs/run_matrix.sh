@@ -12,11 +12,12 @@
 #
 #     tests/outputs/run_matrix.sh BEARING_SIM OUTDIR finer FROM      each run and sweep at its
 #     tests/outputs/run_matrix.sh BEARING_SIM OUTDIR perturbed FROM  integrator's finer setting, or
-#                                                                    with a round-off perturbation
+#     tests/outputs/run_matrix.sh BEARING_SIM OUTDIR perturbed-down FROM  with a round-off
+#                                                                    perturbation (up or down)
 # read from FROM (a matrix of the same build): bench/output_change.sh's reference runs (issue 42).
 set -u
-[[ $# -eq 2 || ( $# -eq 4 && ( $3 == finer || $3 == perturbed ) ) ]] ||
-  { echo "usage: $0 BEARING_SIM OUTDIR [finer|perturbed FROM]" >&2; exit 2; }
+[[ $# -eq 2 || ( $# -eq 4 && ( $3 == finer || $3 == perturbed || $3 == perturbed-down ) ) ]] ||
+  { echo "usage: $0 BEARING_SIM OUTDIR [finer|perturbed|perturbed-down FROM]" >&2; exit 2; }
 root=$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)
 sim=$(cd "$(dirname "$1")" && pwd)/$(basename "$1"); out=$2; ex=$root/examples
 variant=${3:-}; from=${4:-}
