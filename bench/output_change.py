@@ -160,6 +160,16 @@ def significant_digits(token):
     return max(len(mantissa), 1)
 
 
+def writer_digits(path, token):
+    """The significant digits the writer rounded this number to: JSON all (shortest round trip),
+    CSV 12 (result_tables.h), the printed summary its own (%.4g and the like: at least 4)."""
+    if path.endswith(".json"):
+        return 17
+    if path.endswith(".csv"):
+        return 12
+    return max(significant_digits(token), 4)
+
+
 def parse_text(path):
     with open(path, "rb") as f:
         text = f.read().decode("utf-8", errors="replace")
@@ -186,7 +196,7 @@ def parse_text(path):
                           if path.endswith(".json") else
                           " ".join(w for w in (first_word, words[-1] if words else "") if w))
             values.append(float(m.group(0)))
-            digits.append(significant_digits(m.group(0)))
+            digits.append(writer_digits(path, m.group(0)))
             column.append(("c", line.count(",", 0, m.start())) if table else ("t", len(values) - 1))
             last = m.end()
         parts.append(line[last:])
