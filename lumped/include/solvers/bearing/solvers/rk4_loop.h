@@ -264,15 +264,19 @@ IntegrationStats rk4_loop(const std::string& method, double dt, double max_displ
       t = s.next;
       ++stats.steps;
       if (!state_good(q, v, n, bound)) {
-        copy_state(q, v, a, n, shown_q, shown_v, shown_a);
-        check_state(method, t, stats.steps, h, shown_q, shown_v, n, bound);
+        if constexpr (kDofs > 0) {  // the copies hold kDofs values: the state itself otherwise
+          copy_state(q, v, a, n, shown_q, shown_v, shown_a);
+          check_state(method, t, stats.steps, h, shown_q, shown_v, n, bound);
+        } else {
+          check_state(method, t, stats.steps, h, q, v, n, bound);
+        }
       }
       report.update(t);
     }
     acceleration(t, q, v, a);
     ++evaluations;
     a_current = true;
-    if (kDofs > 0) {
+    if constexpr (kDofs > 0) {
       copy_state(q, v, a, n, shown_q, shown_v, shown_a);
       check_acceleration(method, t, stats.steps, dt, shown_a, n);
       if (observe) observe(t, shown_q, shown_v, shown_a);
