@@ -540,6 +540,85 @@ std::vector<Key> output_keys() {
   };
 }
 
+// A [lubricant] key: checked only when the table is there (absent, the contacts are dry and the
+// keys keep their defaults); `required` ones land as NaN when missing and are reported by the
+// check, after the table's unknown keys.
+template <class At>
+Key lubricant_quantity(std::string name, Dimension dim, std::string help, At at,
+                       const Limit& limit, bool required, std::string example = "") {
+  Key k = quantity(std::move(name), dim, std::move(help), at, unchecked(),
+                   [at, required](const Case& c) {
+                     return c.lubricant.enabled && required
+                                ? std::numeric_limits<double>::quiet_NaN()
+                                : at(c);
+                   });
+  require_own_limit(limit, k.name);
+  k.check = [at, key = k.name, dim, limit, required, example](const Case& c) {
+    if (!c.lubricant.enabled) return;
+    if (required && std::isnan(at(c)))
+      throw InputError(key + " is missing: [lubricant] needs viscosity, pressure_viscosity and "
+                             "roughness (e.g. " + example + ")");
+    if (!std::isnan(at(c))) check_limit(limit, key, at(c), dim);
+  };
+  const auto write = k.write;
+  k.write = [write, at](std::ostream& o, const Case& c) {
+    if (!std::isnan(at(c))) write(o, c);
+  };
+  return k;
+}
+
+std::vector<Key> lubricant_keys() {
+  Key t = table("lubricant",
+                "the oil film at every ball contact: Hamrock-Dowson EHL film in series with "
+                "Hertz, squeeze-film damping (2dof, 3dof, balls, stiffness); present: on");
+  t.before = [](const TableReader& r, Case& c) { c.lubricant.enabled = r.present(); };
+  // The rules between keys (the temperature law's); a missing key is its own check's to report.
+  t.after = [](Case& c) {
+    const Lubricant& l = c.lubricant;
+    if (c.lubricant.enabled && !std::isnan(l.viscosity) && !std::isnan(l.pressure_viscosity) &&
+        !std::isnan(l.roughness))
+      l.validate();
+  };
+  t.written = [](const Case& c) { return c.lubricant.enabled; };
+  return {
+      t,
+      lubricant_quantity(
+          "lubricant.viscosity", D::viscosity,
+          "dynamic viscosity eta0 at the operating temperature (with temperature: at "
+          "reference_temperature), e.g. \"0.02 Pa s\" (required)",
+          [](auto& c) -> auto& { return c.lubricant.viscosity; }, limits::lubricant_viscosity,
+          true, "viscosity = \"20 mPa s\""),
+      lubricant_quantity(
+          "lubricant.pressure_viscosity", D::inverse_pressure,
+          "pressure-viscosity coefficient alpha of Barus' law, e.g. \"2e-8 1/Pa\" (required)",
+          [](auto& c) -> auto& { return c.lubricant.pressure_viscosity; },
+          limits::lubricant_pressure_viscosity, true, "pressure_viscosity = \"2e-8 1/Pa\""),
+      lubricant_quantity(
+          "lubricant.roughness", D::length,
+          "composite RMS roughness sqrt(s_ball^2 + s_race^2) for Lambda = h_min/s, e.g. "
+          "\"0.1 um\" (required)",
+          [](auto& c) -> auto& { return c.lubricant.roughness; }, limits::lubricant_roughness,
+          true, "roughness = \"0.1 um\""),
+      lubricant_quantity(
+          "lubricant.temperature", D::temperature,
+          "operating temperature; with it, viscosity is at reference_temperature and follows "
+          "Reynolds' law exp(-viscosity_temperature (T - T_ref)) (optional)",
+          [](auto& c) -> auto& { return c.lubricant.temperature; },
+          limits::lubricant_temperature, false),
+      lubricant_quantity(
+          "lubricant.reference_temperature", D::temperature,
+          "temperature where viscosity was measured, e.g. \"40 degC\" (with temperature)",
+          [](auto& c) -> auto& { return c.lubricant.reference_temperature; },
+          limits::lubricant_reference_temperature, false),
+      lubricant_quantity(
+          "lubricant.viscosity_temperature", D::inverse_temperature,
+          "Reynolds' viscosity-temperature coefficient beta, e.g. \"0.03 1/K\" (with "
+          "temperature)",
+          [](auto& c) -> auto& { return c.lubricant.viscosity_temperature; },
+          limits::lubricant_viscosity_temperature, false),
+  };
+}
+
 std::vector<Key> acoustics_keys() {
   Key t = table("acoustics", "sound at microphones");
   // The table's presence turns the sound-pressure outputs on.
@@ -588,7 +667,7 @@ std::vector<Key> all_keys() {
   std::vector<Key> out;
   for (auto part : {bearing_keys, material_keys, rotor_keys, operation_keys, waviness_keys,
                     ball_error_keys, model_keys, defect_keys, cage_keys, ball_keys, housing_keys,
-                    slip_keys, solver_keys, output_keys, acoustics_keys})
+                    slip_keys, lubricant_keys, solver_keys, output_keys, acoustics_keys})
     for (Key& k : part()) out.push_back(std::move(k));
   return out;
 }

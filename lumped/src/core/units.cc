@@ -57,6 +57,13 @@ const std::vector<UnitEntry>& table(Dimension dim) {
                                              {"mNm", 1e-3},
                                              {"lbfin", 0.1129848290276167},
                                              {"lbfft", 1.3558179483314004}};
+  static const std::vector<UnitEntry> viscosity{
+      {"Pas", 1.0}, {"mPas", 1e-3}, {"cP", 1e-3}, {"P", 0.1}, {"Ns/m2", 1.0}};
+  static const std::vector<UnitEntry> inverse_pressure{
+      {"1/Pa", 1.0}, {"1/MPa", 1e-6}, {"1/GPa", 1e-9}, {"m2/N", 1.0}, {"mm2/N", 1e-6}};
+  // degC's offset: unit_offset().
+  static const std::vector<UnitEntry> temperature{{"K", 1.0}, {"degC", 1.0}, {"°C", 1.0}};
+  static const std::vector<UnitEntry> inverse_temperature{{"1/K", 1.0}};
   static const std::vector<UnitEntry> none{};
   switch (dim) {
     case Dimension::length:
@@ -87,6 +94,14 @@ const std::vector<UnitEntry>& table(Dimension dim) {
       return inertia;
     case Dimension::moment:
       return moment;
+    case Dimension::viscosity:
+      return viscosity;
+    case Dimension::inverse_pressure:
+      return inverse_pressure;
+    case Dimension::temperature:
+      return temperature;
+    case Dimension::inverse_temperature:
+      return inverse_temperature;
     case Dimension::dimensionless:
       return none;
   }
@@ -131,7 +146,8 @@ const char* other_dimension(const std::string& unit, Dimension dim) {
        {Dimension::length, Dimension::angle, Dimension::angular_speed, Dimension::force,
         Dimension::pressure, Dimension::mass, Dimension::density, Dimension::time,
         Dimension::frequency, Dimension::damping, Dimension::mass_length, Dimension::velocity,
-        Dimension::inertia, Dimension::moment}) {
+        Dimension::inertia, Dimension::moment, Dimension::viscosity, Dimension::inverse_pressure,
+        Dimension::temperature, Dimension::inverse_temperature}) {
     if (d == dim) continue;
     for (const auto& e : table(d))
       if (unit == e.name) return dimension_name(d).data();
@@ -171,6 +187,14 @@ std::string_view dimension_name(Dimension dim) {
       return "moment of inertia";
     case Dimension::moment:
       return "moment (torque)";
+    case Dimension::viscosity:
+      return "dynamic viscosity";
+    case Dimension::inverse_pressure:
+      return "pressure-viscosity coefficient (1/pressure)";
+    case Dimension::temperature:
+      return "temperature";
+    case Dimension::inverse_temperature:
+      return "viscosity-temperature coefficient (1/temperature)";
     case Dimension::dimensionless:
       return "dimensionless number";
   }
@@ -207,6 +231,14 @@ std::string_view si_unit(Dimension dim) {
       return "kg m^2";
     case Dimension::moment:
       return "N m";
+    case Dimension::viscosity:
+      return "Pa s";
+    case Dimension::inverse_pressure:
+      return "1/Pa";
+    case Dimension::temperature:
+      return "K";
+    case Dimension::inverse_temperature:
+      return "1/K";
     case Dimension::dimensionless:
       return "";
   }
@@ -243,6 +275,14 @@ std::vector<std::string> accepted_units(Dimension dim) {
       return {"kg m^2", "g mm^2", "g cm^2"};
     case Dimension::moment:
       return {"N m", "kN m", "N mm", "lbf in", "lbf ft"};
+    case Dimension::viscosity:
+      return {"Pa s", "mPa s", "cP", "P"};
+    case Dimension::inverse_pressure:
+      return {"1/Pa", "1/MPa", "1/GPa", "m^2/N", "mm^2/N"};
+    case Dimension::temperature:
+      return {"K", "degC"};
+    case Dimension::inverse_temperature:
+      return {"1/K"};
     case Dimension::dimensionless:
       return {};
   }
@@ -250,8 +290,21 @@ std::vector<std::string> accepted_units(Dimension dim) {
 }
 
 bool bare_number_is_si(Dimension dim) {
-  return dim != Dimension::angle && dim != Dimension::angular_speed;
+  // A bare 80 is as likely meant in degC as in K.
+  return dim != Dimension::angle && dim != Dimension::angular_speed &&
+         dim != Dimension::temperature;
 }
+
+namespace {
+
+// The SI value of a unit's zero: 273.15 K for degC, 0 for every other unit.
+double unit_offset(std::string_view unit, Dimension dim) {
+  if (dim != Dimension::temperature) return 0.0;
+  const std::string u = normalise(unit);
+  return u == "degC" || u == "°C" ? 273.15 : 0.0;
+}
+
+}  // namespace
 
 double unit_factor(std::string_view unit, Dimension dim, const std::string& key) {
   const std::string u = normalise(unit);
@@ -274,7 +327,7 @@ double to_si(double number, std::string_view unit, Dimension dim, const std::str
   const double inverse = std::round(1.0 / factor);
   const bool exact_inverse = factor < 1.0 && std::fabs(inverse * factor - 1.0) < 1e-15 &&
                              inverse <= 1e22 && std::fmod(inverse, 10.0) == 0.0;
-  return exact_inverse ? number / inverse : number * factor;
+  return (exact_inverse ? number / inverse : number * factor) + unit_offset(unit, dim);
 }
 
 double parse_quantity(std::string_view text, Dimension dim, const std::string& key) {
@@ -335,6 +388,7 @@ double parse_quantity(std::string_view text, Dimension dim, const std::string& k
     if (exponent >= -100000 && exponent <= 100000)
       si = std::strtod((digits + "e" + std::to_string(exponent + k)).c_str(), nullptr);
   }
+  si += unit_offset(unit, dim);
   if (!std::isfinite(si))
     throw InputError(key + " = " + quoted + ": the value overflows when converted to SI");
   return si;
@@ -365,6 +419,12 @@ std::string format_number(double value) {
 
 std::string format_quantity(double value_si, std::string_view unit, Dimension dim) {
   const double factor = unit_factor(unit, dim, "format_quantity");
+  const double offset = unit_offset(unit, dim);
+  if (offset != 0.0) {  // degC: 2 ulp of the kelvin value, not of the Celsius one
+    char buf[64];
+    std::snprintf(buf, sizeof buf, "%.10g", value_si - offset);
+    return std::string(buf) + " " + std::string(unit);
+  }
   return shortest(value_si / factor, factor, value_si) + " " + std::string(unit);
 }
 

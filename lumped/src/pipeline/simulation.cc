@@ -27,6 +27,8 @@ ModelInputs model_inputs(const Case& c) {
   in.housing = c.housing;
   in.slip = c.slip;
   in.slip_span = c.solver.duration;
+  in.lubricated = c.lubricant.enabled;
+  in.lubricant = c.lubricant;
   in.inner_waviness.harmonics = c.excitation.inner_waviness;
   in.outer_waviness.harmonics = c.excitation.outer_waviness;
   in.ball_size_errors = c.excitation.ball_size_errors;

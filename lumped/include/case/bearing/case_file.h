@@ -20,6 +20,7 @@
 #include "bearing/contact.h"
 #include "bearing/excitation.h"
 #include "bearing/local_defect.h"
+#include "bearing/lubricant.h"
 #include "bearing/models/housing.h"
 #include "bearing/models/random_slip.h"
 #include "bearing/models/model_kind.h"
@@ -78,6 +79,12 @@ struct BallOptions {
   bool centrifugal = true;  ///< the centrifugal load m_b ω_ca² d_m/2 on each ball
 };
 
+/// [lubricant]: the oil between the balls and the races (lubricant.h); present: every contact
+/// has its EHL film (ehl_film.h), absent: the contacts are dry.
+struct LubricantOptions : Lubricant {
+  bool enabled = false;
+};
+
 /// Model choices.
 struct ModelOptions {
   ModelKind kind = ModelKind::two_dof;  ///< quasi_static: no integrator ([solver] method, dt,
@@ -131,6 +138,7 @@ struct Case {
   AcousticsOptions acoustics;  ///< on when the case has an [acoustics] table
   Housing housing;             ///< the outer ring's support and sensor: on with a [housing] table
   RandomSlip slip;             ///< the cage's random slip: on with [slip] rms > 0
+  LubricantOptions lubricant;  ///< the EHL film of every contact: on with a [lubricant] table
 };
 
 /// The contact constants of the case's law (the one place models, the static solution and `info`

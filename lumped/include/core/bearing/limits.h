@@ -84,11 +84,21 @@ inline constexpr Limit housing_mass{
 inline constexpr Limit housing_frequency{
     "housing.frequency", D::frequency, 0, inf, true, false, "must be positive (> 0 Hz)"};
 inline constexpr Limit slip_rms{
-    "slip.rms", D::dimensionless, 0, 0.1, false, false,
+    "slip.rms",
+    D::dimensionless,
+    0,
+    0.1,
+    false,
+    false,
     "must lie in [0, 0.1] (the cage speed's RMS fluctuation as a fraction of its mean; 0: off, "
     "0.01: 1 %)"};
 inline constexpr Limit slip_correlation_time{
-    "slip.correlation_time", D::time, 0, 100, true, false,
+    "slip.correlation_time",
+    D::time,
+    0,
+    100,
+    true,
+    false,
     "must lie in (0, 100 s] (0 in the case file: one ball pass, the default)"};
 inline constexpr Limit housing_damping_ratio{
     "housing.damping_ratio",
@@ -98,6 +108,50 @@ inline constexpr Limit housing_damping_ratio{
     false,
     true,
     "must lie in [0, 1) (an underdamped resonance; 0.05: 5 % of critical)"};
+
+inline constexpr Limit lubricant_viscosity{
+    "lubricant.viscosity",
+    D::viscosity,
+    1e-6,
+    100,
+    false,
+    false,
+    "must lie in [1e-6, 100] Pa s (water 1e-3, a mineral oil 0.005-0.5)"};
+inline constexpr Limit lubricant_pressure_viscosity{
+    "lubricant.pressure_viscosity",
+    D::inverse_pressure,
+    0,
+    1e-7,
+    true,
+    false,
+    "must lie in (0, 1e-7] 1/Pa (mineral oils 1e-8 to 3e-8 1/Pa)"};
+inline constexpr Limit lubricant_roughness{
+    "lubricant.roughness",
+    D::length,
+    0,
+    1e-5,
+    true,
+    false,
+    "must lie in (0, 10 um] (the composite RMS roughness of ball and race; ground races 0.05-0.2 "
+    "um)"};
+inline constexpr Limit lubricant_temperature{"lubricant.temperature",
+                                             D::temperature,
+                                             200,
+                                             600,
+                                             false,
+                                             false,
+                                             "must lie in [200, 600] K (-73 to 327 degC)"};
+inline constexpr Limit lubricant_reference_temperature{
+    "lubricant.reference_temperature",           D::temperature, 200, 600, false, false,
+    "must lie in [200, 600] K (-73 to 327 degC)"};
+inline constexpr Limit lubricant_viscosity_temperature{
+    "lubricant.viscosity_temperature",
+    D::inverse_temperature,
+    0,
+    0.2,
+    false,
+    false,
+    "must lie in [0, 0.2] 1/K (mineral oils 0.02-0.06 1/K)"};
 
 }  // namespace limits
 }  // namespace bearing

@@ -11,21 +11,25 @@ namespace bearing {
 
 /// The physical dimension a field expects; it decides which units are accepted.
 enum class Dimension {
-  length,         ///< SI: m
-  angle,          ///< SI: rad
-  angular_speed,  ///< SI: rad/s
-  force,          ///< SI: N
-  pressure,       ///< SI: Pa (also elastic moduli)
-  mass,           ///< SI: kg
-  density,        ///< SI: kg/m^3
-  time,           ///< SI: s
-  frequency,      ///< SI: Hz
-  damping,        ///< SI: N s/m
-  mass_length,    ///< SI: kg m (unbalance: mass times eccentricity)
-  velocity,       ///< SI: m/s (speed of sound)
-  inertia,        ///< SI: kg m^2 (a ball's moment of inertia)
-  moment,         ///< SI: N m (a moment of force, a torque: operation.moment)
-  dimensionless,  ///< no unit
+  length,               ///< SI: m
+  angle,                ///< SI: rad
+  angular_speed,        ///< SI: rad/s
+  force,                ///< SI: N
+  pressure,             ///< SI: Pa (also elastic moduli)
+  mass,                 ///< SI: kg
+  density,              ///< SI: kg/m^3
+  time,                 ///< SI: s
+  frequency,            ///< SI: Hz
+  damping,              ///< SI: N s/m
+  mass_length,          ///< SI: kg m (unbalance: mass times eccentricity)
+  velocity,             ///< SI: m/s (speed of sound)
+  inertia,              ///< SI: kg m^2 (a ball's moment of inertia)
+  moment,               ///< SI: N m (a moment of force, a torque: operation.moment)
+  viscosity,            ///< SI: Pa s (a lubricant's dynamic viscosity)
+  inverse_pressure,     ///< SI: 1/Pa (a pressure–viscosity coefficient)
+  temperature,          ///< SI: K; "degC" too (an offset unit: 80 degC = 353.15 K)
+  inverse_temperature,  ///< SI: 1/K (a viscosity–temperature coefficient)
+  dimensionless,        ///< no unit
 };
 
 /// Name of the dimension for messages ("length", "angular speed", ...).

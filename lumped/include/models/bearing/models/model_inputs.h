@@ -12,6 +12,7 @@
 #include "bearing/contact_loop.h"
 #include "bearing/excitation.h"
 #include "bearing/local_defect.h"
+#include "bearing/lubricant.h"
 #include "bearing/models/housing.h"
 #include "bearing/models/random_slip.h"
 #include "bearing/traction.h"
@@ -40,6 +41,11 @@ struct ModelInputs {
   Housing housing;
   /// The cage's random slip (random_slip.h); off: the balls turn at exactly the cage speed.
   RandomSlip slip;
+  /// The lubricant: with `lubricated`, every contact carries its EHL film in series with Hertz
+  /// and its squeeze-film damping (ehl_film.h, film_law.h); off, the contacts are dry and the
+  /// model the same as without it.
+  bool lubricated = false;
+  Lubricant lubricant;
   /// The last time a run evaluates the model [s] (solver.duration): the slip's path covers
   /// [0, slip_span].
   double slip_span = 0.0;
