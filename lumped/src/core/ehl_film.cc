@@ -74,10 +74,8 @@ double FilmContact::damping(double load) const {
   return 12.0 * pi * viscosity * std::pow(rx * ry, 1.5) / ((rx + ry) * central_thickness(load));
 }
 
-bool FilmContact::within_fit(double load) const {
-  const double U = speed_parameter(), G = material_parameter(), W = load_parameter(load);
-  return ellipticity >= 1.0 && ellipticity <= 8.0 && U >= 0.1683e-11 && U <= 1.683e-11 &&
-         W >= 0.3686e-6 && W <= 8.986e-6 && G >= 2508 && G <= 5014;
+bool FilmContact::within_fit() const {
+  return ellipticity >= 1.0 && ellipticity <= 8.0;
 }
 
 double entrainment_speed(const Bearing& b, Race race, double inner_speed, double cage_speed,
