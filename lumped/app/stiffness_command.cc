@@ -93,11 +93,14 @@ CLI::App* add_stiffness_command(CLI::App& app, StiffnessOptions& o, const std::s
       "operation.load (with the rotor weight when operation.gravity), "
       "operation.axial_load and operation.moment, whatever model.kind; or at every point of a "
       "--vary grid. Writes DIR/stiffness.csv (per point the varied keys, the 15 k_ij with units, "
-      "the displacement, q_max, loaded_balls, the load), DIR/stiffness.json (also the full "
-      "matrix, each ball's load and contact angle, the ball pass, the units and assumptions) and "
-      "DIR/stiffness_ball_pass.csv (per point and k_ij its static value, mean, min, max and "
-      "amplitudes at 1xBPFO, 2xBPFO, ... over one ball pass), all or nothing; prints the matrix "
-      "(one point) or the main terms (a grid), and the ball pass's range.");
+      "the displacement, q_max, loaded_balls, the load: at the case's cage angle), "
+      "DIR/stiffness.json (also the full matrix at the cage angle, each ball's load and contact "
+      "angle, the ball pass, the rotor's matrix averaged over it, the units and assumptions) and "
+      "DIR/stiffness_ball_pass.csv (per point and k_ij its value at the cage angle, mean, min, "
+      "max and amplitudes at 1xBPFO, 2xBPFO, ... over one ball pass), all or nothing; prints the "
+      "matrix (one point) or the main terms (a grid), and the ball pass's range. A rotor model "
+      "takes K averaged over one ball pass (ROSS's table, stiffness.json's rotor.stiffness): "
+      "where it is singular or near it a warning says why.");
   cmd->add_option("CASE", o.case_path, case_help);
   cmd->add_option("--set", o.sets, "Override one case-file value (repeat for more)")
       ->type_name("TABLE.KEY=VALUE")
@@ -111,7 +114,8 @@ CLI::App* add_stiffness_command(CLI::App& app, StiffnessOptions& o, const std::s
   cmd->add_option("--format", o.format,
                   "csv (default: stiffness.csv and stiffness.json) | ross: also "
                   "stiffness_ross.csv, the table ROSS's BearingElement reads (frequency [rad/s], "
-                  "kxx, kxy, kyx, kyy [N/m], damping 0; the points may vary operation.speed only)")
+                  "kxx, kxy, kyx, kyy [N/m]: K averaged over one ball pass; damping 0; the points "
+                  "may vary operation.speed only)")
       ->capture_default_str();
   cmd->add_option("--ball-pass", o.ball_pass,
                   "Cage angles through one ball pitch at which K is solved, each its own "
@@ -149,8 +153,9 @@ int stiffness_command(const StiffnessOptions& o) {
   table.bearing = bearing::load_sweep_case(base, {}).bearing.designation;
   bearing::write_stiffness(o.out_dir, table, o.format == "ross");
   // As run does: the result is written (a user may study it), with a warning.
-  const std::string warning = bearing::stiffness_elastic_warning(table);
-  if (!warning.empty()) std::cerr << "bearing-sim: warning: " << warning << "\n";
+  for (const std::string& warning :
+       {bearing::stiffness_elastic_warning(table), bearing::stiffness_rotor_warning(table)})
+    if (!warning.empty()) std::cerr << "bearing-sim: warning: " << warning << "\n";
   if (!o.quiet) {
     std::cout << bearing::stiffness_text(table);
     std::fprintf(stderr, "stiffness: wrote %s/ (%zu operating point%s)\n", o.out_dir.c_str(), n,

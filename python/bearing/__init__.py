@@ -26,9 +26,13 @@ API
 ``Case``      a case: ``Case.from_file(path)``, ``Case.default()``, ``Case.from_toml(text)``;
               ``case.set(key, value)`` (as ``--set``), ``case.to_toml()``
 ``info``      ``bearing-sim info --json`` as a dict
-``stiffness`` the bearing's 5x5 stiffness at the case's operating point (``bearing-sim stiffness``)
+``stiffness`` the bearing's 5x5 stiffness at the case's operating point averaged over one ball
+              pass: the matrix a rotor model takes (``bearing-sim stiffness --format ross``)
+``stiffness_at_cage_angle`` the same at the case's cage angle alone (depends on where the balls
+              stand: one ball under a light load gives no sideways stiffness)
 ``ball_pass_stiffness`` that stiffness over one ball pass: its samples, mean, range and BPFO
               harmonics (the parametric excitation)
+``SingularStiffnessWarning`` (a RuntimeWarning): ``stiffness`` is singular or near it, and why
 ``modes``     a structure's natural modes (``bearing-fem modes``): frequencies, seat and sensor
               shapes, as ``[housing] modes`` reads them
 ``run``       ``bearing-sim run``: a ``Result`` (``.t``, channels, ``.spectrum``, ``.summary``)
@@ -45,6 +49,7 @@ installed) into ``build/python/bearing``: ``PYTHONPATH=build/python /usr/bin/pyt
 import importlib as _importlib
 import operator as _operator
 import os as _os
+import warnings as _warnings
 
 __version__ = "0.1.0"
 
@@ -75,8 +80,18 @@ else:
         "A numerical procedure that did not reach its answer, e.g. a blow-up; the message says "
         "why and what to change (bearing-sim exits with status 3).")
 
-__all__ = ["Case", "Result", "Analysis", "InputError", "SolverError", "info", "stiffness",
-           "ball_pass_stiffness", "modes", "run", "sweep", "analyse", "presets", "keys", "keys_help"]
+__all__ = ["Case", "Result", "Analysis", "InputError", "SolverError", "SingularStiffnessWarning",
+           "info", "stiffness", "stiffness_at_cage_angle", "ball_pass_stiffness", "modes", "run",
+           "sweep", "analyse", "presets", "keys", "keys_help"]
+
+
+class SingularStiffnessWarning(RuntimeWarning):
+    """:func:`stiffness` (K averaged over one ball pass) is singular or near it: no ball is loaded
+    at any cage angle (the load sits in the clearance, K = 0), or the translations (x, y, z) or
+    the tilts (gx, gy) have their smallest eigenvalue below 1e-9 times their largest (a direction
+    the bearing supports at no cage angle). The message says which, and what to change; a rotor
+    model on this bearing alone has a free rigid-body mode there. As the ``rotor.warnings`` of
+    ``bearing-sim stiffness``'s stiffness.json (bearing/rotor_coefficients.h)."""
 
 
 def _case(case):
@@ -104,8 +119,22 @@ def info(case):
     return _bearing.info(_case(case))
 
 
-def stiffness(case):
-    """The bearing's stiffness at the case's operating point: a 5x5 NumPy array (float64).
+def stiffness(case, samples=32):
+    """The bearing's stiffness for a rotor model: K at the case's operating point AVERAGED OVER
+    ONE BALL PASS, a 5x5 NumPy array (float64).
+
+    K at one cage angle depends on where the balls stand: under a light radial load in the
+    clearance one ball may sit right under the load, and the ring has no sideways stiffness there
+    at all; as the cage turns on, two balls share the load. A linear rotor model holds the
+    bearing's stiffness constant, so it takes the mean over one ball pitch,
+    ``ball_pass_stiffness(case, samples)["mean"]``: the numbers of ``bearing-sim stiffness
+    --format ross`` (its kxx, kxy, kyx, kyy are ``K[:2, :2]``) and of stiffness.json's
+    ``rotor.stiffness``. ``samples``: the cage angles through one pitch, each its own equilibrium
+    under the load (an integer from 4 to 4096; default 32, as ``bearing-sim stiffness``). K at
+    the case's cage angle alone: :func:`stiffness_at_cage_angle`. Where the mean is singular or
+    near it, a :class:`SingularStiffnessWarning` says why (the ``warnings`` module: printed on
+    stderr once by default; ``warnings.simplefilter("error", bearing.SingularStiffnessWarning)``
+    makes it an exception).
 
     ``case``: a :class:`Case`, or the path of a case file. K = dF/dq of the 5-DOF static solution
     of the inner ring (as ``bearing-sim stiffness`` and ``info`` compute it): q = (x, y, z, gx, gy)
@@ -115,13 +144,32 @@ def stiffness(case):
     N/m, K[:3, 3:] N/rad, K[3:, :3] N (= N*m/m), K[3:, 3:] N*m/rad; symmetric. Assumed: rigid
     rings, each ball's centrifugal load at ``operation.speed`` (``ball.centrifugal``, on by
     default), the gyroscopic moment neglected, no damping. With no ball loaded (no load, the
-    ring in the clearance) K is 0. The displacement, ball loads and contact angles:
-    ``bearing.info(case)["stiffness"]``. Raises InputError or SolverError.
+    ring in the clearance) K is 0. Raises TypeError (``samples`` not an integer), InputError
+    (``samples`` out of range, the case) or SolverError (an equilibrium not reached at a cage
+    angle).
 
     >>> k = bearing.stiffness(bearing.Case.default().set("operation.axial_load", "100 N"))
-    >>> k[1, 1]                                   # k_yy [N/m]
+    >>> k[1, 1]                                   # k_yy [N/m], averaged over one ball pass
     """
-    return _bearing.stiffness(_case(case))
+    k, warnings = _bearing.stiffness(_case(case), _operator.index(samples))
+    for w in warnings:
+        _warnings.warn(w, SingularStiffnessWarning, stacklevel=2)
+    return k
+
+
+def stiffness_at_cage_angle(case):
+    """The bearing's stiffness at the case's operating point AND CAGE ANGLE: a 5x5 NumPy array.
+
+    K = dF/dq as :func:`stiffness`, but at the one equilibrium with ball 0 at the case's cage
+    angle (the cage phase a run starts at) instead of averaged over one ball pass. It depends on
+    where the balls stand, so it is not what a rotor model takes: the 6308 of
+    examples/seed003_6308.toml has one ball right under its 20 N, and k_xx = 0 there. It is
+    stiffness.json's ``stiffness_at_cage_angle``, stiffness.csv's k_ij and
+    ``bearing.info(case)["stiffness"]["matrix"]``; the displacement, ball loads and contact
+    angles there: ``bearing.info(case)["stiffness"]``. Units as :func:`stiffness`'s. Raises
+    InputError or SolverError.
+    """
+    return _bearing.stiffness_at_cage_angle(_case(case))
 
 
 def ball_pass_stiffness(case, samples=32):
@@ -136,8 +184,9 @@ def ball_pass_stiffness(case, samples=32):
     case's speed (each ball's centrifugal load). Keys:
 
     - ``cage_angles`` [N]: the cage angles phi_k = phi_0 + k (2*pi/Z)/N [rad];
-    - ``samples`` [N, 5, 5]: K at each (``samples[0]`` is ``stiffness(case)``, the case's phase);
-    - ``mean``, ``min``, ``max`` [5, 5]: over the pitch, entry by entry;
+    - ``samples`` [N, 5, 5]: K at each (``samples[0]`` is ``stiffness_at_cage_angle(case)``);
+    - ``mean``, ``min``, ``max`` [5, 5]: over the pitch, entry by entry (``mean`` is
+      ``stiffness(case, samples)``, the matrix a rotor model takes);
     - ``harmonics`` [(N - 1) // 2, 5, 5]: ``harmonics[m - 1]`` each entry's amplitude at m x BPFO,
       (2/N) |sum_k K_k exp(-2*pi*i*m*k/N)|, every m < N/2 (m = 1 ... N/2 - 1 for an even N);
     - ``bpfo``: the BPFO at ``operation.speed`` [Hz] (outer ring fixed, pure rolling), so

@@ -281,18 +281,26 @@ py::array_t<double> matrices_array(const std::vector<bearing::Matrix5>& Ks) {
   return a;
 }
 
-// bearing.ball_pass_stiffness: the case's point with its ball pass, as NumPy arrays.
-py::dict ball_pass_stiffness(const CaseHandle& c, int samples) {
+// The case's point with its ball pass at `samples` cage angles (4 … kMaxBallPassSamples).
+bearing::StiffnessPoint point_with_ball_pass(const CaseHandle& c, int samples) {
   if (samples < 4 || samples > bearing::kMaxBallPassSamples)
     throw bearing::InputError(
         "samples = " + std::to_string(samples) + ": allowed an integer from 4 to " +
         std::to_string(bearing::kMaxBallPassSamples) + " (cage angles through one ball pitch)");
   const bearing::Case input = c.resolved;
-  bearing::StiffnessPoint p;
-  {
-    py::gil_scoped_release release;
-    p = bearing::stiffness_point(input, samples);
-  }
+  py::gil_scoped_release release;
+  return bearing::stiffness_point(input, samples);
+}
+
+// bearing.stiffness: the rotor's K (averaged over one ball pass) and why it is singular, if it is.
+py::tuple rotor_stiffness(const CaseHandle& c, int samples) {
+  const bearing::StiffnessPoint p = point_with_ball_pass(c, samples);
+  return py::make_tuple(matrix_array(p.rotor->stiffness), p.rotor->warnings);
+}
+
+// bearing.ball_pass_stiffness: the case's point with its ball pass, as NumPy arrays.
+py::dict ball_pass_stiffness(const CaseHandle& c, int samples) {
+  const bearing::StiffnessPoint p = point_with_ball_pass(c, samples);
   const bearing::BallPassStiffness& b = *p.ball_pass;
   py::dict out;
   out["cage_angles"] =
@@ -362,19 +370,25 @@ PYBIND11_MODULE(_bearing, m) {
         return to_python(j);
       },
       py::arg("case"), "The dict of `bearing-sim info --json` (SI units).");
+  m.def("stiffness", &rotor_stiffness, py::arg("case"),
+        py::arg("samples") = bearing::kBallPassSamples,
+        "The 5x5 stiffness K = dF/dq at the case's operating point averaged over one ball pass "
+        "at `samples` cage angles (bearing/rotor_coefficients.h), SI, and the warnings about it: "
+        "(matrix, [str]).");
   m.def(
-      "stiffness",
+      "stiffness_at_cage_angle",
       [](const CaseHandle& c) {
         const bearing::Case input = c.resolved;
         bearing::StiffnessPoint p;
         {
           py::gil_scoped_release release;
-          p = bearing::stiffness_point(input, 0);  // the static matrix alone
+          p = bearing::stiffness_point(input, 0);  // the matrix at the cage angle alone
         }
         return matrix_array(p.solution.at.stiffness);
       },
       py::arg("case"),
-      "The 5x5 stiffness K = dF/dq at the case's operating point (bearing/stiffness.h), SI.");
+      "The 5x5 stiffness K = dF/dq at the case's operating point and cage angle "
+      "(bearing/stiffness.h), SI.");
   m.def("ball_pass_stiffness", &ball_pass_stiffness, py::arg("case"),
         py::arg("samples") = bearing::kBallPassSamples,
         "K over one ball pass at `samples` cage angles (bearing/ball_pass_stiffness.h), SI: a "

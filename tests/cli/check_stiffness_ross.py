@@ -4,7 +4,8 @@ BearingElement table reader (ross.utils.read_table_file) would take it: its colu
 cxx required; kyy, kxy, kyx, cyy, cxy, cyx and frequency optional, matched lower-cased), one row
 per speed in rad/s, strictly ascending (ROSS interpolates over it), only numbers, and no cell
 that ROSS's reader takes for imperial units or rpm ("lb", "inches", "rpm" anywhere switch its
-conversions on). The values are stiffness.json's, with k_xy == k_yx and the damping 0.
+conversions on). The values are K averaged over one ball pass: stiffness.json's rotor.stiffness and
+ball_pass.mean (not stiffness_at_cage_angle), with k_xy == k_yx and the damping 0.
 
     check_stiffness_ross.py BEARING_SIM EXAMPLES_DIR
 """
@@ -42,17 +43,19 @@ def main():
     expected = sorted(500 + 500 * i for i in range(6))
     for got, rpm in zip(speeds, expected):
         assert math.isclose(got, rpm * 2 * math.pi / 60, rel_tol=1e-12), (got, rpm)
-    by_speed = {p["speed"]: p["stiffness"] for p in points}
+    by_speed = {p["speed"]: p for p in points}
     for row in table:
         values = dict(zip(header, row))
-        k = by_speed[values["frequency"]]
+        point = by_speed[values["frequency"]]
+        k = point["rotor"]["stiffness"]
+        assert k == point["ball_pass"]["mean"], "rotor.stiffness is the ball pass's mean"
         assert [values["kxx"], values["kxy"], values["kyx"], values["kyy"]] == \
             [k[0][0], k[0][1], k[1][0], k[1][1]], (values, k)
         assert values["kxy"] == values["kyx"]
         assert values["kxx"] > 0 and values["kyy"] > 0
         assert [values[c] for c in ("cxx", "cxy", "cyx", "cyy")] == [0.0] * 4
     print("stiffness_ross.csv: ROSS's columns, %d speeds ascending in rad/s, values of "
-          "stiffness.json" % len(table))
+          "stiffness.json's rotor.stiffness (the ball-pass mean)" % len(table))
 
 
 if __name__ == "__main__":

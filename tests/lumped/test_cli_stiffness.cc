@@ -2,7 +2,7 @@
 // a direct solve_five_dof, the grid of --vary, info's matrix, operation.moment (read by every
 // command, refused by run), the ball pass (stiffness_ball_pass.csv, stiffness.json's ball_pass,
 // info's lines) against direct solves and the kinematics, and the errors: exit status, message,
-// no output folder.
+// no output folder. ROSS's table and the rotor's matrix: test_cli_rotor_stiffness.cc.
 
 #include <cmath>
 #include <complex>
@@ -18,6 +18,7 @@
 #include "bearing/five_dof_static.h"
 #include "bearing/info_report.h"
 #include "cli_helpers.h"
+#include "cli_stiffness_helpers.h"
 
 namespace {
 
@@ -25,51 +26,7 @@ namespace fs = std::filesystem;
 using bearing::test::fresh_dir;
 using bearing::test::read;
 using bearing::test::sim;
-
-const std::string kExample = std::string(BEARING_SOURCE_DIR) + "/examples/seed003_6308.toml";
-
-// The 5-DOF solution from the library's own pieces, not through the pipeline's mapping: ball 0
-// at `phase` [rad] (the example's cage phase is 0).
-bearing::FiveDofSolution direct(const std::vector<bearing::Override>& sets, double phase = 0.0) {
-  const bearing::Case c = bearing::read_case_file(kExample, sets);
-  // ball.centrifugal is on by default: each ball's centrifugal load at the case's speed.
-  const bearing::FiveDofBearing b =
-      bearing::five_dof_bearing(c.bearing, bearing::contact_constants(c), phase,
-                                bearing::ball_centrifugal_load(c.bearing, c.operation.speed));
-  bearing::Vector5 f;
-  f << c.operation.load.x(), c.operation.load.y(), c.operation.axial_load, c.operation.moment.x(),
-      c.operation.moment.y();
-  return bearing::solve_five_dof(b, f);
-}
-
-std::vector<std::string> split(const std::string& line) {
-  std::vector<std::string> out;
-  std::stringstream s(line);
-  for (std::string cell; std::getline(s, cell, ',');) out.push_back(cell);
-  return out;
-}
-
-// stiffness.csv as its header and rows of cells.
-struct Csv {
-  std::vector<std::string> header;
-  std::vector<std::vector<std::string>> rows;
-  double at(std::size_t row, const std::string& column) const {
-    for (std::size_t c = 0; c < header.size(); ++c)
-      if (header[c] == column) return std::stod(rows.at(row).at(c));
-    ADD_FAILURE() << "no column " << column;
-    return NAN;
-  }
-};
-
-Csv read_csv(const fs::path& p) {
-  std::stringstream s(read(p));
-  Csv csv;
-  std::string line;
-  std::getline(s, line);
-  csv.header = split(line);
-  while (std::getline(s, line)) csv.rows.push_back(split(line));
-  return csv;
-}
+using namespace bearing::test::stiffness;
 
 const char* const kKColumns[] = {"k_xx [N/m]",        "k_xy [N/m]",        "k_xz [N/m]",
                                  "k_x_gx [N/rad]",    "k_x_gy [N/rad]",    "k_yy [N/m]",
@@ -111,7 +68,9 @@ TEST(CliStiffness, OnePointEqualsTheDirectSolution) {
   EXPECT_EQ(csv.at(0, "Mx [N*m]"), 0.5);
 
   const auto j = nlohmann::json::parse(read(d / "stiffness.json"));
-  const auto& K = j["points"][0]["stiffness"];
+  const auto& K = j["points"][0]["stiffness_at_cage_angle"];
+  EXPECT_EQ(j["points"][0]["cage_angle"].get<double>(), 0.0);  // the example's cage phase
+  EXPECT_EQ(j["units"]["cage_angle"], "rad");
   for (int r = 0; r < 5; ++r)
     for (int c = 0; c < 5; ++c) {
       EXPECT_EQ(K[r][c].get<double>(), s.at.stiffness(r, c));
@@ -252,6 +211,8 @@ TEST(CliStiffness, InputErrorsLeaveNoFolder) {
       {"--format xml", {"--format xml", "csv", "ross"}},
       {"--vary operation.axial_load=0:200:3 --format ross",
        {"--format ross", "operation.speed only", "operation.axial_load"}},
+      {"--format ross --ball-pass 0",
+       {"--format ross", "averaged over one ball pass", "--ball-pass 0", "--ball-pass N"}},
       {"--vary operation.axial_load=0:1e6:100001", {"from 1 to 100000"}},
       {"--ball-pass 3", {"--ball-pass 3", "from 4 to 4096", "or 0"}},
       {"--ball-pass 4097", {"--ball-pass 4097", "from 4 to 4096", "or 0"}},
@@ -292,33 +253,6 @@ TEST(CliStiffness, ALoadBeyondTheElasticLimitIsWrittenWithAWarning) {
   EXPECT_EQ(j["pressure_limit"].get<double>(), 4.2e9);
   ASSERT_EQ(sim("stiffness " + kExample + " --quiet --out " + d.string(), &out), 0);
   EXPECT_EQ(out, "");  // no warning within the limit
-}
-
-// --format ross: ROSS's column names, rows by ascending speed, damping 0, k_xy == k_yx; a
-// second call without it removes the table an earlier one left.
-TEST(CliStiffness, RossTable) {
-  const fs::path d = fresh_dir("stiffness_ross");
-  ASSERT_EQ(
-      sim("stiffness " + kExample +
-          " --vary operation.speed=3000rpm:1000rpm:3 --format ross --quiet --out " + d.string()),
-      0);
-  const Csv ross = read_csv(d / "stiffness_ross.csv");
-  EXPECT_EQ(ross.header, (std::vector<std::string>{"frequency", "kxx", "kxy", "kyx", "kyy", "cxx",
-                                                   "cxy", "cyx", "cyy"}));
-  ASSERT_EQ(ross.rows.size(), 3u);
-  const double rpm = 2 * M_PI / 60;
-  for (std::size_t r = 0; r < 3; ++r) {
-    const bearing::FiveDofSolution s = direct(
-        {bearing::parse_override("operation.speed=" + std::to_string(1000 + 1000 * r) + "rpm")});
-    EXPECT_NEAR(ross.at(r, "frequency"), (1000 + 1000 * r) * rpm, 1e-9);
-    EXPECT_EQ(ross.at(r, "kxx"), s.at.stiffness(0, 0));
-    EXPECT_EQ(ross.at(r, "kyy"), s.at.stiffness(1, 1));
-    EXPECT_EQ(ross.at(r, "kxy"), ross.at(r, "kyx"));
-    for (const char* c : {"cxx", "cxy", "cyx", "cyy"}) EXPECT_EQ(ross.at(r, c), 0.0);
-  }
-  ASSERT_EQ(sim("stiffness " + kExample + " --quiet --out " + d.string()), 0);
-  EXPECT_FALSE(fs::exists(d / "stiffness_ross.csv"));
-  EXPECT_TRUE(fs::exists(d / "stiffness.csv"));
 }
 
 // The acceptance: over 0 to 20 000 rpm the matrix changes with speed once the
@@ -401,35 +335,10 @@ TEST(CliStiffness, CustomBearingExampleIsSolvedFromItsGeometry) {
     const bearing::FiveDofSolution s = bearing::solve_five_dof(b, f);
     for (int r = 0; r < 5; ++r)
       for (int k = 0; k < 5; ++k)
-        EXPECT_EQ(points[i]["stiffness"][r][k].get<double>(), s.at.stiffness(r, k)) << i;
+        EXPECT_EQ(points[i]["stiffness_at_cage_angle"][r][k].get<double>(), s.at.stiffness(r, k))
+            << i;
     if (Fz >= 500) EXPECT_EQ(points[i]["loaded_balls"].get<int>(), 10) << i;
   }
-}
-
-// stiffness_ball_pass.csv as rows of text cells, by column name.
-struct LongCsv {
-  std::vector<std::string> header;
-  std::vector<std::vector<std::string>> rows;
-  std::size_t column(const std::string& name) const {
-    for (std::size_t c = 0; c < header.size(); ++c)
-      if (header[c] == name) return c;
-    ADD_FAILURE() << "no column " << name;
-    return 0;
-  }
-  std::string text(std::size_t row, const std::string& name) const {
-    return rows.at(row).at(column(name));
-  }
-  double at(std::size_t row, const std::string& name) const { return std::stod(text(row, name)); }
-};
-
-LongCsv read_long_csv(const fs::path& p) {
-  const Csv csv = read_csv(p);
-  return {csv.header, csv.rows};
-}
-
-// K_ij of a JSON 5×5 matrix.
-double entry(const nlohmann::json& K, int i, int j) {
-  return K.at(i).at(j).get<double>();
 }
 
 // The ball pass of a grid over the speed (a radial load in the clearance: one or two balls carry
@@ -445,8 +354,8 @@ TEST(CliStiffness, BallPassFilesAgree) {
       << out;
   const Csv wide = read_csv(d / "stiffness.csv");
   const LongCsv bp = read_long_csv(d / "stiffness_ball_pass.csv");
-  std::vector<std::string> header = {
-      "operation.speed [rad/s]", "bpfo [Hz]", "entry", "unit", "static", "mean", "min", "max"};
+  std::vector<std::string> header = {"operation.speed [rad/s]", "bpfo [Hz]", "entry", "unit",
+                                     "at_cage_angle",           "mean",      "min",   "max"};
   for (int m = 1; m <= 7; ++m) header.push_back(std::to_string(m) + "xBPFO");  // N/2 - 1
   EXPECT_EQ(bp.header, header);
   ASSERT_EQ(bp.rows.size(), 3u * 15u);
@@ -471,10 +380,12 @@ TEST(CliStiffness, BallPassFilesAgree) {
         EXPECT_EQ(bp.text(r, "entry") + " [" + bp.text(r, "unit") + "]", name);
         EXPECT_EQ(bp.at(r, "operation.speed [rad/s]"), wide.at(p, "operation.speed [rad/s]"));
         EXPECT_EQ(bp.at(r, "bpfo [Hz]"), bpfo);
-        const double st = bp.at(r, "static"), mean = bp.at(r, "mean"), lo = bp.at(r, "min"),
+        const double st = bp.at(r, "at_cage_angle"), mean = bp.at(r, "mean"), lo = bp.at(r, "min"),
                      hi = bp.at(r, "max");
         EXPECT_EQ(st, wide.at(p, name)) << name;  // stiffness.csv's value, to the bit
+        EXPECT_EQ(st, entry(j["points"][p]["stiffness_at_cage_angle"], i, k)) << name;
         EXPECT_EQ(mean, entry(b["mean"], i, k)) << name;
+        EXPECT_EQ(mean, entry(j["points"][p]["rotor"]["stiffness"], i, k)) << name;
         EXPECT_EQ(lo, entry(b["min"], i, k)) << name;
         EXPECT_EQ(hi, entry(b["max"], i, k)) << name;
         EXPECT_EQ(entry(b["min"], k, i), lo) << name;  // symmetric
@@ -493,9 +404,13 @@ TEST(CliStiffness, BallPassFilesAgree) {
     // The radial load in the clearance ripples k_yy by far more than rounding.
     EXPECT_GT(entry(b["max"], 1, 1) - entry(b["min"], 1, 1), 0.01 * entry(b["mean"], 1, 1));
     EXPECT_GT(entry(b["harmonics"][0]["amplitude"], 1, 1), 0.001 * entry(b["mean"], 1, 1));
+    EXPECT_EQ(j["points"][p]["rotor"]["samples"], 16);
+    EXPECT_EQ(j["points"][p]["rotor"]["warnings"], nlohmann::json::array());
   }
+  EXPECT_EQ(j["units"]["rotor.stiffness"], "units.stiffness, entry by entry");
+  EXPECT_NE(j.value("rotor_definition", "").find("averaged over one ball pass"), std::string::npos);
   for (const char* s : {"Over one ball pass", "16 cage angles", "BPFO [Hz]", "k_yy [N/m]", "1xBPFO",
-                        "stiffness_ball_pass.csv"})
+                        "mean", "stiffness_ball_pass.csv", "at the case's cage angle"})
     EXPECT_NE(out.find(s), std::string::npos) << s << "\n" << out;
 }
 
@@ -592,7 +507,9 @@ TEST(CliStiffness, BallPassZeroLeavesItOut) {
   EXPECT_EQ(read(d / "stiffness.csv"), csv);
   const auto j = nlohmann::json::parse(read(d / "stiffness.json"));
   EXPECT_FALSE(j["points"][0].contains("ball_pass"));
+  EXPECT_FALSE(j["points"][0].contains("rotor"));
   EXPECT_FALSE(j.contains("ball_pass_definition"));
+  EXPECT_FALSE(j.contains("rotor_definition"));
   EXPECT_EQ(out.find("ball pass"), std::string::npos) << out;
   EXPECT_EQ(out.find("BPFO"), std::string::npos) << out;
 }

@@ -16,6 +16,7 @@ import tempfile
 import threading
 import types
 import unittest
+import warnings
 
 try:
     import numpy as np
@@ -182,32 +183,87 @@ class InfoAndPresets(unittest.TestCase):
 
 
 class Stiffness(unittest.TestCase):
-    """bearing.stiffness against the CLI's stiffness.json and info --json: the same matrix."""
+    """bearing.stiffness (K averaged over one ball pass) and bearing.stiffness_at_cage_angle
+    against the CLI's stiffness.json and info --json: the same matrices."""
 
     SETS = [("operation.axial_load", "100 N"), ("operation.moment", '["0.5 N*m", "0 N*m"]')]
 
     def test_equals_the_cli_matrix(self):
         example = str(EXAMPLES / "seed003_6308.toml")
-        k = bearing.stiffness(case_with(example, self.SETS))
-        self.assertIsInstance(k, np.ndarray)
-        self.assertEqual(k.shape, (5, 5))
-        self.assertEqual(k.dtype, np.float64)
+        case = case_with(example, self.SETS)
+        k = bearing.stiffness(case)
+        at = bearing.stiffness_at_cage_angle(case)
+        for m in (k, at):
+            self.assertIsInstance(m, np.ndarray)
+            self.assertEqual(m.shape, (5, 5))
+            self.assertEqual(m.dtype, np.float64)
         with tempfile.TemporaryDirectory() as tmp:
             cli("stiffness", example, *set_args(self.SETS), "--out", tmp, "--quiet")
             with open(pathlib.Path(tmp) / "stiffness.json") as f:
                 point = json.load(f)["points"][0]
-        self.assertEqual(k.tolist(), point["stiffness"])
-        self.assertEqual(k.tolist(), bearing.info(case_with(example, self.SETS))["stiffness"]
-                         ["matrix"])
-        np.testing.assert_array_equal(k, k.T)  # symmetric to the bit
-        self.assertTrue(np.all(np.linalg.eigvalsh(k) > 0))  # loaded every way: positive definite
+        self.assertEqual(k.tolist(), point["rotor"]["stiffness"])
+        self.assertEqual(k.tolist(), point["ball_pass"]["mean"])
+        self.assertEqual(at.tolist(), point["stiffness_at_cage_angle"])
+        self.assertEqual(at.tolist(), bearing.info(case)["stiffness"]["matrix"])
+        for m in (k, at):
+            np.testing.assert_array_equal(m, m.T)  # symmetric to the bit
+            self.assertTrue(np.all(np.linalg.eigvalsh(m) > 0))  # loaded every way: definite
         self.assertEqual(bearing.stiffness(example).tolist(),
                          bearing.stiffness(bearing.Case.from_file(example)).tolist())
+        self.assertEqual(bearing.stiffness_at_cage_angle(example).tolist(),
+                         bearing.stiffness_at_cage_angle(bearing.Case.from_file(example)).tolist())
+
+    def test_rotor_matrix_is_the_ball_pass_mean(self):
+        """Issue 43 item 6: seed 003's 6308 under 20 N in its clearance has one ball right under
+        the load at its cage angle (k_xx there at round-off); bearing.stiffness is the arithmetic
+        mean of K over the ball pass's cage angles (NumPy's mean of the samples, to round-off),
+        supports the ring sideways, and gives no warning."""
+        example = str(EXAMPLES / "seed003_6308.toml")
+        for n in (32, 8):
+            with warnings.catch_warnings(record=True) as caught:
+                warnings.simplefilter("always")
+                k = bearing.stiffness(example, samples=n) if n != 32 else bearing.stiffness(example)
+            self.assertEqual(caught, [])
+            samples = bearing.ball_pass_stiffness(example, samples=n)["samples"]
+            np.testing.assert_allclose(k, samples.mean(axis=0), rtol=0,
+                                       atol=1e-12 * np.abs(k).max())
+            self.assertGreater(k[0, 0], 0.1 * k[1, 1])
+        at = bearing.stiffness_at_cage_angle(example)
+        self.assertLess(abs(at[0, 0]), 1e-12 * at[1, 1])
+        with self.assertRaises(bearing.InputError) as e:
+            bearing.stiffness(example, samples=3)
+        self.assertIn("samples = 3", str(e.exception))
+        with self.assertRaises(TypeError):
+            bearing.stiffness(example, samples=16.5)
+
+    def test_a_load_in_the_clearance_warns(self):
+        """No load: no ball is loaded at any cage angle, K = 0, and a SingularStiffnessWarning (a
+        RuntimeWarning) says why, with stiffness.json's rotor.warnings' text."""
+        example = str(EXAMPLES / "seed003_6308.toml")
+        sets = [("operation.load", "[0, 0]")]
+        with warnings.catch_warnings(record=True) as caught:
+            warnings.simplefilter("always")
+            k = bearing.stiffness(case_with(example, sets))
+        self.assertEqual(k.tolist(), np.zeros((5, 5)).tolist())
+        self.assertEqual(len(caught), 1)
+        self.assertIs(caught[0].category, bearing.SingularStiffnessWarning)
+        self.assertTrue(issubclass(bearing.SingularStiffnessWarning, RuntimeWarning))
+        message = str(caught[0].message)
+        self.assertIn("no ball is loaded at any cage angle", message)
+        self.assertIn("clearance", message)
+        with tempfile.TemporaryDirectory() as tmp:
+            cli("stiffness", example, *set_args(sets), "--out", tmp, "--quiet")
+            with open(pathlib.Path(tmp) / "stiffness.json") as f:
+                self.assertEqual(json.load(f)["points"][0]["rotor"]["warnings"], [message])
+        with warnings.catch_warnings():
+            warnings.simplefilter("error", bearing.SingularStiffnessWarning)
+            with self.assertRaises(bearing.SingularStiffnessWarning):
+                bearing.stiffness(case_with(example, sets))
 
     def test_ball_pass(self):
         """bearing.ball_pass_stiffness: its shapes, its mean, range and harmonics those of its own
-        samples, samples[0] the static matrix (the case's cage phase), the BPFO info's, and the
-        numbers of the CLI's stiffness.json."""
+        samples, samples[0] the matrix at the case's cage angle, its mean bearing.stiffness, the
+        BPFO info's, and the numbers of the CLI's stiffness.json."""
         example = str(EXAMPLES / "seed003_6308.toml")  # 20 N in the clearance: K ripples
         case = bearing.Case.from_file(example)
         n = 16
@@ -226,7 +282,8 @@ class Stiffness(unittest.TestCase):
         amplitude = 2.0 / n * np.abs(np.fft.fft(bp["samples"], axis=0))[1:n // 2]
         np.testing.assert_allclose(bp["harmonics"], amplitude, rtol=1e-9,
                                    atol=1e-12 * np.abs(bp["mean"]).max())
-        np.testing.assert_array_equal(bp["samples"][0], bearing.stiffness(case))
+        np.testing.assert_array_equal(bp["samples"][0], bearing.stiffness_at_cage_angle(case))
+        np.testing.assert_array_equal(bp["mean"], bearing.stiffness(case, samples=n))
         self.assertGreater(bp["max"][1, 1] - bp["min"][1, 1], 0.01 * bp["mean"][1, 1])
         pitch = 2 * np.pi / 8
         np.testing.assert_allclose(bp["cage_angles"], pitch * np.arange(n) / n, rtol=0,

@@ -531,8 +531,14 @@ def case_stiffness(args, plot):
     check("k_xy" not in drawn, "stiffness: a coupling at round-off (k_xy) is not drawn")
     # The diagonal's range over one ball pass: a band from stiffness.json's min to its max.
     with open(os.path.join(folder, "stiffness.json")) as f:
-        passes = [p["ball_pass"] for p in json.load(f)["points"]]
+        points = json.load(f)["points"]
+    passes = [p["ball_pass"] for p in points]
     for i, name in enumerate(("k_xx", "k_yy", "k_zz", "k_gx_gx", "k_gy_gy")):
+        # Its mean over the pass, the rotor's K: a dotted line through stiffness.json's values.
+        mean = artist(fig, "rotor:" + name)
+        check(same(mean.get_xydata(),
+                   np.column_stack([x, [p["rotor"]["stiffness"][i][i] for p in points]])),
+              "stiffness: %s's ball-pass mean is stiffness.json's rotor.stiffness" % name)
         lo = np.array([b["min"][i][i] for b in passes])
         hi = np.array([b["max"][i][i] for b in passes])
         band = artist(fig, "ball_pass:" + name)
@@ -549,8 +555,8 @@ def case_stiffness(args, plot):
     run_sim(args, "stiffness", "--vary", "operation.axial_load=0:200:3", "--ball-pass", "0",
             "--quiet", "--out", bare)
     bare_fig = plot.stiffness_figure(plot.load_stiffness(bare))
-    check(not bare_fig.findobj(lambda a: (a.get_gid() or "").startswith("ball_pass:")),
-          "stiffness: --ball-pass 0, no band")
+    check(not bare_fig.findobj(lambda a: (a.get_gid() or "").startswith(("ball_pass:", "rotor:"))),
+          "stiffness: --ball-pass 0, no band and no mean")
     one = os.path.join(args.work, "one")
     run_sim(args, "stiffness", "--set", "operation.axial_load=100", "--quiet", "--out", one)
     check(plot_cli(args, one).returncode == 0, "bearing-plot of one point exits 0")
@@ -564,6 +570,8 @@ def case_stiffness(args, plot):
     segment = artist(one_fig, "ball_pass:k_zz").get_segments()[0]
     check(same(segment[:, 1], [one_pass["min"][2][2], one_pass["max"][2][2]]),
           "stiffness (one point): k_zz's ball-pass bar spans stiffness.json's min to max")
+    check(same(artist(one_fig, "rotor:k_zz").get_ydata(), [one_pass["mean"][2][2]]),
+          "stiffness (one point): k_zz's diamond is its ball-pass mean")
 
 
 # --- contact ----------------------------------------------------------------------------------

@@ -13,8 +13,9 @@ namespace bearing {
 
 const char* const kBallPassDefinition =
     "K at `samples` cage angles phi_k = phi_0 + k (2 pi/Z)/N, k = 0 ... N-1, through one ball "
-    "pitch from the case's cage phase phi_0 (cage_angles[0]: the static point), each its own "
-    "equilibrium under the point's load; mean, min and max entry by entry; harmonics[m-1] "
+    "pitch from the case's cage phase phi_0 (cage_angles[0]: the case's cage angle, of "
+    "stiffness_at_cage_angle), each its own equilibrium under the point's load; mean, min and "
+    "max entry by entry (the mean is rotor.stiffness, what a rotor model takes); harmonics[m-1] "
     "the amplitude of each entry at m x BPFO, (2/N) |sum_k K_k exp(-2 pi i m k/N)|, "
     "every m < N/2: in time K(t) = mean + sum_m amplitude_m cos(2 pi m BPFO t + phase_m), "
     "the parametric excitation the dynamic models feel";
@@ -87,7 +88,7 @@ std::string ball_pass_csv(const StiffnessTable& t) {
   std::vector<std::string> header;
   for (const auto& k : t.keys)
     header.push_back(k.key + " [" + (k.unit.empty() ? "-" : k.unit) + "]");
-  for (const char* c : {"bpfo [Hz]", "entry", "unit", "static", "mean", "min", "max"})
+  for (const char* c : {"bpfo [Hz]", "entry", "unit", "at_cage_angle", "mean", "min", "max"})
     header.push_back(c);
   const std::size_t harmonics = static_cast<std::size_t>((t.ball_pass_samples - 1) / 2);
   for (std::size_t m = 1; m <= harmonics; ++m) header.push_back(harmonic_name(m));
@@ -116,7 +117,8 @@ std::string ball_pass_csv(const StiffnessTable& t) {
 std::string ball_pass_text(const StiffnessTable& t) {
   if (t.ball_pass_samples <= 0) return "";
   std::ostringstream o;
-  o << "\nOver one ball pass: the range and the amplitude at 1xBPFO (" << t.ball_pass_samples
+  o << "\nOver one ball pass: the range, the mean (the rotor's) and the amplitude at 1xBPFO ("
+    << t.ball_pass_samples
     << " cage angles through a pitch, each its own equilibrium under the point's load;\nevery "
        "term and harmonic: stiffness_ball_pass.csv)\n";
   // The leading columns (the varied keys, the BPFO), then a group of three per term under its
@@ -134,9 +136,9 @@ std::string ball_pass_text(const StiffnessTable& t) {
   }
   for (const char* term : {"k_xx [N/m]", "k_yy [N/m]", "k_zz [N/m]"}) {
     const std::string name = term;
-    groups += std::string(kGap, ' ') + name + std::string(3 * kColumn - name.size(), ' ');
-    columns +=
-        std::string(kGap, ' ') + pad("min", kColumn) + pad("max", kColumn) + pad("1xBPFO", kColumn);
+    groups += std::string(kGap, ' ') + name + std::string(4 * kColumn - name.size(), ' ');
+    columns += std::string(kGap, ' ') + pad("min", kColumn) + pad("mean", kColumn) +
+               pad("max", kColumn) + pad("1xBPFO", kColumn);
   }
   while (!groups.empty() && groups.back() == ' ') groups.pop_back();
   o << groups << "\n" << columns << "\n";
@@ -147,6 +149,7 @@ std::string ball_pass_text(const StiffnessTable& t) {
     o << pad(num(r.point.bpfo, 5), width[c]);
     for (int i = 0; i < 3; ++i)
       o << std::string(kGap, ' ') << pad(num(shown(b.min(i, i), b, i)), kColumn)
+        << pad(num(shown(b.mean(i, i), b, i)), kColumn)
         << pad(num(shown(b.max(i, i), b, i)), kColumn)
         << pad(num(shown(b.harmonics.front()(i, i), b, i)), kColumn);
     o << "\n";

@@ -339,9 +339,10 @@ std::string housing_text(const InfoReport& r) {
 // The 5-DOF stiffness at the case's loads, for info_text.
 std::string stiffness_info_text(const InfoReport& r) {
   std::ostringstream o;
-  o << "\nStiffness at the operating point (5-DOF static solution: rigid rings, the balls' "
-       "centrifugal load at the case's speed, no "
-       "damping; every load of the case, whatever model.kind; `bearing-sim stiffness` for more)\n";
+  o << "\nStiffness at the operating point and the case's cage angle (5-DOF static solution: "
+       "rigid rings, the balls' centrifugal load at the case's speed, no damping; every load of "
+       "the case, whatever model.kind; a rotor model takes K averaged over one ball pass: "
+       "`bearing-sim stiffness --format ross`)\n";
   if (!r.stiffness) return o.str() + "  not available: " + r.stiffness_error + "\n";
   const StiffnessPoint& p = *r.stiffness;
   const Vector5& q = p.solution.displacement;

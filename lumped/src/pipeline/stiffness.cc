@@ -78,6 +78,7 @@ StiffnessPoint stiffness_point(const Case& c, int ball_pass_samples) {
   const FiveDofBearing b = bearing_of(in);
   StiffnessPoint p;
   p.load = load_of(c, in);
+  p.cage_angle = b.phase;
   p.solution = solve_five_dof(b, p.load);
   // At speed the outer contacts carry the centrifugal load as well: each race's pressure from its
   // own largest load.
@@ -86,7 +87,10 @@ StiffnessPoint stiffness_point(const Case& c, int ball_pass_samples) {
   // The outer ring is fixed (ModelInputs::inner_speed): BPFO = Z f_c, the rate the cage turns
   // one pitch at.
   p.bpfo = bearing_frequencies(in.bearing, in.inner_speed).bpfo;
-  if (ball_pass_samples > 0) p.ball_pass = ball_pass_stiffness(b, p.load, ball_pass_samples);
+  if (ball_pass_samples > 0) {
+    p.ball_pass = ball_pass_stiffness(b, p.load, ball_pass_samples);
+    p.rotor = rotor_coefficients(*p.ball_pass);
+  }
   return p;
 }
 

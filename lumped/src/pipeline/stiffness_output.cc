@@ -78,6 +78,13 @@ nlohmann::json vector_json(const Vector5& v) {
   return nlohmann::json(std::vector<double>(v.data(), v.data() + 5));
 }
 
+// A point's rotor coefficients; a damping matrix, once there is one, beside "stiffness".
+nlohmann::json rotor_json(const RotorCoefficients& c) {
+  return {{"samples", c.samples},
+          {"stiffness", stiffness_matrix_json(c.stiffness)},
+          {"warnings", c.warnings}};
+}
+
 nlohmann::json point_json(const StiffnessTable& t, const StiffnessRow& r) {
   const FiveDofSolution& s = r.point.solution;
   nlohmann::json values = nlohmann::json::object();
@@ -86,8 +93,9 @@ nlohmann::json point_json(const StiffnessTable& t, const StiffnessRow& r) {
       {"values", values},
       {"speed", r.speed},
       {"load", vector_json(r.point.load)},
+      {"cage_angle", r.point.cage_angle},
       {"displacement", vector_json(s.displacement)},
-      {"stiffness", stiffness_matrix_json(s.at.stiffness)},
+      {"stiffness_at_cage_angle", stiffness_matrix_json(s.at.stiffness)},
       {"q_max", r.point.q_max()},
       {"loaded_balls", r.point.loaded_balls()},
       {"ball_angles", s.at.ball_angles},
@@ -101,6 +109,7 @@ nlohmann::json point_json(const StiffnessTable& t, const StiffnessRow& r) {
       {"residual", s.residual},
       {"iterations", s.iterations}};
   if (r.point.ball_pass) j["ball_pass"] = ball_pass_json(r.point);
+  if (r.point.rotor) j["rotor"] = rotor_json(*r.point.rotor);
   return j;
 }
 
@@ -114,8 +123,10 @@ nlohmann::json units_json(bool ball_pass) {
   nlohmann::json u = {{"values", "SI, the unit of each key in varied[]"},
                       {"speed", "rad/s"},
                       {"load", kStiffnessLoadUnits},
+                      {"cage_angle", "rad"},
                       {"displacement", kStiffnessDofUnits},
                       {"stiffness", k},
+                      {"stiffness_at_cage_angle", "units.stiffness, entry by entry"},
                       {"q_max", "N"},
                       {"ball_angles", "rad"},
                       {"ball_loads", "N"},
@@ -125,7 +136,10 @@ nlohmann::json units_json(bool ball_pass) {
                       {"peak_pressure", "Pa"},
                       {"pressure_limit", "Pa"},
                       {"residual", "1"}};
-  if (ball_pass) u.update(ball_pass_units_json("units.stiffness"));
+  if (ball_pass) {
+    u.update(ball_pass_units_json("units.stiffness"));
+    u["rotor.stiffness"] = "units.stiffness, entry by entry";
+  }
   return u;
 }
 
@@ -139,6 +153,16 @@ constexpr std::array<const char*, 5> kAssumptions = {
     "no damping: the bearing's damping is not modelled (ROSS's cxx..cyy are written as 0)",
     "K = dF/dq is the tangent stiffness at the equilibrium under the load F, symmetric; the "
     "force the bearing exerts on the ring for a small extra displacement dq is -K dq"};
+
+constexpr const char* kRotorDefinition =
+    "the coefficients a linear rotor model takes (ROSS's kxx, kxy, kyx, kyy are "
+    "rotor.stiffness[0..1][0..1], stiffness_ross.csv): rotor.stiffness is K averaged over one "
+    "ball pass, the mean of ball_pass's `samples` cage angles (ball_pass.mean), where the cage "
+    "angle has no say; rotor.warnings says why it is singular or near it: K = 0 (no ball loaded "
+    "at any cage angle, the load in the clearance), or the translations (x, y, z) or the tilts "
+    "(gx, gy) with their smallest eigenvalue below 1e-9 times their largest (each cage angle's K "
+    "is positive semi-definite, so the mean is singular only along a direction unsupported at "
+    "every cage angle)";
 
 }  // namespace
 
@@ -183,13 +207,18 @@ nlohmann::json stiffness_json(const StiffnessTable& t) {
             {"dofs", kStiffnessDofs},
             {"loads", kLoadNames},
             {"stiffness_definition",
-             "stiffness[i][j] = dF_i/dq_j, F = (Fx, Fy, Fz, Mx, My) the load on the inner ring, "
-             "q = (x, y, z, gx, gy) its displacement and tilts about +x and +y; y is up"},
+             "stiffness_at_cage_angle[i][j] = dF_i/dq_j at the equilibrium with ball 0 at the "
+             "case's cage angle (cage_angle), F = (Fx, Fy, Fz, Mx, My) the load on the inner "
+             "ring, q = (x, y, z, gx, gy) its displacement and tilts about +x and +y; y is up. "
+             "It depends on where the balls stand; a rotor model takes rotor.stiffness"},
             {"pressure_limit", kElasticPressureLimit},
             {"varied", varied},
             {"points", points},
             {"units", units_json(t.ball_pass_samples > 0)}};
-  if (t.ball_pass_samples > 0) j["ball_pass_definition"] = kBallPassDefinition;
+  if (t.ball_pass_samples > 0) {
+    j["ball_pass_definition"] = kBallPassDefinition;
+    j["rotor_definition"] = kRotorDefinition;
+  }
   require_finite(j);
   return j;
 }
@@ -255,9 +284,29 @@ std::string stiffness_note(const StiffnessPoint& p, const std::string& indent) {
            "operation.axial_load or operation.moment\n";
   if (n < 3)
     return indent + "only " + std::to_string(n) + " ball" + (n == 1 ? "" : "s") +
-           " loaded: K is singular (a ball stiffens the ring in two directions only); a "
-           "preload (operation.axial_load) or a larger load loads more balls\n";
+           " loaded at this cage angle: K here is singular (a ball stiffens the ring in two "
+           "directions only); " +
+           (p.rotor ? "a rotor model takes K averaged over one ball pass; " : "") +
+           "a preload (operation.axial_load) or a larger load loads more balls\n";
   return "";
+}
+
+std::string stiffness_rotor_warning(const StiffnessTable& t) {
+  const auto warned = [](const StiffnessRow& r) {
+    return r.point.rotor && !r.point.rotor->warnings.empty();
+  };
+  const auto first = std::find_if(t.rows.begin(), t.rows.end(), warned);
+  if (first == t.rows.end()) return "";
+  const auto n = std::count_if(t.rows.begin(), t.rows.end(), warned);
+  std::string out = t.keys.empty()
+                        ? "at the operating point"
+                        : "at " + std::to_string(n) + " of " + std::to_string(t.rows.size()) +
+                              " operating points (first: " + point_values(t, *first) + ")";
+  out +=
+      " the rotor stiffness (K averaged over one ball pass: stiffness_ross.csv, "
+      "stiffness.json's rotor) is singular or near it";
+  for (const std::string& w : first->point.rotor->warnings) out += "\n  " + w;
+  return out;
 }
 
 std::string stiffness_text(const StiffnessTable& t) {
@@ -277,11 +326,19 @@ std::string stiffness_text(const StiffnessTable& t) {
       << " urad, gy = " << fixed(q(4) * 1e6, 4) << " urad\n"
       << "Balls: " << p.loaded_balls() << " of " << p.solution.at.ball_loads.size()
       << " loaded, the largest load " << num(p.q_max()) << " N\n\n"
-      << stiffness_matrix_text(p.solution.at.stiffness);
-    o << stiffness_note(p) << ball_pass_text(t);
+      << "K at the case's cage angle (ball 0 at " << num(p.cage_angle) << " rad):\n"
+      << stiffness_matrix_text(p.solution.at.stiffness) << stiffness_note(p);
+    if (p.rotor)
+      o << "\nK averaged over one ball pass (" << p.rotor->samples
+        << " cage angles): the matrix a rotor model takes (stiffness_ross.csv, stiffness.json's "
+           "rotor.stiffness):\n"
+        << stiffness_matrix_text(p.rotor->stiffness);
+    o << ball_pass_text(t);
     return o.str();
   }
-  o << t.rows.size() << " operating points; the main terms (every term: stiffness.csv)\n";
+  o << t.rows.size()
+    << " operating points; the main terms at the case's cage angle (every term: stiffness.csv; "
+       "the rotor's, averaged over one ball pass: the mean below)\n";
   std::vector<std::string> head;
   for (const auto& k : t.keys) head.push_back(with_unit(k.key, k.unit));
   for (int i = 0; i < 5; ++i) head.push_back(with_unit(stiffness_name(i, i), stiffness_unit(i, i)));
@@ -306,8 +363,9 @@ std::string stiffness_text(const StiffnessTable& t) {
   const bool singular = std::any_of(t.rows.begin(), t.rows.end(),
                                     [](const auto& r) { return r.point.loaded_balls() < 3; });
   if (singular)
-    o << "note: where fewer than 3 balls are loaded K is singular (a ball stiffens the ring in two "
-         "directions only; no ball: K = 0)\n";
+    o << "note: where fewer than 3 balls are loaded at the case's cage angle K there is singular "
+         "(a "
+         "ball stiffens the ring in two directions only; no ball: K = 0)\n";
   return o.str() + ball_pass_text(t);
 }
 
@@ -327,10 +385,17 @@ std::string stiffness_ross_csv(const StiffnessTable& t) {
     if (rows[i]->speed == rows[i - 1]->speed)
       throw InputError("--format ross: operation.speed = " + format_number(rows[i]->speed) +
                        " rad/s appears twice; ROSS needs each speed once (N = 1, or FROM != TO)");
+  for (const StiffnessRow* r : rows)
+    if (!r->point.rotor)
+      throw InputError(
+          "--format ross: ROSS's table carries K averaged over one ball pass, which --ball-pass 0 "
+          "leaves out; give --ball-pass N (4 to " +
+          std::to_string(kMaxBallPassSamples) + ") or leave it at its default, " +
+          std::to_string(kBallPassSamples));
   std::ostringstream o;
   o << "frequency,kxx,kxy,kyx,kyy,cxx,cxy,cyx,cyy\n";
   for (const StiffnessRow* r : rows) {
-    const Matrix5& K = r->point.solution.at.stiffness;
+    const Matrix5& K = r->point.rotor->stiffness;  // the ball-pass mean
     o << stiffness_number(r->speed) << "," << stiffness_number(K(0, 0)) << ","
       << stiffness_number(K(0, 1)) << "," << stiffness_number(K(1, 0)) << ","
       << stiffness_number(K(1, 1)) << ",0,0,0,0\n";

@@ -33,11 +33,12 @@ FOLDER is recognised by its files:
   varied key as lines (one key), as heat maps (two keys), as points against each key (three and
   more);
 - a stiffness output (``bearing-sim stiffness --out FOLDER``: ``stiffness.csv``) gives
-  ``stiffness``: the bearing's stiffness terms against the first varied key, one panel per unit
-  (N/m: forces by displacements, N/rad: forces by tilts, N·m/rad: moments by tilts), each diagonal
-  term solid and the largest couplings above round-off dashed; a single point as bars; with
-  ``ball_pass`` in ``stiffness.json``, each diagonal term's range over one ball pass as a band
-  around its curve (a black bar on a single point's bar);
+  ``stiffness``: the bearing's stiffness terms at the case's cage angle against the first varied
+  key, one panel per unit (N/m: forces by displacements, N/rad: forces by tilts, N·m/rad: moments
+  by tilts), each diagonal term solid and the largest couplings above round-off dashed; a single
+  point as bars; with ``ball_pass`` in ``stiffness.json``, each diagonal term's range over one
+  ball pass as a band around its curve (a black bar on a single point's bar) and its mean over
+  it, the rotor's K (``rotor``), dotted (a black diamond on a single point's bar);
 - a contact output (``bearing-fem contact --out FOLDER``: ``force_approach.csv`` and
   ``contact.json``) gives ``force_approach``: the FE force against the approach on log axes with
   the Hertz law, and the FE/Hertz deviation of force, semi-axes and peak pressure per step;

@@ -1,6 +1,7 @@
-"""The figure of a `bearing-sim stiffness` folder: the bearing's stiffness terms against the varied
-key, one panel per unit, with each diagonal term's range over one ball pass as a band when
-stiffness.json has it (docs/rotordynamics.md)."""
+"""The figure of a `bearing-sim stiffness` folder: the bearing's stiffness terms at the case's cage
+angle against the varied key, one panel per unit, with each diagonal term's range over one ball
+pass as a band and its mean over it (what a rotor model takes) as a dotted line when stiffness.json
+has them (docs/rotordynamics.md)."""
 
 import csv
 import json
@@ -59,6 +60,9 @@ class Stiffness:
         # The diagonal terms' range over one ball pass: {name: (min, max)}, one value per row
         # (stiffness.json's points[].ball_pass, in stiffness.csv's row order); {} without it.
         self.ball_pass = {}
+        # Their mean over it, the rotor's K: {name: values} (points[].rotor.stiffness); {}
+        # without it.
+        self.rotor = {}
         self.ball_pass_samples = 0
         meta = os.path.join(folder, "stiffness.json")
         if os.path.exists(meta):
@@ -70,6 +74,7 @@ class Stiffness:
                 self._read_ball_pass(doc.get("points", []), len(rows) - 1)
             except (OSError, ValueError, KeyError, TypeError, IndexError):
                 self.ball_pass = {}
+                self.rotor = {}
 
     def _read_ball_pass(self, points, rows):
         passes = [p.get("ball_pass") for p in points]
@@ -80,6 +85,11 @@ class Stiffness:
             hi = np.array([float(b["max"][i][i]) for b in passes])
             self.ball_pass[term_name(i, i)] = (lo, hi)
         self.ball_pass_samples = int(passes[0]["samples"])
+        rotors = [p.get("rotor") for p in points]
+        if all(r is not None for r in rotors):
+            for i in range(5):
+                self.rotor[term_name(i, i)] = np.array([float(r["stiffness"][i][i])
+                                                        for r in rotors])
 
     def __getitem__(self, name):
         return self.columns[name][1]
@@ -136,6 +146,20 @@ def _draw_ball_pass(ax, s, name, x, color, joined):
     band.set_gid("ball_pass:" + name)
 
 
+def _draw_rotor(ax, s, name, x, color, joined):
+    """A diagonal term's mean over one ball pass, the rotor's K: a dotted curve along a joined
+    one, dots at unjoined points, a diamond on one point's bar (gid "rotor:<name>")."""
+    if name not in s.rotor:
+        return
+    mean = s.rotor[name]
+    if x is None:
+        mark, = ax.plot([name], mean, "D", color="k", ms=6)
+    else:
+        order = np.argsort(x, kind="stable")
+        mark, = ax.plot(x[order], mean[order], ":" if joined else ".", color=color, lw=1.5)
+    mark.set_gid("rotor:" + name)
+
+
 def _draw_panel(ax, s, unit, x, xlabel, joined=True):
     diagonal, off = panel_terms(s, unit)
     for name in diagonal + off:
@@ -146,12 +170,14 @@ def _draw_panel(ax, s, unit, x, xlabel, joined=True):
             bars.patches[0].set_gid("stiffness:" + name)
             if name in diagonal:
                 _draw_ball_pass(ax, s, name, None, None, joined)
+                _draw_rotor(ax, s, name, None, None, joined)
             continue
         order = np.argsort(x, kind="stable")
         line, = ax.plot(x[order], s[name][order], style, ms=4, label=name)
         line.set_gid("stiffness:" + name)
         if name in diagonal:
             _draw_ball_pass(ax, s, name, x, line.get_color(), joined)
+            _draw_rotor(ax, s, name, x, line.get_color(), joined)
     ax.set_ylabel("K [%s]" % SHOWN_UNIT[unit])
     ax.ticklabel_format(axis="y", style="sci", scilimits=(-3, 4))
     if x is not None:
@@ -187,8 +213,13 @@ def stiffness_figure(s):
             legend += ("; %s: the diagonal's range over one ball pass (%d cage angles)"
                        % ("black bars" if key is None else "bands" if len(varied) <= 1
                           else "vertical bars", s.ball_pass_samples))
-        fig.suptitle("%s — bearing stiffness K = dF/dq %s\n(%s)\n%s · 5-DOF static solution: "
-                     "rigid rings, centrifugal ball load at speed, no damping%s"
+        if s.rotor:
+            legend += ("; %s: its mean, the rotor's K"
+                       % ("diamonds" if key is None else "dotted" if len(varied) <= 1
+                          else "dots"))
+        fig.suptitle("%s — bearing stiffness K = dF/dq %s, at the case's cage angle\n(%s)\n"
+                     "%s · 5-DOF static solution: rigid rings, centrifugal ball load at speed, "
+                     "no damping%s"
                      % (s.name, against, legend, s.source, extra))
         fig.tight_layout()
     return fig

@@ -29,13 +29,14 @@ nlohmann::json ball_pass_units_json(const std::string& k_units);
 
 /// stiffness_ball_pass.csv, long form: per operating point and per K_ij (i ≤ j, stiffness.csv's
 /// order and names) the varied keys ("operation.speed [rad/s]"), "bpfo [Hz]", "entry" ("k_xx"),
-/// "unit" ("N/m": of every K value on the row), "static" (K at the case's cage phase:
-/// stiffness.csv's value), "mean", "min", "max", then "1xBPFO", "2xBPFO", … (each harmonic's
-/// amplitude); shortest round-trip numbers. Needs t.ball_pass_samples > 0.
+/// "unit" ("N/m": of every K value on the row), "at_cage_angle" (K at the case's cage angle:
+/// stiffness.csv's value), "mean" (over the pitch: the rotor's K, as in stiffness_ross.csv),
+/// "min", "max", then "1xBPFO", "2xBPFO", … (each harmonic's amplitude); shortest round-trip
+/// numbers. Needs t.ball_pass_samples > 0.
 std::string ball_pass_csv(const StiffnessTable& t);
 
 /// The readable table of the ball pass: per point the varied values, the BPFO [Hz], and for k_xx,
-/// k_yy, k_zz the min, max and 1×BPFO amplitude [N/m]; "" without a ball pass.
+/// k_yy, k_zz the min, mean, max and 1×BPFO amplitude [N/m]; "" without a ball pass.
 std::string ball_pass_text(const StiffnessTable& t);
 
 /// `info`'s lines under the matrix, each started by `indent`: the sample count, the BPFO, and per

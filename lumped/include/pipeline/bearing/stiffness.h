@@ -4,6 +4,10 @@
 // `bearing-sim stiffness` writes per operating point, what `info` shows and `bearing.stiffness`
 // returns.
 //
+// K is solved at the case's cage angle (ball 0 at the cage phase of its model inputs) and, with a
+// ball pass, at N cage angles through one ball pitch; what a linear rotor model takes is their
+// mean (rotor_coefficients.h), StiffnessPoint::rotor.
+//
 // Coordinates: q = (x, y, z, gx, gy) = (δx, δy, δz, γx, γy) [m, m, m, rad, rad], the inner ring's
 // displacement from the centred position and its tilts about +x and +y; F = (Fx, Fy, Fz, Mx, My)
 // [N, N, N, N m, N m] the load on it. K = ∂F/∂q, symmetric: N/m between forces and
@@ -20,6 +24,7 @@
 #include "bearing/ball_pass_stiffness.h"
 #include "bearing/case_file.h"
 #include "bearing/five_dof_static.h"
+#include "bearing/rotor_coefficients.h"
 
 namespace bearing {
 
@@ -54,11 +59,20 @@ constexpr int kMaxBallPassSamples = 4096;
 /// The 5-DOF static state at one operating point.
 struct StiffnessPoint {
   Vector5 load = Vector5::Zero();  ///< F = (Fx, Fy, Fz, Mx, My) [N, N, N, N m, N m]
-  FiveDofSolution solution;        ///< q [m, rad], K [N/m, N/rad, N m/rad], the balls
+  /// The case's cage angle φ₀: ball 0's angle from +x toward +y, the cage phase a run starts at
+  /// [rad]. `solution` is the equilibrium there.
+  double cage_angle = 0;
+  /// At the case's cage angle: q [m, rad], K [N/m, N/rad, N m/rad], the balls. K here depends on
+  /// where the balls stand (one ball under the load: no sideways stiffness); a rotor model takes
+  /// `rotor`, the ball-pass mean.
+  FiveDofSolution solution;
   /// K over one ball pitch from the case's cage phase (ball_pass_stiffness.h), each cage angle
   /// its own equilibrium under `load`, the bearing the same (the centrifugal load at speed):
   /// its samples[0] is solution.at.stiffness. Empty when not asked for.
   std::optional<BallPassStiffness> ball_pass;
+  /// With `ball_pass`: the coefficients a linear rotor model takes, K averaged over it, and the
+  /// warnings when that mean is singular or near it (rotor_coefficients.h).
+  std::optional<RotorCoefficients> rotor;
   /// The ball-pass frequency over the outer race at the case's speed, outer ring fixed, pure
   /// rolling at the free contact angle (kinematics.h) [Hz]: the period of K in time is 1/bpfo,
   /// its m-th harmonic at m × bpfo.
@@ -78,8 +92,9 @@ struct StiffnessPoint {
 
 /// Solves the case's operating point: five_dof_bearing_of(c) under five_dof_load_of(c), every
 /// DOF free; with `ball_pass_samples` > 0 also its ball pass at that many cage angles (4 …
-/// kMaxBallPassSamples; 0: the static matrix alone). Throws InputError (clearance, a sample count
-/// out of range) or SolverError (no equilibrium reached, at any cage angle).
+/// kMaxBallPassSamples; 0: the matrix at the case's cage angle alone) and its rotor coefficients.
+/// Throws InputError (clearance, a sample count out of range) or SolverError (no equilibrium
+/// reached, at any cage angle).
 StiffnessPoint stiffness_point(const Case& c, int ball_pass_samples = kBallPassSamples);
 
 }  // namespace bearing

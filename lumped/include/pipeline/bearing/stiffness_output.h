@@ -46,39 +46,51 @@ nlohmann::json stiffness_matrix_json(const Matrix5& K);
 
 /// stiffness.csv: per point the varied keys ("operation.axial_load [N]"), the 15 K_ij with
 /// i ≤ j ("k_xx [N/m]", …, "k_x_gx [N/rad]", …, "k_gy_gy [N*m/rad]"), the displacement ("x [m]",
-/// …, "gy [rad]"), "q_max [N]", "loaded_balls", then the load ("Fx [N]", …, "My [N*m]");
-/// shortest round-trip numbers.
+/// …, "gy [rad]"), "q_max [N]", "loaded_balls", then the load ("Fx [N]", …, "My [N*m]"); every
+/// one the equilibrium at the case's cage angle (the rotor's K, averaged over one ball pass: the
+/// "mean" of stiffness_ball_pass.csv); shortest round-trip numbers.
 std::string stiffness_csv(const StiffnessTable& t);
 
 /// stiffness.json: the case, what the model assumes, the DOFs and units, and per point the
-/// varied values, load, displacement, the full 5×5 matrix, each ball's angle, load and contact
-/// angle, the peak Hertz pressures and whether they are within the elastic limit, and with a ball
-/// pass its object (ball_pass_json). Throws SolverError naming the first non-finite value.
+/// varied values, load, the case's cage angle and at it the displacement, the full 5×5 matrix
+/// ("stiffness_at_cage_angle"), each ball's angle, load and contact angle, the peak Hertz
+/// pressures and whether they are within the elastic limit; with a ball pass its object
+/// (ball_pass_json) and "rotor": the rotor coefficients (rotor_coefficients.h: "samples",
+/// "stiffness" the ball-pass mean, "warnings"). Throws SolverError naming the first non-finite
+/// value.
 nlohmann::json stiffness_json(const StiffnessTable& t);
 
 /// The matrix K with row (Fx [N] … My [N*m]) and column (x [m] … gy [rad]) labels and the units of
 /// its blocks, each line started by `indent` (also `info`'s).
 std::string stiffness_matrix_text(const Matrix5& K, const std::string& indent = "  ");
 
-/// What the reader of a matrix must know when it is singular, as a line started by `indent`: no
-/// ball loaded (K = 0), or fewer than 3 (each ball stiffens the ring in two directions only);
-/// "" otherwise.
+/// What the reader of the matrix at the case's cage angle must know when it is singular, as a
+/// line started by `indent`: no ball loaded (K = 0), or fewer than 3 (each ball stiffens the ring
+/// in two directions only); "" otherwise.
 std::string stiffness_note(const StiffnessPoint& p, const std::string& indent = "  ");
+
+/// The warning `stiffness` gives when the rotor's K (the ball-pass mean, StiffnessPoint::rotor) is
+/// singular or near it at some points: how many, the first one's varied values, then that
+/// point's reasons (rotor_stiffness_warnings), one indented line each; "" when none is.
+std::string stiffness_rotor_warning(const StiffnessTable& t);
 
 /// The warning `stiffness` gives when points pass the elastic limit (StiffnessPoint::elastic):
 /// how many, the first one's varied values and pressure; "" when none does.
 std::string stiffness_elastic_warning(const StiffnessTable& t);
 
-/// The readable table: for one point its load, displacement, balls and matrix; for several, the
-/// main terms (diagonal, q_max, loaded balls) per point; then, with a ball pass, its table
-/// (ball_pass_text).
+/// The readable table: for one point its load, displacement, balls and matrix at the case's cage
+/// angle, and with a ball pass the rotor's matrix (the mean); for several, the main terms
+/// (diagonal, q_max, loaded balls) at the cage angle per point; then, with a ball pass, its table
+/// (ball_pass_text: with the mean of the main diagonal terms).
 std::string stiffness_text(const StiffnessTable& t);
 
 /// stiffness_ross.csv, the table ROSS's BearingElement reads (its from_table column names):
-/// frequency [rad/s] (operation.speed), kxx, kxy, kyx, kyy [N/m], cxx, cxy, cyx, cyy [N s/m], the
-/// damping columns 0 (the model has none); rows by ascending speed. ROSS interpolates over the
-/// speed, so the points may vary operation.speed only. Throws InputError naming --format ross,
-/// the varied keys or the repeated speed otherwise.
+/// frequency [rad/s] (operation.speed), kxx, kxy, kyx, kyy [N/m]: the radial block of K AVERAGED
+/// OVER ONE BALL PASS (StiffnessPoint::rotor, the ball pass's mean), not K at the case's cage
+/// angle; cxx, cxy, cyx, cyy [N s/m], the damping columns 0 (the model has none); rows by
+/// ascending speed. ROSS interpolates over the speed, so the points may vary operation.speed
+/// only. Throws InputError naming --format ross and the varied keys, the repeated speed, or
+/// --ball-pass 0 (no mean) otherwise.
 std::string stiffness_ross_csv(const StiffnessTable& t);
 
 /// Writes dir/stiffness.csv and stiffness.json, with a ball pass (t.ball_pass_samples > 0)
