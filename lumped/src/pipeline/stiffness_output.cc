@@ -28,6 +28,17 @@ std::string stiffness_number(double v) {
   return buf;
 }
 
+std::string damping_unit(int i, int j) {
+  const bool moment = i >= 3, tilt = j >= 3;
+  if (moment && tilt) return "N*m*s/rad";
+  if (moment) return "N*s";  // N m s per m
+  return tilt ? "N*s/rad" : "N*s/m";
+}
+
+std::string damping_name(int i, int j) {
+  return "c" + stiffness_name(i, j).substr(1);
+}
+
 nlohmann::json stiffness_matrix_json(const Matrix5& K) {
   nlohmann::json rows = nlohmann::json::array();
   for (int i = 0; i < 5; ++i) {
@@ -101,7 +112,22 @@ nlohmann::json point_json(const StiffnessTable& t, const StiffnessRow& r) {
       {"residual", s.residual},
       {"iterations", s.iterations}};
   if (r.point.ball_pass) j["ball_pass"] = ball_pass_json(r.point);
+  if (t.lubricated) {
+    j["damping"] = stiffness_matrix_json(s.at.damping);
+    if (r.point.ball_pass)
+      j["ball_pass"]["damping_mean"] = stiffness_matrix_json(r.point.ball_pass->damping_mean);
+  }
   return j;
+}
+
+nlohmann::json damping_units_json() {
+  nlohmann::json c = nlohmann::json::array();
+  for (int i = 0; i < 5; ++i) {
+    nlohmann::json row = nlohmann::json::array();
+    for (int j = 0; j < 5; ++j) row.push_back(damping_unit(i, j));
+    c.push_back(row);
+  }
+  return c;
 }
 
 nlohmann::json units_json(bool ball_pass) {
@@ -153,6 +179,10 @@ std::string stiffness_csv(const StiffnessTable& t) {
   header.push_back("q_max [N]");
   header.push_back("loaded_balls");
   for (int i = 0; i < 5; ++i) header.push_back(with_unit(kLoadNames[i], kStiffnessLoadUnits[i]));
+  if (t.lubricated)
+    for (int i = 0; i < 5; ++i)
+      for (int j = i; j < 5; ++j)
+        header.push_back(with_unit(damping_name(i, j), damping_unit(i, j)));
   for (std::size_t c = 0; c < header.size(); ++c) o << (c ? "," : "") << header[c];
   o << "\n";
   for (const StiffnessRow& r : t.rows) {
@@ -165,6 +195,9 @@ std::string stiffness_csv(const StiffnessTable& t) {
     cells.push_back(stiffness_number(r.point.q_max()));
     cells.push_back(std::to_string(r.point.loaded_balls()));
     for (int i = 0; i < 5; ++i) cells.push_back(stiffness_number(r.point.load(i)));
+    if (t.lubricated)
+      for (int i = 0; i < 5; ++i)
+        for (int j = i; j < 5; ++j) cells.push_back(stiffness_number(s.at.damping(i, j)));
     for (std::size_t c = 0; c < cells.size(); ++c) o << (c ? "," : "") << cells[c];
     o << "\n";
   }
@@ -177,9 +210,15 @@ nlohmann::json stiffness_json(const StiffnessTable& t) {
   for (const auto& k : t.keys) varied.push_back({{"key", k.key}, {"unit", k.unit}});
   json points = json::array();
   for (const StiffnessRow& r : t.rows) points.push_back(point_json(t, r));
+  json assumptions = kAssumptions;
+  if (t.lubricated)
+    assumptions[3] =
+        "[lubricant]: each contact's EHL film (Hamrock-Dowson h_c) in series with Hertz, and its "
+        "squeeze-film damping (isoviscous, a lower estimate); the films at the free contact angle "
+        "and the pure-rolling cage speed (ehl_film.h); ROSS's cxx..cyy are written as 0";
   json j = {{"case", {{"source", t.source}, {"bearing", t.bearing}}},
             {"model",
-             {{"name", "5-DOF static solution of the inner ring"}, {"assumptions", kAssumptions}}},
+             {{"name", "5-DOF static solution of the inner ring"}, {"assumptions", assumptions}}},
             {"dofs", kStiffnessDofs},
             {"loads", kLoadNames},
             {"stiffness_definition",
@@ -190,6 +229,14 @@ nlohmann::json stiffness_json(const StiffnessTable& t) {
             {"points", points},
             {"units", units_json(t.ball_pass_samples > 0)}};
   if (t.ball_pass_samples > 0) j["ball_pass_definition"] = kBallPassDefinition;
+  if (t.lubricated) {
+    j["damping_definition"] =
+        "damping[i][j] = dF_i/d(dq_j/dt), the squeeze films of the EHL contacts "
+        "(five_dof_static.h; "
+        "the film's stiffness is in series with Hertz in stiffness)";
+    j["units"]["damping"] = damping_units_json();
+    if (t.ball_pass_samples > 0) j["units"]["ball_pass.damping_mean"] = "units.damping";
+  }
   require_finite(j);
   return j;
 }
@@ -231,6 +278,26 @@ std::string stiffness_matrix_text(const Matrix5& K, const std::string& indent) {
   return o.str();
 }
 
+std::string damping_matrix_text(const Matrix5& C, const std::string& indent) {
+  std::ostringstream o;
+  o << indent << pad("C = dF/dq'", 12);
+  for (int j = 0; j < 5; ++j)
+    o << pad(with_unit(kStiffnessDofs[j], kStiffnessDofUnits[j] + std::string("/s")), 13);
+  o << "\n";
+  for (int i = 0; i < 5; ++i) {
+    o << indent << pad(with_unit(kLoadNames[i], kStiffnessLoadUnits[i]), 12);
+    for (int j = 0; j < 5; ++j) {
+      const double scale = block_scale(C, i >= 3, j >= 3);
+      o << pad(num(std::fabs(C(i, j)) <= 1e-12 * scale ? 0.0 : C(i, j)), 13);
+    }
+    o << "\n";
+  }
+  o << indent
+    << "units: N*s/m (Fx, Fy, Fz by x, y, z), N*s/rad (by gx, gy), N*s (Mx, My by x, y, z), "
+       "N*m*s/rad (Mx, My by gx, gy); the squeeze films of the EHL contacts\n";
+  return o.str();
+}
+
 std::string stiffness_elastic_warning(const StiffnessTable& t) {
   const auto beyond = [](const StiffnessRow& r) { return !r.point.elastic(); };
   const auto first = std::find_if(t.rows.begin(), t.rows.end(), beyond);
@@ -263,8 +330,9 @@ std::string stiffness_note(const StiffnessPoint& p, const std::string& indent) {
 std::string stiffness_text(const StiffnessTable& t) {
   std::ostringstream o;
   o << "Bearing stiffness (5-DOF static solution of the inner ring: rigid rings, the balls' "
-       "centrifugal load at the case's speed, no damping)\nCase: "
-    << t.source << (t.bearing.empty() ? "" : " (" + t.bearing + ")") << "\n";
+       "centrifugal load at the case's speed, "
+    << (t.lubricated ? "the EHL films and their squeeze damping" : "no damping")
+    << ")\nCase: " << t.source << (t.bearing.empty() ? "" : " (" + t.bearing + ")") << "\n";
   if (t.rows.size() == 1) {
     const StiffnessPoint& p = t.rows.front().point;
     const Vector5& q = p.solution.displacement;
@@ -278,6 +346,9 @@ std::string stiffness_text(const StiffnessTable& t) {
       << "Balls: " << p.loaded_balls() << " of " << p.solution.at.ball_loads.size()
       << " loaded, the largest load " << num(p.q_max()) << " N\n\n"
       << stiffness_matrix_text(p.solution.at.stiffness);
+    if (t.lubricated)
+      o << "(the EHL films in series with Hertz: [lubricant])\n"
+        << damping_matrix_text(p.solution.at.damping);
     o << stiffness_note(p) << ball_pass_text(t);
     return o.str();
   }
