@@ -27,6 +27,7 @@ API
               ``case.set(key, value)`` (as ``--set``), ``case.to_toml()``
 ``info``      ``bearing-sim info --json`` as a dict
 ``stiffness`` the bearing's 5x5 stiffness at the case's operating point (``bearing-sim stiffness``)
+``damping`` the 5x5 squeeze-film damping of the EHL contacts there (with ``[lubricant]``)
 ``ball_pass_stiffness`` that stiffness over one ball pass: its samples, mean, range and BPFO
               harmonics (the parametric excitation)
 ``modes``     a structure's natural modes (``bearing-fem modes``): frequencies, seat and sensor
@@ -75,7 +76,7 @@ else:
         "A numerical procedure that did not reach its answer, e.g. a blow-up; the message says "
         "why and what to change (bearing-sim exits with status 3).")
 
-__all__ = ["Case", "Result", "Analysis", "InputError", "SolverError", "info", "stiffness",
+__all__ = ["Case", "Result", "Analysis", "InputError", "SolverError", "info", "stiffness", "damping",
            "ball_pass_stiffness", "modes", "run", "sweep", "analyse", "presets", "keys", "keys_help"]
 
 
@@ -114,14 +115,33 @@ def stiffness(case):
     ``operation.axial_load`` and ``operation.moment``, whatever ``model.kind``. Units: K[:3, :3]
     N/m, K[:3, 3:] N/rad, K[3:, :3] N (= N*m/m), K[3:, 3:] N*m/rad; symmetric. Assumed: rigid
     rings, each ball's centrifugal load at ``operation.speed`` (``ball.centrifugal``, on by
-    default), the gyroscopic moment neglected, no damping. With no ball loaded (no load, the
-    ring in the clearance) K is 0. The displacement, ball loads and contact angles:
-    ``bearing.info(case)["stiffness"]``. Raises InputError or SolverError.
+    default), the gyroscopic moment neglected. With ``[lubricant]`` (and a speed: the film needs
+    entrainment) each contact's EHL film is in series with Hertz (its damping: :func:`damping`);
+    without it the contacts are dry. With no ball loaded (no load, the ring in the clearance) K
+    is 0. The displacement, ball loads and contact angles: ``bearing.info(case)["stiffness"]``.
+    Raises InputError or SolverError.
 
     >>> k = bearing.stiffness(bearing.Case.default().set("operation.axial_load", "100 N"))
     >>> k[1, 1]                                   # k_yy [N/m]
     """
     return _bearing.stiffness(_case(case))
+
+
+def damping(case):
+    """The bearing's damping at the case's operating point: a 5x5 NumPy array (float64).
+
+    ``case``: a :class:`Case`, or the path of a case file. C = dF/d(dq/dt) of the same 5-DOF
+    static solution as :func:`stiffness` (q, F as there): the squeeze films of the EHL contacts
+    (Reynolds' isoviscous squeeze at the central film, a lower estimate; the two contacts of a
+    ball in series), when the case has ``[lubricant]``; 0 without it (dry contacts) or at rest
+    (no entrainment, no film). Units: C[:3, :3] N*s/m, C[:3, 3:] N*s/rad, C[3:, :3] N*s,
+    C[3:, 3:] N*m*s/rad; symmetric. Raises InputError or SolverError.
+
+    >>> c = bearing.damping(bearing.Case.default().set("lubricant.viscosity", "0.02 Pa s")
+    ...     .set("lubricant.pressure_viscosity", "2e-8 1/Pa").set("lubricant.roughness", "0.1 um"))
+    >>> c[1, 1]                                   # c_yy [N*s/m]
+    """
+    return _bearing.damping(_case(case))
 
 
 def ball_pass_stiffness(case, samples=32):
@@ -140,6 +160,8 @@ def ball_pass_stiffness(case, samples=32):
     - ``mean``, ``min``, ``max`` [5, 5]: over the pitch, entry by entry;
     - ``harmonics`` [(N - 1) // 2, 5, 5]: ``harmonics[m - 1]`` each entry's amplitude at m x BPFO,
       (2/N) |sum_k K_k exp(-2*pi*i*m*k/N)|, every m < N/2 (m = 1 ... N/2 - 1 for an even N);
+    - ``damping_samples`` [N, 5, 5], ``damping_mean`` [5, 5]: the damping C (:func:`damping`;
+      0 without ``[lubricant]``) at each cage angle and its mean over the pitch, units K's times s;
     - ``bpfo``: the BPFO at ``operation.speed`` [Hz] (outer ring fixed, pure rolling), so
       harmonic m lies at m * bpfo.
 
