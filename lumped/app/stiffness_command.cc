@@ -150,7 +150,9 @@ int stiffness_command(const StiffnessOptions& o) {
     const bearing::SweepPoint p = grid ? grid->point(i) : bearing::SweepPoint{};
     table.rows.push_back(solve(base, p, samples, point_name(i, n, keys, p)));
   }
-  table.bearing = bearing::load_sweep_case(base, {}).bearing.designation;
+  const bearing::Case first = bearing::load_sweep_case(base, {});
+  table.bearing = first.bearing.designation;
+  table.lubricated = first.lubricant.enabled;
   bearing::write_stiffness(o.out_dir, table, o.format == "ross");
   // As run does: the result is written (a user may study it), with a warning.
   for (const std::string& warning :

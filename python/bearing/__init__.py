@@ -30,6 +30,8 @@ API
               pass: the matrix a rotor model takes (``bearing-sim stiffness --format ross``)
 ``stiffness_at_cage_angle`` the same at the case's cage angle alone (depends on where the balls
               stand: one ball under a light load gives no sideways stiffness)
+``damping`` the 5x5 squeeze-film damping of the EHL contacts (with ``[lubricant]``), averaged over
+              one ball pass as ``stiffness``; ``damping_at_cage_angle`` at the cage angle alone
 ``ball_pass_stiffness`` that stiffness over one ball pass: its samples, mean, range and BPFO
               harmonics (the parametric excitation)
 ``SingularStiffnessWarning`` (a RuntimeWarning): ``stiffness`` is singular or near it, and why
@@ -81,8 +83,9 @@ else:
         "why and what to change (bearing-sim exits with status 3).")
 
 __all__ = ["Case", "Result", "Analysis", "InputError", "SolverError", "SingularStiffnessWarning",
-           "info", "stiffness", "stiffness_at_cage_angle", "ball_pass_stiffness", "modes", "run",
-           "sweep", "analyse", "presets", "keys", "keys_help"]
+           "info", "stiffness", "stiffness_at_cage_angle", "damping", "damping_at_cage_angle",
+           "ball_pass_stiffness", "modes", "run", "sweep", "analyse", "presets", "keys",
+           "keys_help"]
 
 
 class SingularStiffnessWarning(RuntimeWarning):
@@ -143,10 +146,11 @@ def stiffness(case, samples=32):
     ``operation.axial_load`` and ``operation.moment``, whatever ``model.kind``. Units: K[:3, :3]
     N/m, K[:3, 3:] N/rad, K[3:, :3] N (= N*m/m), K[3:, 3:] N*m/rad; symmetric. Assumed: rigid
     rings, each ball's centrifugal load at ``operation.speed`` (``ball.centrifugal``, on by
-    default), the gyroscopic moment neglected, no damping. With no ball loaded (no load, the
-    ring in the clearance) K is 0. Raises TypeError (``samples`` not an integer), InputError
-    (``samples`` out of range, the case) or SolverError (an equilibrium not reached at a cage
-    angle).
+    default), the gyroscopic moment neglected. With ``[lubricant]`` (and a speed: the film needs
+    entrainment) each contact's EHL film is in series with Hertz (its damping: :func:`damping`);
+    without it the contacts are dry. With no ball loaded (no load, the ring in the clearance) K
+    is 0. Raises TypeError (``samples`` not an integer), InputError (``samples`` out of range,
+    the case) or SolverError (an equilibrium not reached at a cage angle).
 
     >>> k = bearing.stiffness(bearing.Case.default().set("operation.axial_load", "100 N"))
     >>> k[1, 1]                                   # k_yy [N/m], averaged over one ball pass
@@ -172,6 +176,33 @@ def stiffness_at_cage_angle(case):
     return _bearing.stiffness_at_cage_angle(_case(case))
 
 
+def damping(case, samples=32):
+    """The bearing's damping for a rotor model: C at the case's operating point AVERAGED OVER ONE
+    BALL PASS (as :func:`stiffness`), a 5x5 NumPy array (float64); ROSS's cxx, cxy, cyx, cyy of
+    ``bearing-sim stiffness --format ross`` are ``C[:2, :2]``, stiffness.json's
+    ``rotor.damping`` the whole. At the case's cage angle alone: :func:`damping_at_cage_angle`.
+
+    ``case``: a :class:`Case`, or the path of a case file. C = dF/d(dq/dt) of the same 5-DOF
+    static solution as :func:`stiffness` (q, F as there), at each cage angle: the squeeze films of the EHL contacts
+    (Reynolds' isoviscous squeeze at the central film, a lower estimate; the two contacts of a
+    ball in series), when the case has ``[lubricant]``; 0 without it (dry contacts) or at rest
+    (no entrainment, no film). Units: C[:3, :3] N*s/m, C[:3, 3:] N*s/rad, C[3:, :3] N*s,
+    C[3:, 3:] N*m*s/rad; symmetric. Raises InputError or SolverError.
+
+    >>> c = bearing.damping(bearing.Case.default().set("lubricant.viscosity", "0.02 Pa s")
+    ...     .set("lubricant.pressure_viscosity", "2e-8 1/Pa").set("lubricant.roughness", "0.1 um"))
+    >>> c[1, 1]                                   # c_yy [N*s/m]
+    """
+    return _bearing.damping(_case(case), _operator.index(samples))
+
+
+def damping_at_cage_angle(case):
+    """The damping C of :func:`damping` at the case's operating point AND CAGE ANGLE alone (ball 0
+    at the case's cage phase): a 5x5 NumPy array, stiffness.json's ``damping_at_cage_angle``.
+    Units as :func:`damping`'s. Raises InputError or SolverError."""
+    return _bearing.damping_at_cage_angle(_case(case))
+
+
 def ball_pass_stiffness(case, samples=32):
     """The bearing's stiffness over one ball pass: a dict of NumPy arrays (float64, SI).
 
@@ -189,6 +220,8 @@ def ball_pass_stiffness(case, samples=32):
       ``stiffness(case, samples)``, the matrix a rotor model takes);
     - ``harmonics`` [(N - 1) // 2, 5, 5]: ``harmonics[m - 1]`` each entry's amplitude at m x BPFO,
       (2/N) |sum_k K_k exp(-2*pi*i*m*k/N)|, every m < N/2 (m = 1 ... N/2 - 1 for an even N);
+    - ``damping_samples`` [N, 5, 5], ``damping_mean`` [5, 5]: the damping C (:func:`damping`;
+      0 without ``[lubricant]``) at each cage angle and its mean over the pitch, units K's times s;
     - ``bpfo``: the BPFO at ``operation.speed`` [Hz] (outer ring fixed, pure rolling), so
       harmonic m lies at m * bpfo.
 

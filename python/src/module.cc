@@ -310,6 +310,8 @@ py::dict ball_pass_stiffness(const CaseHandle& c, int samples) {
   out["min"] = matrix_array(b.min);
   out["max"] = matrix_array(b.max);
   out["harmonics"] = matrices_array(b.harmonics);
+  out["damping_samples"] = matrices_array(b.damping_samples);
+  out["damping_mean"] = matrix_array(b.damping_mean);
   out["bpfo"] = p.bpfo;
   return out;
 }
@@ -389,6 +391,28 @@ PYBIND11_MODULE(_bearing, m) {
       py::arg("case"),
       "The 5x5 stiffness K = dF/dq at the case's operating point and cage angle "
       "(bearing/stiffness.h), SI.");
+  m.def(
+      "damping",
+      [](const CaseHandle& c, int samples) {
+        return matrix_array(point_with_ball_pass(c, samples).rotor->damping);
+      },
+      py::arg("case"), py::arg("samples") = bearing::kBallPassSamples,
+      "The 5x5 damping C = dF/d(dq/dt) of the EHL squeeze films at the case's operating point "
+      "averaged over one ball pass at `samples` cage angles (bearing/rotor_coefficients.h), SI; "
+      "0 without [lubricant].");
+  m.def(
+      "damping_at_cage_angle",
+      [](const CaseHandle& c) {
+        const bearing::Case input = c.resolved;
+        bearing::StiffnessPoint p;
+        {
+          py::gil_scoped_release release;
+          p = bearing::stiffness_point(input, 0);
+        }
+        return matrix_array(p.solution.at.damping);
+      },
+      py::arg("case"),
+      "The 5x5 damping C at the case's operating point and cage angle (five_dof_static.h), SI.");
   m.def("ball_pass_stiffness", &ball_pass_stiffness, py::arg("case"),
         py::arg("samples") = bearing::kBallPassSamples,
         "K over one ball pass at `samples` cage angles (bearing/ball_pass_stiffness.h), SI: a "

@@ -21,8 +21,11 @@ BallPassStiffness ball_pass_stiffness(const FiveDofBearing& b, const Vector5& lo
     FiveDofBearing at = b;
     at.phase = b.phase + pitch * k / samples;
     r.cage_angles.push_back(at.phase);
-    r.samples.push_back(solve_five_dof(at, load, held).at.stiffness);
+    const FiveDofSolution sol = solve_five_dof(at, load, held);
+    r.samples.push_back(sol.at.stiffness);
+    r.damping_samples.push_back(sol.at.damping);
   }
+  for (const Matrix5& C : r.damping_samples) r.damping_mean += C / samples;
   r.min = r.max = r.samples[0];
   for (const Matrix5& K : r.samples) {
     r.mean += K / samples;

@@ -7,6 +7,7 @@
 
 #include "bearing/constants.h"
 #include "bearing/errors.h"
+#include "bearing/film_law.h"
 #include "bearing/kinematics.h"
 #include "bearing/numerics/newton.h"
 #include "bearing/units.h"
@@ -24,22 +25,40 @@ Vector5 scales(const FiveDofBearing& b) {
 }
 
 // One contact's load Q = K δ^n and its 2×2 Hessian n K δ^{n−1} e eᵀ + (Q/L) t tᵀ along the
-// line of length L and direction e (five_dof_static.h); nothing where δ ≤ 0.
+// line of length L and direction e (five_dof_static.h); nothing where δ ≤ 0. With a film
+// (film_H > 0) FilmLaw's Q(δ), its tangent in place of n K δ^{n−1} and its energy.
 struct Contact {
-  double delta = 0, Q = 0;
+  double delta = 0, Q = 0, energy = 0;
   Eigen::Vector2d e = Eigen::Vector2d::Zero();
   Eigen::Matrix2d H = Eigen::Matrix2d::Zero();
 };
-Contact contact(const Eigen::Vector2d& line, double offset, double K, double n) {
+Contact contact(const Eigen::Vector2d& line, double offset, double K, double n, double film_H = 0) {
   Contact c;
   const double L = line.norm();
   c.delta = L - offset;
   c.e = line / L;
-  if (c.delta <= 0) return c;
-  c.Q = K * std::pow(c.delta, n);
+  double tangent = 0;
+  if (film_H == 0) {
+    if (c.delta <= 0) return c;
+    c.Q = K * std::pow(c.delta, n);
+    c.energy = c.Q * c.delta / (n + 1);
+    tangent = n * c.Q / c.delta;
+  } else {
+    const FilmLaw law{K, n, film_H};
+    c.Q = law.load(c.delta);
+    if (!(c.Q > 0)) return c;
+    c.energy = law.energy(c.Q);
+    tangent = law.tangent(c.Q);
+  }
   const Eigen::Vector2d t(-c.e(1), c.e(0));
-  c.H = (n * c.Q / c.delta) * c.e * c.e.transpose() + (c.Q / L) * t * t.transpose();
+  c.H = tangent * c.e * c.e.transpose() + (c.Q / L) * t * t.transpose();
   return c;
+}
+
+// The squeeze film's damping c = S / h_c(Q) = S Q^e / C of one contact [N s/m] (0 when dry).
+double squeeze_damping(double S, double film_C, double Q) {
+  if (film_C == 0 || S == 0 || !(Q > 0)) return 0.0;
+  return S * std::pow(Q, kCentralFilmLoadExponent) / film_C;
 }
 
 // One ball between the races at speed, its inner groove centre at `a` from the outer one (radial,
@@ -48,6 +67,7 @@ struct BallAtSpeed {
   Contact inner, outer;
   double energy = 0;
   Eigen::Matrix2d ring_hessian = Eigen::Matrix2d::Zero();  // H_i − H_i (H_o + H_i)⁻¹ H_i
+  Eigen::Matrix2d ring_damping = Eigen::Matrix2d::Zero();  // (I−P)ᵀ D_i (I−P) + Pᵀ D_o P
 };
 BallAtSpeed ball_at_speed(const FiveDofBearing& b, const Eigen::Vector2d& a) {
   const double ni = b.inner_exponent, no = b.outer_exponent, Fc = b.centrifugal;
@@ -61,11 +81,10 @@ BallAtSpeed ball_at_speed(const FiveDofBearing& b, const Eigen::Vector2d& a) {
   if (squeeze > 0)
     p = a.normalized() * (b.outer_offset + squeeze / (1 + std::pow(b.outer_K / b.inner_K, 1 / no)));
   const auto evaluate = [&](const Eigen::Vector2d& at) {
-    const Contact o = contact(at, b.outer_offset, b.outer_K, no);
-    const Contact i = contact(a - at, b.inner_offset, b.inner_K, ni);
+    const Contact o = contact(at, b.outer_offset, b.outer_K, no, b.outer_film_H);
+    const Contact i = contact(a - at, b.inner_offset, b.inner_K, ni, b.inner_film_H);
     numerics::PotentialPoint<2> pt;
-    pt.value = o.Q * std::max(o.delta, 0.0) / (no + 1) + i.Q * std::max(i.delta, 0.0) / (ni + 1) -
-               Fc * at(0);
+    pt.value = o.energy + i.energy - Fc * at(0);
     pt.gradient = o.Q * o.e - i.Q * i.e - Fc * radial;
     pt.hessian = o.H + i.H;
     return pt;
@@ -83,12 +102,22 @@ BallAtSpeed ball_at_speed(const FiveDofBearing& b, const Eigen::Vector2d& a) {
         "force balance " +
         format_number(at.gradient.norm()) + " N against F_c = " + format_number(Fc) + " N after " +
         std::to_string(iterations) + " iterations)");
-  ball.outer = contact(p, b.outer_offset, b.outer_K, no);
-  ball.inner = contact(a - p, b.inner_offset, b.inner_K, ni);
+  ball.outer = contact(p, b.outer_offset, b.outer_K, no, b.outer_film_H);
+  ball.inner = contact(a - p, b.inner_offset, b.inner_K, ni, b.inner_film_H);
   ball.energy = at.value;  // min over p of E: its gradient in a is the inner contact force
-  if (ball.inner.Q > 0)
-    ball.ring_hessian =
-        ball.inner.H - ball.inner.H * (ball.outer.H + ball.inner.H).ldlt().solve(ball.inner.H);
+  if (!(ball.inner.Q > 0)) return ball;
+  ball.ring_hessian =
+      ball.inner.H - ball.inner.H * (ball.outer.H + ball.inner.H).ldlt().solve(ball.inner.H);
+  const double ci = squeeze_damping(b.inner_squeeze, b.inner_film_H, ball.inner.Q);
+  const double co = squeeze_damping(b.outer_squeeze, b.outer_film_H, ball.outer.Q);
+  if (ci > 0 || co > 0) {
+    // The ball follows the ring as its springs place it (ṗ = P ȧ); each damper dissipates along
+    // its own line (five_dof_static.h).
+    const Eigen::Matrix2d P = (ball.outer.H + ball.inner.H).ldlt().solve(ball.inner.H);
+    const Eigen::Matrix2d I_P = Eigen::Matrix2d::Identity() - P;
+    const Eigen::Vector2d ri = I_P.transpose() * ball.inner.e, ro = P.transpose() * ball.outer.e;
+    ball.ring_damping = ci * ri * ri.transpose() + co * ro * ro.transpose();
+  }
   return ball;
 }
 
@@ -129,6 +158,17 @@ FiveDofBearing five_dof_bearing(const Bearing& b, const ContactConstants& c, dou
   return f;
 }
 
+void add_films(FiveDofBearing& b, const BallFilms& films) {
+  // S = c h_c, the same at every load (ehl_film.h); no entrainment: no film, a dry contact.
+  const auto set = [](const FilmContact& f, double& C, double& S) {
+    C = f.entrainment_speed > 0 ? f.central_coefficient() : 0.0;
+    S = C > 0 ? f.damping(1.0) * f.central_thickness(1.0) : 0.0;
+  };
+  set(films.inner, b.inner_film_H, b.inner_squeeze);
+  set(films.outer, b.outer_film_H, b.outer_squeeze);
+  b.film_H = b.inner_film_H + b.outer_film_H;
+}
+
 namespace {
 
 // Ball j at speed (ball_at_speed) into p: its force Bᵀ Q_i e_i on the ring and its condensed
@@ -148,6 +188,7 @@ void add_ball_at_speed(const FiveDofBearing& b, const Eigen::Vector2d& a, double
   if (ball.inner.Q <= 0) return;
   p.force += ball.inner.Q * B.transpose() * ball.inner.e;
   p.stiffness.triangularView<Eigen::Lower>() += B.transpose() * ball.ring_hessian * B;
+  if (b.film_H > 0) p.damping += B.transpose() * ball.ring_damping * B;
 }
 
 }  // namespace
@@ -181,20 +222,38 @@ FiveDofPoint five_dof_point(const FiveDofBearing& b, const Vector5& q) {
       add_ball_at_speed(b, Eigen::Vector2d(u + r, ax), c, s, j, p);
       continue;
     }
-    if (delta <= 0) continue;
-    const double Q = b.K * std::pow(delta, n);
+    double Q = 0, tangent = 0;  // the load and dQ/dδ: Hertz's, or with the film in series
+    if (b.film_H == 0) {
+      if (delta <= 0) continue;
+      Q = b.K * std::pow(delta, n);
+      p.energy += Q * delta / (n + 1);
+      tangent = n * Q / delta;
+    } else {
+      const FilmLaw law{b.K, n, b.film_H};
+      Q = law.load(delta);
+      if (!(Q > 0)) continue;
+      p.energy += law.energy(Q);
+      tangent = law.tangent(Q);
+    }
     p.ball_loads[j] = Q;
     p.outer_loads[j] = Q;
-    p.energy += Q * delta / (n + 1);
     Vector5 g, h;  // Bᵀ e and Bᵀ t
     g << ca * c, ca * s, sa, sa * R * s, -sa * R * c;
     h << -sa * c, -sa * s, ca, ca * R * s, -ca * R * c;
     p.force += Q * g;
     // The lower triangle only, mirrored below: K is symmetric to the bit, as theory says.
-    p.stiffness.selfadjointView<Eigen::Lower>().rankUpdate(g, n * Q / delta);
+    p.stiffness.selfadjointView<Eigen::Lower>().rankUpdate(g, tangent);
     p.stiffness.selfadjointView<Eigen::Lower>().rankUpdate(h, Q / L);
+    if (b.film_H > 0) {
+      // The two squeeze films in series on the ball's approach (film_law.h).
+      const double ci = squeeze_damping(b.inner_squeeze, b.inner_film_H, Q);
+      const double co = squeeze_damping(b.outer_squeeze, b.outer_film_H, Q);
+      if (ci > 0 && co > 0)
+        p.damping.selfadjointView<Eigen::Lower>().rankUpdate(g, ci * co / (ci + co));
+    }
   }
   p.stiffness = p.stiffness.selfadjointView<Eigen::Lower>();
+  p.damping = p.damping.selfadjointView<Eigen::Lower>();
   return p;
 }
 
@@ -239,7 +298,8 @@ FiveDofSolution solve_five_dof(const FiveDofBearing& b, const Vector5& load, con
   sol.at = five_dof_point(b, sol.displacement);
   sol.residual = at.gradient.norm() / Fn;
   // A NaN anywhere in q or K fails here too: no non-finite number leaves the solution.
-  if (!(sol.residual <= 1e-10) || !sol.displacement.allFinite() || !sol.at.stiffness.allFinite())
+  if (!(sol.residual <= 1e-10) || !sol.displacement.allFinite() || !sol.at.stiffness.allFinite() ||
+      !sol.at.damping.allFinite())
     throw SolverError("5-DOF static solution: the load (" + format_number(load(0)) + ", " +
                       format_number(load(1)) + ", " + format_number(load(2)) + " N; " +
                       format_number(load(3)) + ", " + format_number(load(4)) +

@@ -93,6 +93,9 @@ InfoReport compute_info(const Case& c, InfoParts parts) {
   } catch (const SolverError& e) {
     r.stiffness_error = e.what();
   }
+  if (c.lubricant.enabled)
+    r.film = r.stiffness ? film_info(c, r.contact, r.stiffness->q_max(), r.stiffness->outer_q_max())
+                         : film_info(c, r.contact, r.peak_load, r.peak_load);
   return r;
 }
 
@@ -126,6 +129,20 @@ nlohmann::json stiffness_info_json(const InfoReport& r) {
     j["ball_pass"] = ball_pass_json(p);
   else
     j["ball_pass"] = {{"error", r.ball_pass_error}};
+  if (r.input.lubricant.enabled) {
+    json damping = json::array(), damping_units = json::array();
+    for (int i = 0; i < 5; ++i) {
+      json row = json::array(), unit = json::array();
+      for (int k = 0; k < 5; ++k) {
+        row.push_back(p.solution.at.damping(i, k));
+        unit.push_back(damping_unit(i, k));
+      }
+      damping.push_back(row);
+      damping_units.push_back(unit);
+    }
+    j["damping"] = damping;
+    j["damping_units"] = damping_units;
+  }
   return j;
 }
 
@@ -228,6 +245,12 @@ nlohmann::json info_json(const InfoReport& r) {
   }
   if (r.input.slip.enabled()) add_slip_units(j["units"]);
   j["stiffness"] = stiffness_info_json(r);
+  if (r.film) {
+    j["film"] = film_json(*r.film);
+    add_film_units(j["units"]);
+  }
+  if (r.stiffness && r.input.lubricant.enabled)
+    j["units"]["stiffness.damping"] = "stiffness.damping_units";
   if (r.stiffness) {
     j["units"]["stiffness.load"] = kStiffnessLoadUnits;
     j["units"]["stiffness.displacement"] = kStiffnessDofUnits;
@@ -340,9 +363,10 @@ std::string housing_text(const InfoReport& r) {
 std::string stiffness_info_text(const InfoReport& r) {
   std::ostringstream o;
   o << "\nStiffness at the operating point and the case's cage angle (5-DOF static solution: "
-       "rigid rings, the balls' centrifugal load at the case's speed, no damping; every load of "
-       "the case, whatever model.kind; a rotor model takes K averaged over one ball pass: "
-       "`bearing-sim stiffness --format ross`)\n";
+       "rigid rings, the balls' centrifugal load at the case's speed, "
+    << (r.input.lubricant.enabled ? "the EHL films and their squeeze damping" : "no damping")
+    << "; every load of the case, whatever model.kind; a rotor model takes K averaged over one "
+       "ball pass: `bearing-sim stiffness --format ross`)\n";
   if (!r.stiffness) return o.str() + "  not available: " + r.stiffness_error + "\n";
   const StiffnessPoint& p = *r.stiffness;
   const Vector5& q = p.solution.displacement;
@@ -354,7 +378,11 @@ std::string stiffness_info_text(const InfoReport& r) {
     << " urad, gy = " << fixed(q(4) * 1e6, 4) << " urad; " << p.loaded_balls()
     << (p.loaded_balls() == 1 ? " ball" : " balls") << " loaded, the largest " << num(p.q_max())
     << " N\n"
-    << stiffness_matrix_text(p.solution.at.stiffness) << stiffness_note(p);
+    << stiffness_matrix_text(p.solution.at.stiffness);
+  if (r.input.lubricant.enabled)
+    o << "  (the EHL films in series with Hertz: [lubricant])\n"
+      << damping_matrix_text(p.solution.at.damping);
+  o << stiffness_note(p);
   if (p.ball_pass)
     o << ball_pass_diagonal_text(p);
   else
@@ -483,6 +511,7 @@ std::string info_text(const InfoReport& r) {
   o << defects_text(r);
   o << housing_text(r);
   if (r.input.slip.enabled()) o << "\n" << slip_line(r.input.slip, r.frequencies.bpfo);
+  if (r.film) o << film_text(*r.film, c.lubricant);
   o << stiffness_info_text(r);
   return o.str();
 }

@@ -24,6 +24,7 @@ RotorCoefficients rotor_coefficients(const BallPassStiffness& pass) {
   RotorCoefficients r;
   r.samples = static_cast<int>(pass.samples.size());
   r.stiffness = ball_pass_mean(pass.samples);
+  if (!pass.damping_samples.empty()) r.damping = ball_pass_mean(pass.damping_samples);
   r.warnings = rotor_stiffness_warnings(r.stiffness);
   return r;
 }

@@ -35,9 +35,15 @@ Vector5 load_of(const Case& c, const ModelInputs& in) {
 
 // At the case's speed each ball carries its centrifugal load when ball.centrifugal is on (the
 // default), so K changes with operation.speed; at rest, or with it off, it does not.
+// With [lubricant], each contact's EHL film at the case's speed, the cage at its pure-rolling
+// speed (ehl_film.h): at rest there is no entrainment, and the contacts stay dry.
 FiveDofBearing bearing_of(const ModelInputs& in) {
   const double Fc = in.centrifugal ? ball_centrifugal_load(in.bearing, in.inner_speed) : 0.0;
-  return five_dof_bearing(in.bearing, in.contact, in.cage_phase, Fc);
+  FiveDofBearing b = five_dof_bearing(in.bearing, in.contact, in.cage_phase, Fc);
+  if (in.lubricated)
+    add_films(b, ball_films(in.bearing, in.contact, in.lubricant, in.inner_speed,
+                            cage_speed(in.bearing, in.inner_speed)));
+  return b;
 }
 
 }  // namespace
@@ -61,8 +67,13 @@ double StiffnessPoint::outer_q_max() const {
 }
 
 int StiffnessPoint::loaded_balls() const {
+  // δ_j > 0 as well: with a film every ball carries some load, and a ball counts where its Hertz
+  // deflection exceeds its film (dry, Q_j > 0 implies δ_j > 0: the count is Q_j > 0's).
   const auto& q = solution.at.ball_loads;
-  return static_cast<int>(std::count_if(q.begin(), q.end(), [](double v) { return v > 0; }));
+  const auto& d = solution.at.approaches;
+  int n = 0;
+  for (std::size_t j = 0; j < q.size(); ++j) n += q[j] > 0 && d[j] > 0;
+  return n;
 }
 
 bool StiffnessPoint::elastic() const {

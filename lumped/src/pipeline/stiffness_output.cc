@@ -28,6 +28,17 @@ std::string stiffness_number(double v) {
   return buf;
 }
 
+std::string damping_unit(int i, int j) {
+  const bool moment = i >= 3, tilt = j >= 3;
+  if (moment && tilt) return "N*m*s/rad";
+  if (moment) return "N*s";  // N m s per m
+  return tilt ? "N*s/rad" : "N*s/m";
+}
+
+std::string damping_name(int i, int j) {
+  return "c" + stiffness_name(i, j).substr(1);
+}
+
 nlohmann::json stiffness_matrix_json(const Matrix5& K) {
   nlohmann::json rows = nlohmann::json::array();
   for (int i = 0; i < 5; ++i) {
@@ -78,11 +89,13 @@ nlohmann::json vector_json(const Vector5& v) {
   return nlohmann::json(std::vector<double>(v.data(), v.data() + 5));
 }
 
-// A point's rotor coefficients; a damping matrix, once there is one, beside "stiffness".
-nlohmann::json rotor_json(const RotorCoefficients& c) {
-  return {{"samples", c.samples},
-          {"stiffness", stiffness_matrix_json(c.stiffness)},
-          {"warnings", c.warnings}};
+// A point's rotor coefficients: K and, with [lubricant], C beside it.
+nlohmann::json rotor_json(const RotorCoefficients& c, bool lubricated) {
+  nlohmann::json j = {{"samples", c.samples},
+                      {"stiffness", stiffness_matrix_json(c.stiffness)},
+                      {"warnings", c.warnings}};
+  if (lubricated) j["damping"] = stiffness_matrix_json(c.damping);
+  return j;
 }
 
 nlohmann::json point_json(const StiffnessTable& t, const StiffnessRow& r) {
@@ -109,8 +122,23 @@ nlohmann::json point_json(const StiffnessTable& t, const StiffnessRow& r) {
       {"residual", s.residual},
       {"iterations", s.iterations}};
   if (r.point.ball_pass) j["ball_pass"] = ball_pass_json(r.point);
-  if (r.point.rotor) j["rotor"] = rotor_json(*r.point.rotor);
+  if (t.lubricated) {
+    j["damping_at_cage_angle"] = stiffness_matrix_json(s.at.damping);
+    if (r.point.ball_pass)
+      j["ball_pass"]["damping_mean"] = stiffness_matrix_json(r.point.ball_pass->damping_mean);
+  }
+  if (r.point.rotor) j["rotor"] = rotor_json(*r.point.rotor, t.lubricated);
   return j;
+}
+
+nlohmann::json damping_units_json() {
+  nlohmann::json c = nlohmann::json::array();
+  for (int i = 0; i < 5; ++i) {
+    nlohmann::json row = nlohmann::json::array();
+    for (int j = 0; j < 5; ++j) row.push_back(damping_unit(i, j));
+    c.push_back(row);
+  }
+  return c;
 }
 
 nlohmann::json units_json(bool ball_pass) {
@@ -150,7 +178,8 @@ constexpr std::array<const char*, 5> kAssumptions = {
     "at operation.speed each ball carries its centrifugal load m_b w_c^2 d_m/2 (ball.centrifugal, "
     "on by default) and has its own inner and outer contact angles (Jones); the gyroscopic "
     "moment is neglected",
-    "no damping: the bearing's damping is not modelled (ROSS's cxx..cyy are written as 0)",
+    "no damping: dry contacts, the bearing's damping is not modelled without [lubricant] (ROSS's "
+    "cxx..cyy are written as 0)",
     "K = dF/dq is the tangent stiffness at the equilibrium under the load F, symmetric; the "
     "force the bearing exerts on the ring for a small extra displacement dq is -K dq"};
 
@@ -177,6 +206,10 @@ std::string stiffness_csv(const StiffnessTable& t) {
   header.push_back("q_max [N]");
   header.push_back("loaded_balls");
   for (int i = 0; i < 5; ++i) header.push_back(with_unit(kLoadNames[i], kStiffnessLoadUnits[i]));
+  if (t.lubricated)
+    for (int i = 0; i < 5; ++i)
+      for (int j = i; j < 5; ++j)
+        header.push_back(with_unit(damping_name(i, j), damping_unit(i, j)));
   for (std::size_t c = 0; c < header.size(); ++c) o << (c ? "," : "") << header[c];
   o << "\n";
   for (const StiffnessRow& r : t.rows) {
@@ -189,6 +222,9 @@ std::string stiffness_csv(const StiffnessTable& t) {
     cells.push_back(stiffness_number(r.point.q_max()));
     cells.push_back(std::to_string(r.point.loaded_balls()));
     for (int i = 0; i < 5; ++i) cells.push_back(stiffness_number(r.point.load(i)));
+    if (t.lubricated)
+      for (int i = 0; i < 5; ++i)
+        for (int j = i; j < 5; ++j) cells.push_back(stiffness_number(s.at.damping(i, j)));
     for (std::size_t c = 0; c < cells.size(); ++c) o << (c ? "," : "") << cells[c];
     o << "\n";
   }
@@ -201,9 +237,17 @@ nlohmann::json stiffness_json(const StiffnessTable& t) {
   for (const auto& k : t.keys) varied.push_back({{"key", k.key}, {"unit", k.unit}});
   json points = json::array();
   for (const StiffnessRow& r : t.rows) points.push_back(point_json(t, r));
+  json assumptions = kAssumptions;
+  if (t.lubricated)
+    assumptions[3] =
+        "[lubricant]: each contact's EHL film (Hamrock-Dowson h_c) in series with Hertz, and its "
+        "squeeze-film damping (isoviscous, a lower estimate); the films at the free contact angle "
+        "and the pure-rolling cage speed (ehl_film.h); ROSS's cxx..cyy are C averaged over one "
+        "ball "
+        "pass (rotor.damping)";
   json j = {{"case", {{"source", t.source}, {"bearing", t.bearing}}},
             {"model",
-             {{"name", "5-DOF static solution of the inner ring"}, {"assumptions", kAssumptions}}},
+             {{"name", "5-DOF static solution of the inner ring"}, {"assumptions", assumptions}}},
             {"dofs", kStiffnessDofs},
             {"loads", kLoadNames},
             {"stiffness_definition",
@@ -218,6 +262,17 @@ nlohmann::json stiffness_json(const StiffnessTable& t) {
   if (t.ball_pass_samples > 0) {
     j["ball_pass_definition"] = kBallPassDefinition;
     j["rotor_definition"] = kRotorDefinition;
+  }
+  if (t.lubricated) {
+    j["damping_definition"] =
+        "damping_at_cage_angle[i][j] = dF_i/d(dq_j/dt), the squeeze films of the EHL contacts "
+        "(five_dof_static.h; the film's stiffness is in series with Hertz in "
+        "stiffness_at_cage_angle); rotor.damping its mean over one ball pass";
+    j["units"]["damping_at_cage_angle"] = damping_units_json();
+    if (t.ball_pass_samples > 0) {
+      j["units"]["ball_pass.damping_mean"] = "units.damping_at_cage_angle";
+      j["units"]["rotor.damping"] = "units.damping_at_cage_angle, entry by entry";
+    }
   }
   require_finite(j);
   return j;
@@ -257,6 +312,26 @@ std::string stiffness_matrix_text(const Matrix5& K, const std::string& indent) {
   o << indent
     << "units: N/m (Fx, Fy, Fz by x, y, z), N/rad (Fx, Fy, Fz by gx, gy), N (Mx, My by x, y, z), "
        "N*m/rad (Mx, My by gx, gy); symmetric\n";
+  return o.str();
+}
+
+std::string damping_matrix_text(const Matrix5& C, const std::string& indent) {
+  std::ostringstream o;
+  o << indent << pad("C = dF/dq'", 12);
+  for (int j = 0; j < 5; ++j)
+    o << pad(with_unit(kStiffnessDofs[j], kStiffnessDofUnits[j] + std::string("/s")), 13);
+  o << "\n";
+  for (int i = 0; i < 5; ++i) {
+    o << indent << pad(with_unit(kLoadNames[i], kStiffnessLoadUnits[i]), 12);
+    for (int j = 0; j < 5; ++j) {
+      const double scale = block_scale(C, i >= 3, j >= 3);
+      o << pad(num(std::fabs(C(i, j)) <= 1e-12 * scale ? 0.0 : C(i, j)), 13);
+    }
+    o << "\n";
+  }
+  o << indent
+    << "units: N*s/m (Fx, Fy, Fz by x, y, z), N*s/rad (by gx, gy), N*s (Mx, My by x, y, z), "
+       "N*m*s/rad (Mx, My by gx, gy); the squeeze films of the EHL contacts\n";
   return o.str();
 }
 
@@ -312,8 +387,9 @@ std::string stiffness_rotor_warning(const StiffnessTable& t) {
 std::string stiffness_text(const StiffnessTable& t) {
   std::ostringstream o;
   o << "Bearing stiffness (5-DOF static solution of the inner ring: rigid rings, the balls' "
-       "centrifugal load at the case's speed, no damping)\nCase: "
-    << t.source << (t.bearing.empty() ? "" : " (" + t.bearing + ")") << "\n";
+       "centrifugal load at the case's speed, "
+    << (t.lubricated ? "the EHL films and their squeeze damping" : "no damping")
+    << ")\nCase: " << t.source << (t.bearing.empty() ? "" : " (" + t.bearing + ")") << "\n";
   if (t.rows.size() == 1) {
     const StiffnessPoint& p = t.rows.front().point;
     const Vector5& q = p.solution.displacement;
@@ -327,12 +403,20 @@ std::string stiffness_text(const StiffnessTable& t) {
       << "Balls: " << p.loaded_balls() << " of " << p.solution.at.ball_loads.size()
       << " loaded, the largest load " << num(p.q_max()) << " N\n\n"
       << "K at the case's cage angle (ball 0 at " << num(p.cage_angle) << " rad):\n"
-      << stiffness_matrix_text(p.solution.at.stiffness) << stiffness_note(p);
-    if (p.rotor)
+      << stiffness_matrix_text(p.solution.at.stiffness);
+    if (t.lubricated)
+      o << "(the EHL films in series with Hertz: [lubricant]); C at the case's cage angle:\n"
+        << damping_matrix_text(p.solution.at.damping);
+    o << stiffness_note(p);
+    if (p.rotor) {
       o << "\nK averaged over one ball pass (" << p.rotor->samples
         << " cage angles): the matrix a rotor model takes (stiffness_ross.csv, stiffness.json's "
            "rotor.stiffness):\n"
         << stiffness_matrix_text(p.rotor->stiffness);
+      if (t.lubricated)
+        o << "C averaged over one ball pass (stiffness_ross.csv's cxx ... cyy, rotor.damping):\n"
+          << damping_matrix_text(p.rotor->damping);
+    }
     o << ball_pass_text(t);
     return o.str();
   }
@@ -395,10 +479,14 @@ std::string stiffness_ross_csv(const StiffnessTable& t) {
   std::ostringstream o;
   o << "frequency,kxx,kxy,kyx,kyy,cxx,cxy,cyx,cyy\n";
   for (const StiffnessRow* r : rows) {
-    const Matrix5& K = r->point.rotor->stiffness;  // the ball-pass mean
-    o << stiffness_number(r->speed) << "," << stiffness_number(K(0, 0)) << ","
-      << stiffness_number(K(0, 1)) << "," << stiffness_number(K(1, 0)) << ","
-      << stiffness_number(K(1, 1)) << ",0,0,0,0\n";
+    // The ball-pass means; C is 0 for dry contacts (no [lubricant]).
+    const Matrix5& K = r->point.rotor->stiffness;
+    const Matrix5& C = r->point.rotor->damping;
+    o << stiffness_number(r->speed);
+    for (const Matrix5* M : {&K, &C})
+      o << "," << stiffness_number((*M)(0, 0)) << "," << stiffness_number((*M)(0, 1)) << ","
+        << stiffness_number((*M)(1, 0)) << "," << stiffness_number((*M)(1, 1));
+    o << "\n";
   }
   return o.str();
 }

@@ -1,7 +1,8 @@
 """The figure of a `bearing-sim stiffness` folder: the bearing's stiffness terms at the case's cage
 angle against the varied key, one panel per unit, with each diagonal term's range over one ball
 pass as a band and its mean over it (what a rotor model takes) as a dotted line when stiffness.json
-has them (docs/rotordynamics.md)."""
+has them (docs/rotordynamics.md); with [lubricant] (stiffness.csv's c_* columns) the squeeze-film
+damping C = dF/d(dq/dt) in a second row of panels beside it."""
 
 import csv
 import json
@@ -19,14 +20,20 @@ PANELS = (("N/m", "forces by displacements [N/m]"),
           ("N/rad", "forces by tilts [N/rad] = moments by displacements [N]"),
           ("N*m/rad", "moments by tilts [N·m/rad]"))
 SHOWN_UNIT = {"N/m": "N/m", "N/rad": "N/rad", "N*m/rad": "N·m/rad"}
+# The damping's panels, by the stiffness unit of the same block: C_ij's unit is K_ij's times s.
+DAMPING_SHOWN_UNIT = {"N/m": "N·s/m", "N/rad": "N·s/rad", "N*m/rad": "N·m·s/rad"}
+DAMPING_TITLE = {"N/m": "damping, forces by velocities [N·s/m]",
+                 "N/rad": "damping, forces by tilt rates [N·s/rad] = moments by velocities [N·s]",
+                 "N*m/rad": "damping, moments by tilt rates [N·m·s/rad]"}
 OFF_DIAGONAL_SHOWN = 3  # the largest off-diagonal terms per panel
 _COLUMN = re.compile(r"^(?P<name>.+?) \[(?P<unit>[^\]]*)\]$")
 
 
-def term_name(i, j):
-    """stiffness.csv's name of K_ij: "k_xx", "k_x_gx", "k_gx_gy" (as bearing/stiffness.h)."""
+def term_name(i, j, prefix="k"):
+    """stiffness.csv's name of K_ij: "k_xx", "k_x_gx", "k_gx_gy" (as bearing/stiffness.h); with
+    prefix "c" C_ij's ("c_xx", as bearing/stiffness_output.h)."""
     a, b = DOFS[i], DOFS[j]
-    return "k_" + a + ("" if len(a) == 1 and len(b) == 1 else "_") + b
+    return prefix + "_" + a + ("" if len(a) == 1 and len(b) == 1 else "_") + b
 
 
 def term_unit(i, j):
@@ -95,6 +102,11 @@ class Stiffness:
         return self.columns[name][1]
 
     @property
+    def has_damping(self):
+        """Whether stiffness.csv has the damping's columns (the case had [lubricant])."""
+        return "c_xx" in self.columns
+
+    @property
     def points(self):
         return len(self["k_xx"])
 
@@ -112,20 +124,21 @@ def load_stiffness(folder):
     return Stiffness(folder)
 
 
-def panel_terms(s, unit):
+def panel_terms(s, unit, prefix="k"):
     """(diagonal, off-diagonal) term names of one unit's panel: every diagonal term, and the
-    largest off-diagonal terms that are not round-off (|K_ij| above 1e-6 sqrt(|K_ii| |K_jj|))."""
+    largest off-diagonal terms that are not round-off (|K_ij| above 1e-6 sqrt(|K_ii| |K_jj|));
+    `unit` the stiffness block's, `prefix` "k" (K) or "c" (C, the same blocks)."""
     peak = {name: float(np.max(np.abs(s[name]))) if s.points else 0.0
-            for name in (term_name(i, j) for i in range(5) for j in range(i, 5))}
-    diagonal = [term_name(i, i) for i in range(5) if term_unit(i, i) == unit]
+            for name in (term_name(i, j, prefix) for i in range(5) for j in range(i, 5))}
+    diagonal = [term_name(i, i, prefix) for i in range(5) if term_unit(i, i) == unit]
     off = []
     for i in range(5):
         for j in range(i + 1, 5):
             if term_unit(i, j) != unit:
                 continue
-            scale = np.sqrt(peak[term_name(i, i)] * peak[term_name(j, j)])
-            if peak[term_name(i, j)] > 1e-6 * scale:
-                off.append(term_name(i, j))
+            scale = np.sqrt(peak[term_name(i, i, prefix)] * peak[term_name(j, j, prefix)])
+            if peak[term_name(i, j, prefix)] > 1e-6 * scale:
+                off.append(term_name(i, j, prefix))
     off.sort(key=lambda n: -peak[n])
     return diagonal, off[:OFF_DIAGONAL_SHOWN]
 
@@ -160,25 +173,28 @@ def _draw_rotor(ax, s, name, x, color, joined):
     mark.set_gid("rotor:" + name)
 
 
-def _draw_panel(ax, s, unit, x, xlabel, joined=True):
-    diagonal, off = panel_terms(s, unit)
+def _draw_panel(ax, s, unit, x, xlabel, joined=True, prefix="k"):
+    diagonal, off = panel_terms(s, unit, prefix)
+    gid = "stiffness:" if prefix == "k" else "damping:"
     for name in diagonal + off:
         style = ("-o" if name in diagonal else "--s") if joined else \
             ("o" if name in diagonal else "s")
         if x is None:  # one point: its terms as bars
             bars = ax.bar([name], s[name], color="C0" if name in diagonal else "C1")
-            bars.patches[0].set_gid("stiffness:" + name)
+            bars.patches[0].set_gid(gid + name)
             if name in diagonal:
                 _draw_ball_pass(ax, s, name, None, None, joined)
                 _draw_rotor(ax, s, name, None, None, joined)
             continue
         order = np.argsort(x, kind="stable")
         line, = ax.plot(x[order], s[name][order], style, ms=4, label=name)
-        line.set_gid("stiffness:" + name)
+        line.set_gid(gid + name)
         if name in diagonal:
             _draw_ball_pass(ax, s, name, x, line.get_color(), joined)
-            _draw_rotor(ax, s, name, x, line.get_color(), joined)
-    ax.set_ylabel("K [%s]" % SHOWN_UNIT[unit])
+            if prefix == "k":
+                _draw_rotor(ax, s, name, x, line.get_color(), joined)
+    ax.set_ylabel("K [%s]" % SHOWN_UNIT[unit] if prefix == "k" else
+                  "C [%s]" % DAMPING_SHOWN_UNIT[unit])
     ax.ticklabel_format(axis="y", style="sci", scilimits=(-3, 4))
     if x is not None:
         ax.set_xlabel(xlabel)
@@ -190,7 +206,8 @@ def _draw_panel(ax, s, unit, x, xlabel, joined=True):
 
 def stiffness_figure(s):
     """The stiffness terms against the first varied key (one point: as bars), one panel per unit;
-    with more varied keys, all points against the first."""
+    with more varied keys, all points against the first. With the damping's columns
+    (Stiffness.has_damping) a second row: C's terms, the same way."""
     if s.points == 0:
         raise FolderError("%s: no operating point" % s.path)
     varied = s.varied
@@ -199,10 +216,18 @@ def stiffness_figure(s):
     x = s[key] * factor if key else None
     with _style():
         fig = _new_figure("stiffness")
-        axes = fig.subplots(1, len(PANELS), squeeze=False)[0]
-        for ax, (unit, what) in zip(axes, PANELS):
+        rows = 2 if s.has_damping else 1
+        grid = fig.subplots(rows, len(PANELS), squeeze=False)
+        if rows == 2:
+            width, height = fig.get_size_inches()
+            fig.set_size_inches(width, 1.8 * height)
+        for ax, (unit, what) in zip(grid[0], PANELS):
             _draw_panel(ax, s, unit, x, xlabel, joined=len(varied) <= 1)
             ax.set_title(what, fontsize=10)
+        if rows == 2:
+            for ax, (unit, _) in zip(grid[1], PANELS):
+                _draw_panel(ax, s, unit, x, xlabel, joined=len(varied) <= 1, prefix="c")
+                ax.set_title(DAMPING_TITLE[unit], fontsize=10)
         against = "against %s" % key if key else "at the operating point"
         extra = "; also varied: %s (every point, unjoined)" % ", ".join(varied[1:]) \
             if len(varied) > 1 else ""
@@ -217,9 +242,11 @@ def stiffness_figure(s):
             legend += ("; %s: its mean, the rotor's K"
                        % ("diamonds" if key is None else "dotted" if len(varied) <= 1
                           else "dots"))
+        films = ("the EHL films in series, their squeeze damping C = dF/d(dq/dt) below"
+                 if s.has_damping else "no damping")
         fig.suptitle("%s — bearing stiffness K = dF/dq %s, at the case's cage angle\n(%s)\n"
                      "%s · 5-DOF static solution: rigid rings, centrifugal ball load at speed, "
-                     "no damping%s"
-                     % (s.name, against, legend, s.source, extra))
+                     "%s%s"
+                     % (s.name, against, legend, s.source, films, extra))
         fig.tight_layout()
     return fig

@@ -24,6 +24,10 @@ struct BallPassStiffness {
   Matrix5 max = Matrix5::Zero();
   /// harmonics[m − 1]: each entry's amplitude at m × BPFO, m = 1 … N/2 − 1 (units of K).
   std::vector<Matrix5> harmonics;
+  /// The squeeze films' damping C at each φ_k and its mean over one pitch [N s/m, N s/rad, N s,
+  /// N m s/rad] (five_dof_static.h; 0 for dry contacts).
+  std::vector<Matrix5> damping_samples;
+  Matrix5 damping_mean = Matrix5::Zero();
 };
 
 /// K over one ball pass of `b` (its phase the first cage angle) under `load` (as solve_five_dof,

@@ -54,9 +54,30 @@
 // δ_i + δ_o = L − A₀, and this is the one-contact form above with the series constant
 // (tests/lumped/test_five_dof_static.cc checks that the two agree).
 //
+// With the EHL film (issue 43; ehl_film.h, film_law.h). Each contact's film keeps the surfaces
+// h_c(Q) = C Q^−e apart (e = 0.067), so the contact law becomes FilmLaw's
+//     δ = (Q/K)^{1/n} − H Q^−e,   dQ/dδ = (1/k_H + 1/k_f)^−1,   U(Q) = Q δ_H/(n+1) + e/(1−e) Q h_c,
+// with H = C_i + C_o for the one-contact form (the two films in series along the ball's line)
+// and each race's C for the races apart: Q_j = Q(δ_j), the term n K δ^{n−1} of K is the tangent
+// (Hertz and the film in series) and V = Σ U(Q_j). The law is smooth: every ball carries a load,
+// the unloaded ones a vanishing one (a gap of 10 h_c leaves ~1e-15 of it); a ball counts as
+// loaded where δ_j > 0, i.e. its Hertz deflection exceeds its film (for dry contacts the same as
+// Q_j > 0). H = 0 (no lubricant, or no entrainment at rest) is Hertz's law, bit for bit.
+// The squeeze film of each contact (ehl_film.h) damps its approach: c_x(Q) = S_x / h_c,x(Q),
+// S_x = 12 π η₀ (R_x R_y)^{3/2} / (R_x + R_y) [N s], and the ring feels, C_ij = ∂F_i/∂q̇_j,
+//     C = Σ_j c_j g_j g_jᵀ,   c_j = c_i c_o / (c_i + c_o) at Q_j     (one contact form)
+// (film_law.h: the two dampers in series on the ball's δ). With the races apart each ball's
+// centre follows the ring quasi-statically as its springs place it, ṗ = P ȧ,
+// P = (H_o + H_i)⁻¹ H_i, and the two dampers D_x = c_x e_x e_xᵀ dissipate along their lines:
+//     C = Σ_j B_jᵀ [(I − P)ᵀ D_i (I − P) + Pᵀ D_o P] B_j,
+// symmetric and positive semi-definite; on one line it is c_i k_o² + c_o k_i² over (k_i + k_o)²,
+// the series c_i c_o/(c_i + c_o) when the springs stand in the ratio of the dampers.
+// C's units follow K's with a factor s: N s/m, N s/rad, N s, N m s/rad.
+//
 // Approximations: rigid rings, the contact constants of the case (the curvatures at the free
 // contact angle, as the 3-DOF model), F_c from the kinematic cage speed at the free contact angle,
-// no gyroscopic moment, no damping.
+// no gyroscopic moment; the film's coefficients at the free contact angle and the pure-rolling
+// cage speed (ehl_film.h), the squeeze film's damping its isoviscous lower estimate (ehl_film.h).
 
 #include <array>
 #include <vector>
@@ -65,6 +86,7 @@
 
 #include "bearing/bearing.h"
 #include "bearing/contact.h"
+#include "bearing/ehl_film.h"
 
 namespace bearing {
 
@@ -87,7 +109,15 @@ struct FiveDofBearing {
   double inner_exponent = 1.5, outer_exponent = 1.5;  ///< each race's n [-]
   double inner_offset = 0;  ///< (f_i − 1/2) D: ball centre to inner groove centre [m]
   double outer_offset = 0;  ///< (f_o − 1/2) D: outer groove centre to ball centre [m]
+  /// The EHL films (above; set by add_films): all 0, dry contacts.
+  double film_H = 0;                            ///< H = C_i + C_o of the ball [m N^0.067]
+  double inner_film_H = 0, outer_film_H = 0;    ///< each race's C [m N^0.067]
+  double inner_squeeze = 0, outer_squeeze = 0;  ///< S in c = S / h_c(Q) [N s]
 };
+
+/// Sets the films of `b` from both contacts' films (ball_films, ehl_film.h): H, C and S. A film
+/// without entrainment (u = 0) is none: its contact stays dry.
+void add_films(FiveDofBearing& b, const BallFilms& films);
 
 /// The FiveDofBearing of `b` with the contact law `c`, ball 0 at `phase` [rad] and the
 /// centrifugal load `centrifugal` [N] on each ball (0: at rest; ball_centrifugal_load() gives it
@@ -102,8 +132,10 @@ double ball_centrifugal_load(const Bearing& b, double inner_speed);
 
 /// The ball set at one inner-ring displacement q.
 struct FiveDofPoint {
-  Vector5 force = Vector5::Zero();           ///< ∇V: the load the balls hold the ring in [N, N m]
-  Matrix5 stiffness = Matrix5::Zero();       ///< ∂force/∂q [N/m, N, N/rad, N m/rad]
+  Vector5 force = Vector5::Zero();      ///< ∇V: the load the balls hold the ring in [N, N m]
+  Matrix5 stiffness = Matrix5::Zero();  ///< ∂force/∂q [N/m, N, N/rad, N m/rad]
+  /// ∂force/∂q̇, the squeeze films' damping [N s/m, N s, N s/rad, N m s/rad]; 0 for dry contacts.
+  Matrix5 damping = Matrix5::Zero();
   double energy = 0;                         ///< V [J]
   std::vector<double> ball_angles;           ///< ψ_j [rad]
   std::vector<double> approaches;            ///< δ_j, negative: the gap left [m]

@@ -10,6 +10,7 @@
 
 #include "bearing/case_file.h"
 #include "bearing/contact.h"
+#include "bearing/film_report.h"
 #include "bearing/kinematics.h"
 #include "bearing/models/housing.h"
 #include "bearing/static_load.h"
@@ -58,6 +59,9 @@ struct InfoReport {
   std::optional<StiffnessPoint> stiffness;
   std::string stiffness_error;
   std::string ball_pass_error;
+  /// With [lubricant]: each race's EHL film at the most loaded contact of `stiffness` (its
+  /// largest inner and outer loads; without it, at peak_load).
+  std::optional<FilmInfo> film;
 };
 
 /// Cage angles a pitch of info's ball pass: a few, so that info stays fast (`bearing-sim
@@ -89,7 +93,10 @@ InfoReport compute_info(const Case& c, InfoParts parts = InfoParts::all);
 /// [N s/m], modes[].{frequency [Hz], housing_share}}; stiffness.{dofs, load [N, N m],
 /// displacement [m, rad], matrix (5×5 K = dF/dq) [N/m, N/rad, N m/rad], q_max [N],
 /// loaded_balls, ball_pass (ball_pass_json, at kInfoBallPassSamples cage angles; {error} when it
-/// could not be solved)} (stiffness.h), or {error} saying why.
+/// could not be solved)} (stiffness.h), or {error} saying why; with [lubricant] also
+/// stiffness.damping (5×5 C = dF/dq̇) [N s/m, N s/rad, N s, N m s/rad] and film.{inner,
+/// outer}.{load [N], entrainment_speed [m/s], central_thickness [m], minimum_thickness [m],
+/// lambda, stiffness [N/m], damping [N s/m], ellipticity_within_fit} (film_report.h).
 /// Throws SolverError if any value is not finite.
 nlohmann::json info_json(const InfoReport& report);
 

@@ -30,20 +30,20 @@ struct RecordOrigin {
 };
 
 /// summary.json of an analysis: `record` {file, channel, rate [Hz], rate_origin, samples,
-/// duration [s], unit (SI), stored_unit, scale, unit_origin, prewhitened}, `case` {source, bearing, speed [rad/s]}, `speed` {value [rad/s], shaft [Hz],
-/// rpm, source "option" | "case" | "record" | "estimate", origin, and for an estimate `estimate`
-/// {nominal [rad/s], tolerance, harmonics[] (order, frequency [Hz], amplitude, level [dB], used),
-/// evidence and threshold [dB], false_alarm, refinement}}, `frequencies` [Hz], `channels.<ch>`
-/// and `peaks.<ch>` (as `run`), `peak_families`, with an envelope `envelope` (as `run`, plus
-/// `prewhitened`) and `fault_lines` {settings, and per family outer, inner, ball: nominal,
-/// modulation, carrier [Hz], offset [-], evidence, threshold [dB], trials, rated_harmonics,
-/// detected, excluding[] (families whose lines were left out of its search), lines[] (label,
-/// harmonic, sideband, nominal, frequency [Hz], amplitude, floor
-/// [unit²], floor_samples, level [dB], rated, excluded)}, `diagnosis` (the settings' rule:
-/// line_to_floor {family, rule, channel, unit, band [Hz], band_source, spectral_kurtosis,
-/// evidence[] (label, frequency, amplitude, level), evidence_level, threshold, margin [dB], reason,
-/// thresholds}, or `run`'s block with rule "envelope_peaks"), and `units`. Throws SolverError if a
-/// value is not finite.
+/// duration [s], unit (SI), stored_unit, scale, unit_origin, prewhitened}, `case` {source, bearing,
+/// speed [rad/s]}, `speed` {value [rad/s], shaft [Hz], rpm, source "option" | "case" | "record" |
+/// "estimate", origin, and for an estimate `estimate` {nominal [rad/s], tolerance, harmonics[]
+/// (order, frequency [Hz], amplitude, level [dB], used), evidence and threshold [dB], false_alarm,
+/// refinement}}, `frequencies` [Hz], `channels.<ch>` and `peaks.<ch>` (as `run`), `peak_families`,
+/// with an envelope `envelope` (as `run`, plus `prewhitened`) and `fault_lines` {settings, and per
+/// family outer, inner, ball: nominal, modulation, carrier [Hz], offset [-], evidence, threshold
+/// [dB], trials, rated_harmonics, detected, excluding[] (families whose lines were left out of its
+/// search), lines[] (label, harmonic, sideband, nominal, frequency [Hz], amplitude, floor [unit²],
+/// floor_samples, level [dB], rated, excluded)}, `diagnosis` (the settings' rule: line_to_floor
+/// {family, rule, channel, unit, band [Hz], band_source, spectral_kurtosis, evidence[] (label,
+/// frequency, amplitude, level), evidence_level, threshold, margin [dB], reason, thresholds}, or
+/// `run`'s block with rule "envelope_peaks"), and `units`. Throws SolverError if a value is not
+/// finite.
 nlohmann::json record_summary_json(const RecordAnalysis& a, const RecordOrigin& origin);
 
 /// The readable summary: the record, speed, frequencies, statistics and largest peak, the envelope

@@ -10,9 +10,9 @@
 // coefficient.
 //
 // What `bearing-sim stiffness --format ross` writes (stiffness_ross.csv), stiffness.json's
-// points[].rotor and `bearing.stiffness` in Python. A damping matrix C (ROSS's cxx … cyy, once the
-// lubricant film is modelled) belongs beside `stiffness` in RotorCoefficients: solved at the same
-// cage angles and averaged the same way (ball_pass_mean).
+// points[].rotor and `bearing.stiffness` / `bearing.damping` in Python. The damping matrix C of
+// the contacts' squeeze films ([lubricant], five_dof_static.h; ROSS's cxx … cyy) is solved at the
+// same cage angles and averaged the same way (ball_pass_mean); dry contacts have C = 0.
 //
 // Singular or near it. Each cage angle's K is positive semi-definite (the Hessian of a convex
 // contact energy, five_dof_static.h), so their mean is singular along a direction only if every one
@@ -44,6 +44,9 @@ struct RotorCoefficients {
   /// K averaged over one ball pass [N/m, N/rad, N (= N m/m), N m/rad by block; rows F, columns q
   /// as stiffness.h]: the ball pass's mean.
   Matrix5 stiffness = Matrix5::Zero();
+  /// C averaged over one ball pass [N s/m, N s/rad, N s, N m s/rad by block], the squeeze films'
+  /// damping with [lubricant]; 0 for dry contacts.
+  Matrix5 damping = Matrix5::Zero();
   /// Why `stiffness` is singular or near it (rotor_stiffness_warnings); empty when it is not.
   std::vector<std::string> warnings;
 };
@@ -52,7 +55,7 @@ struct RotorCoefficients {
 /// (as BallPassStiffness::mean: Σ_k M_k / N, summed in order). Throws std::logic_error when empty.
 Matrix5 ball_pass_mean(const std::vector<Matrix5>& samples);
 
-/// The rotor coefficients of a ball pass: its mean K and the warnings about it.
+/// The rotor coefficients of a ball pass: its mean K and C and the warnings about K.
 RotorCoefficients rotor_coefficients(const BallPassStiffness& pass);
 
 /// Why a rotor model's K (a ball-pass mean) is singular or near it, one sentence a reason: no

@@ -15,7 +15,9 @@
 // between moments and tilts. Assumed: rigid rings, the outer ring fixed; at operation.speed each
 // ball carries its centrifugal load m_b ω_c² d_m/2 when ball.centrifugal is on (the default), so
 // that its inner and outer contact angles differ (Jones; five_dof_static.h); the gyroscopic
-// moment neglected; no damping.
+// moment neglected. With [lubricant] (at a speed: the film needs entrainment) each contact has
+// its EHL film in series with Hertz (K) and its squeeze-film damping C = ∂F/∂q̇ [N s/m, N s/rad,
+// N s, N m s/rad]; without it, C = 0 and K is the dry contacts' (five_dof_static.h).
 
 #include <array>
 #include <optional>
@@ -47,7 +49,9 @@ Vector5 five_dof_load_of(const Case& c);
 
 /// The case's bearing with its contact law (contact_constants(c): a Hertz method, or the
 /// calibrated constants), ball 0 at the cage phase of its model inputs, and each ball's
-/// centrifugal load at operation.speed when ball.centrifugal is on (ball_centrifugal_load). Throws
+/// centrifugal load at operation.speed when ball.centrifugal is on (ball_centrifugal_load), and
+/// with [lubricant] each contact's film (add_films) at operation.speed, the cage at its
+/// pure-rolling speed. Throws
 /// InputError naming bearing.clearance when the clearance leaves no contact angle below 90°.
 FiveDofBearing five_dof_bearing_of(const Case& c);
 
@@ -86,7 +90,8 @@ struct StiffnessPoint {
   /// The largest load of an outer contact [N]: q_max at rest, more at speed (each ball's
   /// centrifugal load presses it on the outer race).
   double outer_q_max() const;
-  /// The balls that carry a load.
+  /// The balls that carry a load: Q_j > 0 and δ_j > 0 (with a film every ball carries a
+  /// vanishing load; it counts where its Hertz deflection exceeds its film, five_dof_static.h).
   int loaded_balls() const;
 };
 

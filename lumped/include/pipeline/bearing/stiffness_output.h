@@ -35,7 +35,17 @@ struct StiffnessTable {
   /// Cage angles a pitch of every row's ball pass (StiffnessPoint::ball_pass, each row has one);
   /// 0: none, the rows are static points alone.
   int ball_pass_samples = 0;
+  /// The case has [lubricant]: the files carry the damping C (five_dof_static.h) beside K;
+  /// without it they are as they were before the film (no damping columns, C = 0).
+  bool lubricated = false;
 };
+
+/// The unit of C_ij = ∂F_i/∂q̇_j: stiffness_unit(i, j) times s ("N*s/m", "N*s/rad", "N*s",
+/// "N*m*s/rad").
+std::string damping_unit(int i, int j);
+
+/// The name of C_ij for i ≤ j: stiffness_name's with "c_" ("c_xx", "c_x_gx").
+std::string damping_name(int i, int j);
 
 /// The shortest "%.*g" text that reads back as exactly `v` ("0" for −0): the stiffness files hold
 /// the solver's doubles bit for bit.
@@ -46,23 +56,28 @@ nlohmann::json stiffness_matrix_json(const Matrix5& K);
 
 /// stiffness.csv: per point the varied keys ("operation.axial_load [N]"), the 15 K_ij with
 /// i ≤ j ("k_xx [N/m]", …, "k_x_gx [N/rad]", …, "k_gy_gy [N*m/rad]"), the displacement ("x [m]",
-/// …, "gy [rad]"), "q_max [N]", "loaded_balls", then the load ("Fx [N]", …, "My [N*m]"); every
-/// one the equilibrium at the case's cage angle (the rotor's K, averaged over one ball pass: the
-/// "mean" of stiffness_ball_pass.csv); shortest round-trip numbers.
+/// …, "gy [rad]"), "q_max [N]", "loaded_balls", then the load ("Fx [N]", …, "My [N*m]"); with
+/// [lubricant] (t.lubricated) then the 15 C_ij ("c_xx [N*s/m]", …, "c_gy_gy [N*m*s/rad]"); every
+/// one the equilibrium at the case's cage angle (the rotor's K and C, averaged over one ball pass:
+/// the "mean" of stiffness_ball_pass.csv, stiffness.json's rotor); shortest round-trip numbers.
 std::string stiffness_csv(const StiffnessTable& t);
 
 /// stiffness.json: the case, what the model assumes, the DOFs and units, and per point the
 /// varied values, load, the case's cage angle and at it the displacement, the full 5×5 matrix
 /// ("stiffness_at_cage_angle"), each ball's angle, load and contact angle, the peak Hertz
-/// pressures and whether they are within the elastic limit; with a ball pass its object
-/// (ball_pass_json) and "rotor": the rotor coefficients (rotor_coefficients.h: "samples",
-/// "stiffness" the ball-pass mean, "warnings"). Throws SolverError naming the first non-finite
-/// value.
+/// pressures and whether they are within the elastic limit; with [lubricant]
+/// "damping_at_cage_angle" (5×5 C) and units.damping; with a ball pass its object (ball_pass_json,
+/// with [lubricant] its "damping_mean") and "rotor": the rotor coefficients (rotor_coefficients.h:
+/// "samples", "stiffness" and with [lubricant] "damping", the ball-pass means, "warnings"). Throws
+/// SolverError naming the first non-finite value.
 nlohmann::json stiffness_json(const StiffnessTable& t);
 
 /// The matrix K with row (Fx [N] … My [N*m]) and column (x [m] … gy [rad]) labels and the units of
 /// its blocks, each line started by `indent` (also `info`'s).
 std::string stiffness_matrix_text(const Matrix5& K, const std::string& indent = "  ");
+
+/// The damping C = ∂F/∂q̇ as stiffness_matrix_text shows K, with its units (also `info`'s).
+std::string damping_matrix_text(const Matrix5& C, const std::string& indent = "  ");
 
 /// What the reader of the matrix at the case's cage angle must know when it is singular, as a
 /// line started by `indent`: no ball loaded (K = 0), or fewer than 3 (each ball stiffens the ring
