@@ -189,8 +189,8 @@ def damping(case, samples=32):
     (no entrainment, no film). Units: C[:3, :3] N*s/m, C[:3, 3:] N*s/rad, C[3:, :3] N*s,
     C[3:, 3:] N*m*s/rad; symmetric. Raises InputError or SolverError.
 
-    >>> c = bearing.damping(bearing.Case.default().set("lubricant.viscosity", "0.02 Pa s")
-    ...     .set("lubricant.pressure_viscosity", "2e-8 1/Pa").set("lubricant.roughness", "0.1 um"))
+    >>> c = bearing.damping(bearing.Case.default().update({"lubricant.viscosity": "0.02 Pa s",
+    ...     "lubricant.pressure_viscosity": "2e-8 1/Pa", "lubricant.roughness": "0.1 um"}))
     >>> c[1, 1]                                   # c_yy [N*s/m]
     """
     return _bearing.damping(_case(case), _operator.index(samples))

@@ -499,6 +499,23 @@ void bind_case(py::module_& m) {
           "numeric part of `key` indexes an array of tables: \"waviness.inner.0.amplitude\". "
           "Raises InputError (the case is then unchanged).")
       .def(
+          "update",
+          [](CaseHandle& c, const py::dict& values) -> CaseHandle& {
+            CaseHandle next = c;
+            for (const auto& [key, value] : values)
+              next.overrides.push_back(bearing::parse_override(
+                  py::str(key).cast<std::string>() + "=" +
+                  toml_value(py::reinterpret_borrow<py::object>(value), true)));
+            next.resolved = next.load();  // once, all set: a table whose keys need each other
+            c = std::move(next);
+            return c;
+          },
+          py::arg("values"), py::return_value_policy::reference,
+          "Overrides several case-file values at once, {key: value} as set() takes them, and "
+          "returns the case; the case is resolved once with all of them, so keys that need each "
+          "other (a new [lubricant] table's viscosity, pressure_viscosity and roughness) can be "
+          "given together. Raises InputError (the case is then unchanged).")
+      .def(
           "to_toml", [](const CaseHandle& c) { return bearing::case_to_toml(c.resolved); },
           "The fully resolved case as TOML, every number in SI with 17 significant digits (the "
           "case.toml of a run: Case.from_toml(case.to_toml()) is the same case).")

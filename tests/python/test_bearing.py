@@ -236,6 +236,39 @@ class Stiffness(unittest.TestCase):
         with self.assertRaises(TypeError):
             bearing.stiffness(example, samples=16.5)
 
+    def test_damping_is_the_ball_pass_mean_of_the_films(self):
+        """Issue 43: with [lubricant] bearing.damping is C averaged over the ball pass (NumPy's
+        mean of ball_pass_stiffness's damping samples), its samples[0] damping_at_cage_angle, the
+        numbers of stiffness.json's rotor.damping and ROSS's cxx..cyy; C is symmetric, positive
+        along y (the load's direction) and 0 for dry contacts and at rest (no entrainment)."""
+        example = str(EXAMPLES / "seed003_6308.toml")
+        oil = [("lubricant.viscosity", "0.02 Pa s"), ("lubricant.pressure_viscosity", "2e-8 1/Pa"),
+               ("lubricant.roughness", "0.1 um")]
+        with self.assertRaises(bearing.InputError):  # one key alone leaves the table short
+            case_with(example, oil)
+        case = bearing.Case.from_file(example).update(dict(oil))
+        n = 8
+        c = bearing.damping(case, samples=n)
+        bp = bearing.ball_pass_stiffness(case, samples=n)
+        np.testing.assert_allclose(c, bp["damping_samples"].mean(axis=0), rtol=0,
+                                   atol=1e-12 * np.abs(c).max())
+        np.testing.assert_array_equal(bp["damping_samples"][0], bearing.damping_at_cage_angle(case))
+        np.testing.assert_allclose(c, c.T, rtol=0, atol=1e-12 * np.abs(c).max())
+        self.assertGreater(c[1, 1], 0)
+        self.assertFalse(bearing.damping(example, samples=n).any())
+        at_rest = bearing.Case.from_file(example).update(dict(oil + [("operation.speed", "0 rpm")]))
+        self.assertFalse(bearing.damping(at_rest, samples=n).any())
+        with tempfile.TemporaryDirectory() as tmp:
+            cli("stiffness", example, *set_args(oil), "--ball-pass", str(n), "--format", "ross",
+                "--out", tmp, "--quiet")
+            with open(pathlib.Path(tmp) / "stiffness.json") as f:
+                rotor = json.load(f)["points"][0]["rotor"]
+            ross = (pathlib.Path(tmp) / "stiffness_ross.csv").read_text().splitlines()
+        self.assertEqual(c.tolist(), rotor["damping"])
+        columns = dict(zip(ross[0].split(","), map(float, ross[1].split(","))))
+        for name, (i, j) in {"cxx": (0, 0), "cxy": (0, 1), "cyx": (1, 0), "cyy": (1, 1)}.items():
+            self.assertEqual(columns[name], c[i, j], name)
+
     def test_a_load_in_the_clearance_warns(self):
         """No load: no ball is loaded at any cage angle, K = 0, and a SingularStiffnessWarning (a
         RuntimeWarning) says why, with stiffness.json's rotor.warnings' text."""
@@ -268,8 +301,10 @@ class Stiffness(unittest.TestCase):
         case = bearing.Case.from_file(example)
         n = 16
         bp = bearing.ball_pass_stiffness(case, samples=n)
-        self.assertEqual(sorted(bp), ["bpfo", "cage_angles", "harmonics", "max", "mean", "min",
-                                      "samples"])
+        self.assertEqual(sorted(bp), ["bpfo", "cage_angles", "damping_mean", "damping_samples",
+                                      "harmonics", "max", "mean", "min", "samples"])
+        # Dry contacts (no [lubricant]): no damping at any cage angle.
+        self.assertFalse(bp["damping_samples"].any())
         self.assertEqual(bp["cage_angles"].shape, (n,))
         self.assertEqual(bp["samples"].shape, (n, 5, 5))
         for key in ("mean", "min", "max"):
