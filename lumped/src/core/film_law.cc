@@ -2,6 +2,7 @@
 
 #include "bearing/film_law.h"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -32,9 +33,14 @@ double FilmLaw::load(double approach) const {
   if (!std::isfinite(approach))
     throw SolverError("film law: the approach " + format_number(approach) + " m is not finite");
   if (H == 0.0) return approach > 0 ? K * std::pow(approach, exponent) : 0.0;
-  // A start near the root: Hertz alone with the film's gap added (δ > 0), or the film alone.
+  // A start near the root: Hertz alone with the film's gap added (δ > 0), or, for δ ≤ 0, the
+  // lower of two bounds on the root: the film alone, Q < (H/−δ)^{1/e}, and the load at δ = 0,
+  // Q₀ = (H K^{1/n})^{1/(1/n + e)}. (The film alone is far above the root when |δ| ≪ h_c, and
+  // Newton in ln Q then creeps down by ~n per step: δ = −1e-15 m gave a wrong load.)
   double s = approach > 0 ? std::log(K * std::pow(approach, exponent))
-                          : std::log(H / std::max(-approach, 1e-300)) / kE;
+                          : std::min(std::log(H / std::max(-approach, 1e-300)) / kE,
+                                     (std::log(H) + std::log(K) / exponent) /
+                                         (1.0 / exponent + kE));
   if (approach > 0) s = std::log(K * std::pow(approach + H * std::exp(-kE * s), exponent));
   // Bracket the root (g rises with s), then Newton kept inside the bracket.
   double lo = s, hi = s;
