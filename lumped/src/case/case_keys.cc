@@ -502,6 +502,24 @@ std::vector<Key> output_keys() {
           "need model.kind = \"balls\" (the case has \"" +
           std::string(name_of(kModelKinds, c.model.kind)) + "\")");
   };
+  Key film = boolean(
+      "output.ball_film",
+      "with [lubricant]: write each ball's central film thickness hi1.., ho1.. [m] at its inner "
+      "and outer contact",
+      [](auto& c) -> auto& { return c.output.ball_film; });
+  // Written only when on: a case.toml written without the key stays byte for byte as before it.
+  film.write = [](std::ostream& o, const Case& c) {
+    if (c.output.ball_film) o << "ball_film = true\n";
+  };
+  film.check = [](const Case& c) {
+    if (!c.output.ball_film) return;
+    if (!c.lubricant.enabled)
+      throw InputError("output.ball_film = true: the film channels need a [lubricant] table");
+    if (c.model.kind == ModelKind::quasi_static)
+      throw InputError(
+          "output.ball_film = true: the film channels need a dynamic model.kind (2dof, 3dof, "
+          "balls)");
+  };
   Key envelope = described(
       "output.envelope_band", Kind::vector2, D::frequency,
       "\"none\" (default) | \"auto\" (fast kurtogram) | [low, high], e.g. [\"2 kHz\", \"8 kHz\"]: "
@@ -528,6 +546,7 @@ std::vector<Key> output_keys() {
           "write each ball's approach d1..dZ [m] (positive: elastic approach; negative: gap)",
           [](auto& c) -> auto& { return c.output.ball_approach; }),
       dynamics,
+      film,
       choice(
           "output.window", "hann | flattop | rectangular", kWindows, "window",
           [](auto& c) -> auto& { return c.output.window; }),

@@ -26,9 +26,11 @@
 #include "bearing/kinematics.h"
 #include "bearing/limits.h"
 #include "bearing/models/three_dof.h"
+#include "bearing/models/two_dof.h"
 #include "bearing/numerics/roots.h"
 #include "bearing/static_load.h"
 #include "bearing/units.h"
+#include "film_contacts.h"
 #include "frame_force.h"
 #include "groove_geometry.h"
 #include "model_input_checks.h"
@@ -79,6 +81,8 @@ class BallDofs final : public detail::FrameForce<BallDofs, detail::RaceFrame, Ba
  public:
   explicit BallDofs(const ModelInputs& in)
       : set_(in, checked_cage_speed(in), kinematic_angle(in)),
+        film_on_(in.lubricated),
+        films_(in.lubricated ? detail::race_films(in, set_.cage_speed()) : detail::RaceFilms{}),
         axial_(in.axial_load != 0.0),
         ring_(axial_ ? 3 : 2),
         balls_(in.bearing.balls),
@@ -107,6 +111,8 @@ class BallDofs final : public detail::FrameForce<BallDofs, detail::RaceFrame, Ba
       geometry_ = detail::groove_geometry(b);
       alpha = std::abs(solve_axial_preload(in).contact_angle);
       ring_start_ = make_three_dof_model(in)->initial_displacement();
+    } else if (film_on_) {  // the 2-DOF model's series law is the massless ball's (film_law.h)
+      ring_start_ = make_two_dof_model(in)->initial_displacement();
     } else {
       StaticLoadOptions o;
       o.phase = phase_;
@@ -146,6 +152,11 @@ class BallDofs final : public detail::FrameForce<BallDofs, detail::RaceFrame, Ba
   // One instantiation per geometry and friction on/off: the hot loop has no per-ball branches
   // on them. The planar model with both exponents 3/2 (the usual case) runs the SIMD kernel.
   void force_in(const detail::RaceFrame& fr, const double* q, const double* v, double* f) const {
+    if (film_on_)  // once per evaluation: the dry instantiations below stay as they were
+      return axial_ ? (friction_ ? force_impl<true, true, true>(fr, q, v, f)
+                                 : force_impl<true, false, true>(fr, q, v, f))
+                    : (friction_ ? force_impl<false, true, true>(fr, q, v, f)
+                                 : force_impl<false, false, true>(fr, q, v, f));
     if (axial_)
       friction_ ? force_impl<true, true>(fr, q, v, f) : force_impl<true, false>(fr, q, v, f);
     else if (hertz_)
@@ -169,9 +180,13 @@ class BallDofs final : public detail::FrameForce<BallDofs, detail::RaceFrame, Ba
     for (int j = 0; j < Z; ++j) {
       const int S = nr + j, W = nr + Z + j;
       const double c = fr.cos_theta[j], s = fr.sin_theta[j];
-      const BallContacts k = contacts(fr, j, q, q[S]);
-      const double ki = k.delta_i > 0 ? inner_exponent_ * k.load_i / k.delta_i : 0.0;
-      const double ko = k.delta_o > 0 ? outer_exponent_ * k.load_o / k.delta_o : 0.0;
+      const BallContacts k = ball_contacts(fr, j, q, q[S]);
+      double ki = k.delta_i > 0 ? inner_exponent_ * k.load_i / k.delta_i : 0.0;
+      double ko = k.delta_o > 0 ? outer_exponent_ * k.load_o / k.delta_o : 0.0;
+      if (film_on_) {  // the film laws' tangents
+        ki = films_.inner.law(fr.inner_stiffness[j]).tangent(k.load_i);
+        ko = films_.outer.law(fr.outer_stiffness[j]).tangent(k.load_o);
+      }
       double mi = 0, mo = 0, si = 0, so = 0;  // μ and dμ/dΔv at both contacts
       if (friction_) {
         const double dvi = inner_sliding(fr, v[W], vx, vy, c, s), dvo = outer_sliding(fr, v[W]);
@@ -194,6 +209,7 @@ class BallDofs final : public detail::FrameForce<BallDofs, detail::RaceFrame, Ba
       at(dfdq, S, S) += -ki - ko;
       at(dfdq, W, S) += lever_ * (mo * ko - mi * ki);
       at(dfdv, S, S) = -ball_damping_;
+      if (film_on_) film_damping(k, nv, S, dfdv);
       if (!friction_) continue;
       const double ai = k.load_i * si, ao = k.load_o * so;
       const double dvi[3] = {-s, c, -lever_};  // ∂Δv_i/∂(ẋ, ẏ, ω_b)
@@ -215,7 +231,7 @@ class BallDofs final : public detail::FrameForce<BallDofs, detail::RaceFrame, Ba
   void ball_loads(double t, const double* q, double* loads) const override {
     detail::RaceFrame fr;
     set_.evaluate(t, fr);
-    for (int j = 0; j < balls_; ++j) loads[j] = contacts(fr, j, q, q[ring_ + j]).load_i;
+    for (int j = 0; j < balls_; ++j) loads[j] = ball_contacts(fr, j, q, q[ring_ + j]).load_i;
   }
 
   // The ball's total approach δ_i + δ_o: the 2-DOF model's δ_j (planar), the 3-DOF model's
@@ -259,6 +275,18 @@ class BallDofs final : public detail::FrameForce<BallDofs, detail::RaceFrame, Ba
 
   bool has_ball_dofs() const override { return true; }
 
+  // Each contact's own film, h_r = C_r Q_r^−0.067.
+  void film_thickness(double t, const double* q, double* inner, double* outer) const override {
+    if (!film_on_) return BearingModel::film_thickness(t, q, inner, outer);
+    detail::RaceFrame fr;
+    set_.evaluate(t, fr);
+    for (int j = 0; j < balls_; ++j) {
+      const BallContacts k = ball_contacts(fr, j, q, q[ring_ + j]);
+      inner[j] = films_.inner.law(fr.inner_stiffness[j]).film(k.load_i);
+      outer[j] = films_.outer.law(fr.outer_stiffness[j]).film(k.load_o);
+    }
+  }
+
   void ball_dynamics(double t, const double* q, const double* v, double* spin, double* outer_load,
                      double* friction_inner, double* friction_outer) const override {
     detail::RaceFrame fr;
@@ -266,7 +294,7 @@ class BallDofs final : public detail::FrameForce<BallDofs, detail::RaceFrame, Ba
     const int Z = balls_;
     for (int j = 0; j < Z; ++j) {
       const double c = fr.cos_theta[j], s = fr.sin_theta[j], w = v[ring_ + Z + j];
-      const BallContacts k = contacts(fr, j, q, q[ring_ + j]);
+      const BallContacts k = ball_contacts(fr, j, q, q[ring_ + j]);
       spin[j] = w;
       outer_load[j] = k.load_o;
       friction_inner[j] = curve_.coefficient(inner_sliding(fr, w, v[0], v[1], c, s)) * k.load_i;
@@ -280,7 +308,12 @@ class BallDofs final : public detail::FrameForce<BallDofs, detail::RaceFrame, Ba
     double e = 0.0;
     const double ni = inner_exponent_, no = outer_exponent_;
     for (int j = 0; j < balls_; ++j) {
-      const BallContacts k = contacts(fr, j, q, q[ring_ + j]);
+      const BallContacts k = ball_contacts(fr, j, q, q[ring_ + j]);
+      if (film_on_) {  // U(Q) of each contact's film law (film_law.h)
+        e += films_.inner.law(fr.inner_stiffness[j]).energy(k.load_i) +
+             films_.outer.law(fr.outer_stiffness[j]).energy(k.load_o);
+        continue;
+      }
       if (k.delta_i > 0) e += k.load_i * k.delta_i / (ni + 1.0);
       if (k.delta_o > 0) e += k.load_o * k.delta_o / (no + 1.0);
     }
@@ -319,7 +352,7 @@ class BallDofs final : public detail::FrameForce<BallDofs, detail::RaceFrame, Ba
     const int Z = balls_;
     for (int j = 0; j < Z; ++j) {
       const double c = fr.cos_theta[j], s = fr.sin_theta[j], w = v[ring_ + Z + j];
-      const BallContacts k = contacts(fr, j, q, q[ring_ + j]);
+      const BallContacts k = ball_contacts(fr, j, q, q[ring_ + j]);
       const double dvi = inner_sliding(fr, w, v[0], v[1], c, s), dvo = outer_sliding(fr, w);
       const double pi = curve_.coefficient(dvi) * k.load_i, po = curve_.coefficient(dvo) * k.load_o;
       p.dissipated += pi * dvi + po * dvo;
@@ -366,7 +399,7 @@ class BallDofs final : public detail::FrameForce<BallDofs, detail::RaceFrame, Ba
 
   // force(): the equations of ball_dofs.h (the planar model with both exponents 3/2:
   // planar_hertz_force()).
-  template <bool kAxial, bool kFriction>
+  template <bool kAxial, bool kFriction, bool kFilm = false>
   void force_impl(const detail::RaceFrame& fr, const double* q, const double* v, double* f) const {
     const int Z = balls_;
     const double vx = v[0], vy = v[1];
@@ -385,20 +418,31 @@ class BallDofs final : public detail::FrameForce<BallDofs, detail::RaceFrame, Ba
     const double ai = drive.inner, ao = drive.outer, gain = traction_gain_, cap = mu_max_;
     for (int j = 0; j < Z; ++j) {
       const double c = fr.cos_theta[j], s = fr.sin_theta[j];
-      double load_i, load_o, ca = 1.0, sa = 0.0;
+      double load_i, load_o, ca = 1.0, sa = 0.0, delta_i, delta_o;
       if (kAxial) {
         const BallContacts k = contacts(fr, j, q, s_dof[j]);
         load_i = k.load_i, load_o = k.load_o, ca = k.ca, sa = k.sa;
+        delta_i = k.delta_i, delta_o = k.delta_o;
       } else {
-        const double delta_o = s_dof[j] + fr.outer_excitation[j];
-        const double delta_i = x * c + y * s - s_dof[j] - gap + fr.inner_excitation[j];
+        delta_o = s_dof[j] + fr.outer_excitation[j];
+        delta_i = x * c + y * s - s_dof[j] - gap + fr.inner_excitation[j];
         load_o = load(fr.outer_stiffness[j], no, delta_o);
         load_i = load(fr.inner_stiffness[j], ni, delta_i);
       }
-      fx -= load_i * ca * c;
-      fy -= load_i * ca * s;
-      if (kAxial) fz -= load_i * sa;
-      radial[j] = load_i - load_o + fc - cb * vs[j];
+      // The normal forces: the loads, and with the film its squeeze dampers on each contact's
+      // approach rate, δ̇_i = n_j · v_ring − ṡ_j and δ̇_o = ṡ_j (film_contacts.h).
+      double push_i = load_i, push_o = load_o;
+      if constexpr (kFilm) {
+        load_i = films_.inner.load(fr.inner_stiffness[j], delta_i);
+        load_o = films_.outer.load(fr.outer_stiffness[j], delta_o);
+        const double ring_rate = ca * (vx * c + vy * s) + (kAxial ? sa * v[2] : 0.0);
+        push_i = load_i + films_.inner.damping(load_i) * (ring_rate - vs[j]);
+        push_o = load_o + films_.outer.damping(load_o) * vs[j];
+      }
+      fx -= push_i * ca * c;
+      fy -= push_i * ca * s;
+      if (kAxial) fz -= push_i * sa;
+      radial[j] = push_i - push_o + fc - cb * vs[j];
       if (!kFriction) {
         torque[j] = 0.0;
         continue;
@@ -466,6 +510,7 @@ class BallDofs final : public detail::FrameForce<BallDofs, detail::RaceFrame, Ba
   // the DOF, so bisection between the root's bounds; a ball the ring does not reach rests on the
   // outer race.
   double ball_equilibrium(const detail::RaceFrame& fr, int j, const double* q) const {
+    if (film_on_) return film_ball_equilibrium(fr, j, q);
     const auto excess = [&](double s) {
       const BallContacts k = contacts(fr, j, q, s);
       return k.load_o - k.load_i - centrifugal_along_;
@@ -485,12 +530,57 @@ class BallDofs final : public detail::FrameForce<BallDofs, detail::RaceFrame, Ba
     return 0.5 * (b.lo + b.hi);
   }
 
+  // contacts() with the film's loads when lubricated (not for the hot loop: a branch per ball).
+  BallContacts ball_contacts(const detail::RaceFrame& fr, int j, const double* q, double s) const {
+    BallContacts k = contacts(fr, j, q, s);
+    if (film_on_) {
+      k.load_i = films_.inner.load(fr.inner_stiffness[j], k.delta_i);
+      k.load_o = films_.outer.load(fr.outer_stiffness[j], k.delta_o);
+    }
+    return k;
+  }
+
+  // The films' −∂f/∂v of ball j (DOF S, ring normal nv): push_i = Q_i + c_i (n·v − ṡ) on the
+  // ring (−n) and the ball (+1), push_o = Q_o + c_o ṡ on the ball (−1); ∂c/∂q neglected.
+  void film_damping(const BallContacts& k, const double* nv, int S, double* dfdv) const {
+    const int n = dofs();
+    const auto at = [n](double* m, int i, int c) -> double& { return m[i * n + c]; };
+    const double ci = films_.inner.damping(k.load_i), co = films_.outer.damping(k.load_o);
+    for (int a = 0; a < ring_; ++a) {
+      for (int b = 0; b < ring_; ++b) at(dfdv, a, b) -= ci * nv[a] * nv[b];
+      at(dfdv, a, S) += ci * nv[a];
+      at(dfdv, S, a) += ci * nv[a];
+    }
+    at(dfdv, S, S) -= ci + co;
+  }
+
+  // ball_equilibrium() with the film: Q_o − Q_i − F_c rises in the DOF and every contact
+  // carries some load, so the root is bracketed outward from where the outer contact's
+  // geometric overlap is 0, then bisected.
+  double film_ball_equilibrium(const detail::RaceFrame& fr, int j, const double* q) const {
+    const auto below = [&](double s) {
+      const BallContacts k = ball_contacts(fr, j, q, s);
+      return k.load_o - k.load_i - centrifugal_along_ < 0;
+    };
+    const double s0 = -contacts(fr, j, q, 0.0).delta_o;
+    double lo = s0, hi = s0, step = 1e-7;  // [m]
+    for (int i = 0; i < 60 && !below(lo); ++i, step *= 2) lo -= step;
+    step = 1e-7;
+    for (int i = 0; i < 60 && below(hi); ++i, step *= 2) hi += step;
+    numerics::BisectionOptions o;
+    o.abs_width = 1e-16;  // [m]
+    const numerics::Bracket b = numerics::bisect(lo, hi, below, o);
+    return 0.5 * (b.lo + b.hi);
+  }
+
   friend class detail::FrameForce<BallDofs, detail::RaceFrame, BallDofModel>;
   const detail::BallSet& ball_set() const { return set_; }
 
   detail::BallSet set_;
-  bool axial_;  // an axial load: the ring's z and the contact lines of the 3-DOF model
-  int ring_;    // ring DOFs: 2, or 3 with z
+  bool film_on_;             // lubricated: each contact with its own EHL film
+  detail::RaceFilms films_;  // the films at this model's cage speed (with cage slip)
+  bool axial_;               // an axial load: the ring's z and the contact lines of the 3-DOF model
+  int ring_;                 // ring DOFs: 2, or 3 with z
   int balls_;
   double mass_, axial_mass_;
   double damping_, axial_damping_;

@@ -234,6 +234,12 @@ class HousedModel final : public BearingModel {
                           friction_outer);
   }
 
+  void film_thickness(double t, const double* q, double* inner, double* outer) const override {
+    std::array<double, kMaxRingDofs> qr{};
+    relative(q, qr.data());
+    model().film_thickness(t, qr.data(), inner, outer);
+  }
+
   // The contacts' energy at the relative position and the support's springs.
   double potential_energy(double t, const double* q) const override {
     std::array<double, kMaxRingDofs> qr{};

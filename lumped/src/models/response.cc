@@ -13,6 +13,7 @@ BallFields OutputRequest::fields() const {
   if (ball_dynamics)
     f = f | BallField::spin | BallField::outer_load | BallField::friction_inner |
         BallField::friction_outer;
+  if (ball_film) f = f | BallField::film_inner | BallField::film_outer;
   return f;
 }
 

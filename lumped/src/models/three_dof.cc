@@ -31,6 +31,7 @@
 #include "bearing/numerics/newton.h"
 #include "bearing/numerics/roots.h"
 #include "bearing/static_load.h"
+#include "film_contacts.h"
 #include "frame_force.h"
 #include "groove_geometry.h"
 #include "housed_model.h"
@@ -120,7 +121,9 @@ class ThreeDofModel final
         load_y_(in.radial_load().y()),
         load_z_(in.axial_load),
         unbalance_force_(in.unbalance * in.inner_speed * in.inner_speed),
-        phase_(in.cage_phase) {}
+        phase_(in.cage_phase),
+        film_on_(in.lubricated),
+        film_(in.lubricated ? detail::series_film(in, set_.cage_speed()) : detail::SeriesFilm{}) {}
 
   int dofs() const override { return 3; }
   void mass(double* m) const override {
@@ -141,6 +144,14 @@ class ThreeDofModel final
     double fy = load_y_ + unbalance_force_ * fr.sin_shaft - damping_ * v[1];
     double fz = load_z_ - axial_damping_ * v[2];
     const int Z = set_.balls();
+    if (film_on_) {  // once per evaluation: the dry loop below stays as it was
+      const detail::RingForce c =
+          detail::axial_film_force(film_.ball, geometry_, fr, Z, x, y, z, v[0], v[1], v[2]);
+      f[0] = fx + c.x;
+      f[1] = fy + c.y;
+      f[2] = fz + c.z;
+      return;
+    }
     for (int j = 0; j < Z; ++j) {
       const double c = fr.cos_theta[j], s = fr.sin_theta[j];
       const double r = x * c + y * s + fr.excitation[j];
@@ -162,6 +173,14 @@ class ThreeDofModel final
                       double* dfdv) const override {
     detail::BallFrame fr;
     set_.evaluate(t, fr);
+    if (film_on_) {  // the film law's tangent; −Σ c_j n_j n_jᵀ on v (∂c/∂q neglected)
+      detail::axial_film_jacobian(film_.ball, geometry_, fr, set_.balls(), q, dfdq, dfdv);
+      for (int i = 0; i < 9; ++i) dfdq[i] = -dfdq[i], dfdv[i] = -dfdv[i];
+      dfdv[0] -= damping_;
+      dfdv[4] -= damping_;
+      dfdv[8] -= axial_damping_;
+      return;
+    }
     contact_stiffness(fr, q, dfdq);
     for (int i = 0; i < 9; ++i) dfdq[i] = -dfdq[i];
     for (int i = 0; i < 9; ++i) dfdv[i] = 0.0;
@@ -174,6 +193,7 @@ class ThreeDofModel final
   double cage_speed() const override { return set_.cage_speed(); }
 
   void ball_loads(double t, const double* q, double* loads) const override {
+    if (film_on_) return film_loads(t, q, loads);
     set_.ball_loads(
         t, [&](int j, const detail::BallFrame& fr) { return ball_approach(q, fr, j); }, loads);
   }
@@ -187,8 +207,8 @@ class ThreeDofModel final
   // L = sqrt((w₀ + z)² + (u₀ + ρ)²): dδ/dt = dL/dt = [(u₀ + ρ) dρ/dt + (w₀ + z) ż]/L and
   // d(cos α)/dt = [dρ/dt − cos α dL/dt]/L. An unloaded ball has no outer approach: r = −Π_o + ΔD/2.
   // Contacts open and close where δ_j changes sign: the ball approaches are the switching
-  // functions.
-  int switching_count() const override { return set_.balls(); }
+  // functions. With the film no contact opens (Q(δ) is smooth and positive): none.
+  int switching_count() const override { return film_on_ ? 0 : set_.balls(); }
   void switching_functions(double t, const double* q, double* g) const override {
     ball_approaches(t, q, g);
   }
@@ -226,13 +246,72 @@ class ThreeDofModel final
   }
 
   double potential_energy(double t, const double* q) const override {
+    if (film_on_) {  // Σ_j U(Q_j), film_law.h
+      detail::BallFrame fr;
+      set_.evaluate(t, fr);
+      double e = 0.0;
+      for (int j = 0; j < set_.balls(); ++j) {
+        const FilmLaw law = film_.ball.law(fr.stiffness[j]);
+        e += law.energy(law.load(ball_approach(q, fr, j)));
+      }
+      return e;
+    }
     return set_.potential_energy(
         t, [&](int j, const detail::BallFrame& fr) { return ball_approach(q, fr, j); });
   }
 
-  std::vector<double> initial_displacement() const override;
+  std::vector<double> initial_displacement() const override {
+    std::vector<double> q = dry_static();
+    if (film_on_) film_static(q.data());
+    return q;
+  }
+
+  void film_thickness(double t, const double* q, double* inner, double* outer) const override {
+    if (!film_on_) return BearingModel::film_thickness(t, q, inner, outer);
+    std::vector<double> loads(static_cast<std::size_t>(set_.balls()));
+    film_loads(t, q, loads.data());
+    detail::series_film_thickness(film_, loads.data(), set_.balls(), inner, outer);
+  }
 
  private:
+  std::vector<double> dry_static() const;
+
+  void film_loads(double t, const double* q, double* loads) const {
+    detail::BallFrame fr;
+    set_.evaluate(t, fr);
+    for (int j = 0; j < set_.balls(); ++j)
+      loads[j] = film_.ball.load(fr.stiffness[j], ball_approach(q, fr, j));
+  }
+
+  // The ball set at t = 0 without excitation (the static solutions' frame).
+  detail::BallFrame rest_frame() const {
+    const int Z = set_.balls();
+    detail::BallFrame fr;
+    for (int j = 0; j < Z; ++j) {
+      fr.cos_theta[j] = std::cos(phase_ + two_pi * j / Z);
+      fr.sin_theta[j] = std::sin(phase_ + two_pi * j / Z);
+      fr.excitation[j] = 0.0;
+      fr.stiffness[j] = set_.K();
+    }
+    return fr;
+  }
+
+  // The static state with the film, from the dry one: Newton on the film's force balance.
+  void film_static(double* q) const {
+    const detail::BallFrame fr = rest_frame();
+    const int Z = set_.balls();
+    const auto residual = [&](const double* p, double* r, double* J) {
+      const detail::RingForce c =
+          detail::axial_film_force(film_.ball, geometry_, fr, Z, p[0], p[1], p[2], 0, 0, 0);
+      r[0] = load_x_ + c.x;
+      r[1] = load_y_ + c.y;
+      r[2] = load_z_ + c.z;
+      double d[9];
+      detail::axial_film_jacobian(film_.ball, geometry_, fr, Z, p, J, d);
+    };
+    detail::film_equilibrium(3, q, residual, Eigen::Vector3d(load_x_, load_y_, load_z_).norm());
+  }
+
   // δ_j of the 3-DOF geometry (docs/model.md §4), r_j = x cos θ_j + y sin θ_j + e_j.
   double ball_approach(const double* q, const detail::BallFrame& fr, int j) const {
     const double r = q[0] * fr.cos_theta[j] + q[1] * fr.sin_theta[j] + fr.excitation[j];
@@ -286,6 +365,8 @@ class ThreeDofModel final
   double load_x_, load_y_, load_z_;  // constant loads, gravity included [N]
   double unbalance_force_;           // F_u = m_u e ω_i² [N]
   double phase_;                     // φ₀ [rad]
+  bool film_on_;                     // lubricated: the EHL film in every ball's contacts
+  detail::SeriesFilm film_;
 };
 
 // Static state under the constant loads, without waviness and size errors (three_dof.h).
@@ -295,7 +376,7 @@ class ThreeDofModel final
 // nondecreasing directional derivative: α = 1 unless it passes the minimum, else plain regula
 // falsi on φ' in (0, 1) to |φ'| ≤ 0.1 |φ'(0)|. The start, the axial state, has every ball
 // loaded, so the Hessian is positive definite there.
-std::vector<double> ThreeDofModel::initial_displacement() const {
+std::vector<double> ThreeDofModel::dry_static() const {
   const int Z = set_.balls();
   const Eigen::Vector3d F(load_x_, load_y_, load_z_);
   if (load_z_ == 0) {

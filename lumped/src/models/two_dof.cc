@@ -12,6 +12,7 @@
 #include "bearing/constants.h"
 #include "bearing/kinematics.h"
 #include "bearing/static_load.h"
+#include "film_contacts.h"
 #include "frame_force.h"
 #include "housed_model.h"
 #include "inline_contacts.h"
@@ -38,7 +39,9 @@ class TwoDofModel final : public detail::FrameForce<TwoDofModel, detail::BallFra
         load_x_(in.load.x()),
         load_y_(in.radial_load().y()),
         unbalance_force_(in.unbalance * in.inner_speed * in.inner_speed),
-        phase_(in.cage_phase) {}
+        phase_(in.cage_phase),
+        film_on_(in.lubricated),
+        film_(in.lubricated ? detail::series_film(in, set_.cage_speed()) : detail::SeriesFilm{}) {}
 
   int dofs() const override { return 2; }
   void mass(double* m) const override { m[0] = m[1] = mass_; }
@@ -62,7 +65,12 @@ class TwoDofModel final : public detail::FrameForce<TwoDofModel, detail::BallFra
     double fx = load_x_ + unbalance_force_ * fr.cos_shaft - damping_ * v[0];
     double fy = load_y_ + unbalance_force_ * fr.sin_shaft - damping_ * v[1];
     const int Z = set_.balls();
-    if (n == 1.5 && kInline) {
+    if (film_on_) {  // once per evaluation: the dry loops below stay as they were
+      const detail::RingForce c =
+          detail::radial_film_force(film_.ball, fr, Z, x, y, v[0], v[1], gap_);
+      fx += c.x;
+      fy += c.y;
+    } else if (n == 1.5 && kInline) {
       detail::radial_contacts_inline(fr.cos_theta, fr.sin_theta, fr.excitation, fr.stiffness, Z, x,
                                      y, gap_, &fx, &fy);
     } else if (n == 1.5) {
@@ -89,6 +97,14 @@ class TwoDofModel final : public detail::FrameForce<TwoDofModel, detail::BallFra
                       double* dfdv) const override {
     detail::BallFrame fr;
     set_.evaluate(t, fr);
+    if (film_on_) {  // dQ/dδ the film law's tangent; −Σ c_j e_j e_jᵀ on v (∂c/∂q neglected)
+      double k[4], d[4];
+      detail::radial_film_jacobian(film_.ball, fr, set_.balls(), q[0], q[1], gap_, k, d);
+      for (int i = 0; i < 4; ++i) dfdq[i] = -k[i], dfdv[i] = -d[i];
+      dfdv[0] -= damping_;
+      dfdv[3] -= damping_;
+      return;
+    }
     const double x = q[0], y = q[1], n = set_.exponent();
     double kxx = 0, kxy = 0, kyy = 0;
     const int Z = set_.balls();
@@ -117,6 +133,7 @@ class TwoDofModel final : public detail::FrameForce<TwoDofModel, detail::BallFra
   double cage_speed() const override { return set_.cage_speed(); }
 
   void ball_loads(double t, const double* q, double* loads) const override {
+    if (film_on_) return film_loads(t, q, loads);
     set_.ball_loads(
         t, [&](int j, const detail::BallFrame& fr) { return approach(q, fr, j); }, loads);
   }
@@ -127,8 +144,8 @@ class TwoDofModel final : public detail::FrameForce<TwoDofModel, detail::BallFra
   }
 
   // Contacts open and close where δ_j changes sign: the ball approaches are the switching
-  // functions.
-  int switching_count() const override { return set_.balls(); }
+  // functions. With the film no contact opens (Q(δ) is smooth and positive): none.
+  int switching_count() const override { return film_on_ ? 0 : set_.balls(); }
   void switching_functions(double t, const double* q, double* g) const override {
     ball_approaches(t, q, g);
   }
@@ -139,6 +156,16 @@ class TwoDofModel final : public detail::FrameForce<TwoDofModel, detail::BallFra
   }
 
   double potential_energy(double t, const double* q) const override {
+    if (film_on_) {  // Σ_j U(Q_j), film_law.h
+      detail::BallFrame fr;
+      set_.evaluate(t, fr);
+      double e = 0.0;
+      for (int j = 0; j < set_.balls(); ++j) {
+        const FilmLaw law = film_.ball.law(fr.stiffness[j]);
+        e += law.energy(law.load(approach(q, fr, j)));
+      }
+      return e;
+    }
     return set_.potential_energy(
         t, [&](int j, const detail::BallFrame& fr) { return approach(q, fr, j); });
   }
@@ -149,10 +176,48 @@ class TwoDofModel final : public detail::FrameForce<TwoDofModel, detail::BallFra
     o.exponent = set_.exponent();
     const StaticLoadResult r =
         solve_static_load(set_.balls(), set_.K(), gap_, Eigen::Vector2d(load_x_, load_y_), o);
-    return {r.deflection.x(), r.deflection.y()};
+    std::vector<double> q = {r.deflection.x(), r.deflection.y()};
+    if (film_on_) film_static(q.data());
+    return q;
+  }
+
+  void film_thickness(double t, const double* q, double* inner, double* outer) const override {
+    if (!film_on_) return BearingModel::film_thickness(t, q, inner, outer);
+    std::vector<double> loads(static_cast<std::size_t>(set_.balls()));
+    film_loads(t, q, loads.data());
+    detail::series_film_thickness(film_, loads.data(), set_.balls(), inner, outer);
   }
 
  private:
+  void film_loads(double t, const double* q, double* loads) const {
+    detail::BallFrame fr;
+    set_.evaluate(t, fr);
+    for (int j = 0; j < set_.balls(); ++j)
+      loads[j] = film_.ball.load(fr.stiffness[j], approach(q, fr, j));
+  }
+
+  // The static state with the film, from the dry one: the ball set at t = 0 without excitation
+  // (as solve_static_load), Newton on the film's force balance.
+  void film_static(double* q) const {
+    const int Z = set_.balls();
+    detail::BallFrame fr;
+    for (int j = 0; j < Z; ++j) {
+      fr.cos_theta[j] = std::cos(phase_ + two_pi * j / Z);
+      fr.sin_theta[j] = std::sin(phase_ + two_pi * j / Z);
+      fr.excitation[j] = 0.0;
+      fr.stiffness[j] = set_.K();
+    }
+    const auto residual = [&](const double* p, double* r, double* J) {
+      const detail::RingForce c =
+          detail::radial_film_force(film_.ball, fr, Z, p[0], p[1], 0, 0, gap_);
+      r[0] = load_x_ + c.x;
+      r[1] = load_y_ + c.y;
+      double d[4];
+      detail::radial_film_jacobian(film_.ball, fr, Z, p[0], p[1], gap_, J, d);
+    };
+    detail::film_equilibrium(2, q, residual, std::hypot(load_x_, load_y_));
+  }
+
   // δ_j = x cos θ_j + y sin θ_j − γ + e_j (docs/model.md §1).
   double approach(const double* q, const detail::BallFrame& fr, int j) const {
     return q[0] * fr.cos_theta[j] + q[1] * fr.sin_theta[j] - gap_ + fr.excitation[j];
@@ -168,6 +233,8 @@ class TwoDofModel final : public detail::FrameForce<TwoDofModel, detail::BallFra
   double load_x_, load_y_;  // constant load, gravity included [N]
   double unbalance_force_;  // F_u = m_u e ω_i² [N]
   double phase_;            // φ₀ [rad]
+  bool film_on_;            // lubricated: the EHL film in every ball's contacts
+  detail::SeriesFilm film_;
 };
 
 }  // namespace

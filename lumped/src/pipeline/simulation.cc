@@ -84,6 +84,7 @@ RunSettings run_settings(const Case& c) {
   s.output.ball_motion =
       c.output.ball_motion || (c.acoustics.enabled && c.acoustics.ball_source != BallSource::none);
   s.output.ball_dynamics = c.output.ball_dynamics;
+  s.output.ball_film = c.output.ball_film;
   s.analysis.window = c.output.window;
   s.analysis.peaks = c.output.peaks;
   s.analysis.envelope = c.output.envelope_band;

@@ -22,8 +22,8 @@
 #include "bearing/local_defect.h"
 #include "bearing/lubricant.h"
 #include "bearing/models/housing.h"
-#include "bearing/models/random_slip.h"
 #include "bearing/models/model_kind.h"
+#include "bearing/models/random_slip.h"
 #include "bearing/signal/envelope.h"
 #include "bearing/signal/spectrum.h"
 #include "bearing/solvers/integrator.h"
@@ -115,6 +115,9 @@ struct OutputOptions {
   /// add, per ball, the spin wb1… [rad/s], the outer-race load Qo1… [N] and the friction forces
   /// on the ball at its inner and outer contact Fi1…, Fo1… [N] (model.kind = "balls" only)
   bool ball_dynamics = false;
+  /// add each ball's central EHL film thickness at its inner and outer contact hi1…, ho1… [m]
+  /// (a [lubricant] table and a dynamic kind only)
+  bool ball_film = false;
   Window window = Window::hann;  ///< spectrum window
   int peaks = 10;                ///< spectrum peaks listed per channel in summary.json
   /// envelope spectra of the ring accelerations and a diagnosis: none (default), a given band

@@ -35,7 +35,9 @@ inline constexpr BallChannelKind kBallChannels[] = {{BallField::load, "Q", "N"},
                                                     {BallField::spin, "wb", "rad/s"},
                                                     {BallField::outer_load, "Qo", "N"},
                                                     {BallField::friction_inner, "Fi", "N"},
-                                                    {BallField::friction_outer, "Fo", "N"}};
+                                                    {BallField::friction_outer, "Fo", "N"},
+                                                    {BallField::film_inner, "hi", "m"},
+                                                    {BallField::film_outer, "ho", "m"}};
 
 /// The per-ball channels a run writes (the [output] flags, and what the acoustics needs).
 struct OutputRequest {
@@ -43,6 +45,7 @@ struct OutputRequest {
   bool ball_approach = false;  ///< d1…dZ
   bool ball_motion = false;    ///< r1…rZ, vr1…vrZ
   bool ball_dynamics = false;  ///< wb, Qo, Fi, Fo (ball DOFs only)
+  bool ball_film = false;      ///< hi, ho: central EHL film per contact (lubricated only)
   BallFields fields() const;
 };
 

@@ -67,6 +67,15 @@
 // contact angle α_p of the axial static state, as the 3-DOF model's cage speed does. DOFs
 // [x, y, z, s_1 … s_Z, φ_1 … φ_Z], 2Z + 3 of them.
 //
+// Lubricated (issue 43): each contact carries its own EHL film in series with its Hertz law and its
+// own squeeze damper (film_law.h, ehl_film.h, src/models/film_contacts.h): Q_r,j =
+// FilmLaw{K_r,j, n_r, C_r}.load(δ_r,j) (positive for every δ: no contact opens), and the normal
+// force of contact r is Q_r,j + c_r(Q_r,j) δ̇_r,j on its own approach rate, δ̇_o,j = ṡ_j and
+// δ̇_i,j = n_j · v_ring − ṡ_j (the excitation's and the turning geometry's rates left out). The
+// ring takes −(Q_i + c_i δ̇_i) n_j, the ball (Q_i + c_i δ̇_i) − (Q_o + c_o δ̇_o); the traction
+// stays μ Q. The films' entrainment is at this model's cage speed ω_ca (cage slip included); the
+// energy is Σ U(Q_i) + U(Q_o); the ring starts at the 2-DOF (3-DOF) film static state.
+//
 // Ball mass m_b = ρ π D³/6 (material.ball.density) and J = m_b D²/10 unless given. The analytic
 // Jacobian is provided.
 

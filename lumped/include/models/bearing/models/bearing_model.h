@@ -62,6 +62,13 @@ class BearingModel : public MechanicalSystem, public ModelOutputs {
     throw std::logic_error("ball_dynamics: this model has no ball DOFs");
   }
 
+  /// Each ball's central EHL film thickness h_c at its inner and outer contact at (t, q) [m], Z
+  /// entries each (output.ball_film). Throws std::logic_error for a dry model.
+  virtual void film_thickness(double /*t*/, const double* /*q*/, double* /*inner*/,
+                              double* /*outer*/) const {
+    throw std::logic_error("film_thickness: the model is dry (no [lubricant])");
+  }
+
   /// The per-ball fields from the calls above.
   void ball_state(double t, const double* q, const double* v, BallFields fields,
                   BallState& s) const override {
@@ -73,6 +80,8 @@ class BearingModel : public MechanicalSystem, public ModelOutputs {
         has(fields, BallField::friction_inner) || has(fields, BallField::friction_outer))
       ball_dynamics(t, q, v, s[BallField::spin].data(), s[BallField::outer_load].data(),
                     s[BallField::friction_inner].data(), s[BallField::friction_outer].data());
+    if (has(fields, BallField::film_inner) || has(fields, BallField::film_outer))
+      film_thickness(t, q, s[BallField::film_inner].data(), s[BallField::film_outer].data());
   }
 };
 

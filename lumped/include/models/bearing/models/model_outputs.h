@@ -20,6 +20,8 @@ enum class BallField : unsigned {
   outer_load = 1u << 5,       ///< Q_o,j [N] (ball DOFs only)
   friction_inner = 1u << 6,   ///< tangential force on the ball at the inner contact [N]
   friction_outer = 1u << 7,   ///< and at the outer contact [N]
+  film_inner = 1u << 8,       ///< h_c at the inner contact [m] (lubricated only)
+  film_outer = 1u << 9,       ///< h_c at the outer contact [m] (lubricated only)
 };
 
 /// A set of BallField bits.
@@ -37,7 +39,8 @@ constexpr bool has(BallFields set, BallField f) {
 /// Every ball's state at one instant, a field per array (Z entries each; unused fields are left
 /// as they were).
 struct BallState {
-  explicit BallState(int balls) : values(8, std::vector<double>(static_cast<std::size_t>(balls))) {}
+  explicit BallState(int balls)
+      : values(10, std::vector<double>(static_cast<std::size_t>(balls))) {}
   std::vector<double>& operator[](BallField f) { return values[index(f)]; }
   const std::vector<double>& operator[](BallField f) const { return values[index(f)]; }
 

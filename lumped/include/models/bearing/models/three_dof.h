@@ -39,6 +39,13 @@
 //  (d) At z = 0 with clearance (balls just touching at α₀): δ_j = r_j cos α₀ + O(r_j²/A₀), so to
 //      first order the radial force is the zero-clearance 2-DOF one with K cos^{n+1} α₀.
 //
+// With a lubricant (issue 43) each ball's force along its contact line n_j = (cos α_j cos θ_j,
+// cos α_j sin θ_j, sin α_j) is FilmLaw{K_j, n, C_i + C_o}.load(δ_j) + c_j δ̇_j with δ̇_j = n_j · v
+// (the ring's velocity along the line), c_j the two squeeze films in series, as in the 2-DOF
+// model (two_dof.h; film_contacts.h): no contact opens, the energy is Σ_j U(Q_j), the static state
+// is the film's (Newton from the dry one), and the Jacobian the film law's tangent with the same
+// geometric stiffness Q_j/L_j, plus −Σ c_j n_j n_jᵀ on v.
+//
 // DOFs {"x", "y", "z"} [m]; the analytic Jacobian is provided.
 
 #include <memory>

@@ -11,6 +11,16 @@
 // K_j = K (TVD) or, with waviness_stiffness (TVDS, seed 002), the series constant of the ball
 // recomputed from each race's waviness-modified rolling-direction curvature. DOFs {"x", "y"} [m];
 // forces [N]. The analytic Jacobian is provided (∂f/∂q from the contacts, ∂f/∂v = −c I).
+//
+// With a lubricant (ModelInputs::lubricated, issue 43) each ball's two EHL films stand in series
+// with its Hertz contacts (film_law.h, src/models/film_contacts.h): Q_j [δ_j]_+^{3/2} becomes
+//   Q_j = FilmLaw{K_j, n, H}.load(δ_j) + c_j(Q_j) δ̇_j,   H = C_i + C_o,   δ̇_j = ẋ cos θ_j + ẏ sin θ_j,
+//   c_j = c_i c_o/(c_i + c_o),  c_r = the squeeze film of race r at Q_j (ehl_film.h),
+// for every ball (the film law is positive for all δ: no contact opens, so no switching
+// functions); C_r and c_r at the entrainment of ω_i and this model's ω_c. The energy is
+// Σ_j U(Q_j) (film_law.h), the static state the film's, ∂f/∂q uses dQ/dδ = the law's tangent,
+// ∂f/∂v adds −Σ c_j e_j e_jᵀ (∂c/∂q neglected). The rates of the turning geometry and of the
+// excitation are left out of δ̇_j (film_contacts.h). Without a lubricant, all as above.
 
 #include <memory>
 #include <vector>
