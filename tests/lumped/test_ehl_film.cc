@@ -105,6 +105,54 @@ double q_max_6205(double gap) {
       .q_max;
 }
 
+// ---- the lubricant ------------------------------------------------------------------------------
+
+// Reynolds' law η₀(T) = η_ref exp(−β (T − T_ref)): at T_ref the reference viscosity, 20 K above it
+// e^{−20 β}, and without the law the viscosity as given (the operating one).
+TEST(Lubricant, ReynoldsViscosityTemperatureLaw) {
+  Lubricant l = oil();
+  EXPECT_EQ(l.operating_viscosity(), kEta);
+  l.reference_temperature = 313.15;
+  l.viscosity_temperature = 0.03;
+  l.temperature = 313.15;
+  EXPECT_NEAR(l.operating_viscosity(), kEta, 1e-17);
+  l.temperature = 333.15;
+  EXPECT_NEAR(l.operating_viscosity() / (kEta * std::exp(-0.6)), 1, 1e-14);
+  l.temperature = 303.15;
+  EXPECT_NEAR(l.operating_viscosity() / (kEta * std::exp(0.3)), 1, 1e-14);
+  EXPECT_NO_THROW(l.validate());
+  // The film follows the operating viscosity: h_c ∝ η^0.67.
+  const Bearing b = preset("6205");
+  const RaceContact rc = exact_constants(b).inner;
+  const double q = 600;
+  const double h_law = film_contact(b, Race::inner, rc, l, 1.5).central_thickness(q);
+  const double h_ref = film_contact(b, Race::inner, rc, oil(), 1.5).central_thickness(q);
+  EXPECT_NEAR(h_law / h_ref, std::pow(std::exp(0.3), 0.67), 1e-13);
+}
+
+TEST(Lubricant, RefusesOutOfRangeAndIncompleteLaws) {
+  Lubricant l = oil();
+  EXPECT_NO_THROW(l.validate());
+  l.temperature = 333.15;  // no reference temperature
+  EXPECT_THROW(l.validate(), InputError);
+  l.reference_temperature = 313.15;
+  l.viscosity_temperature = 0.03;
+  EXPECT_NO_THROW(l.validate());
+  l.temperature = 313.15 + kTemperatureLawSpan + 1;  // beyond Reynolds' law's span
+  EXPECT_THROW(l.validate(), InputError);
+  l.temperature = 313.15 + kTemperatureLawSpan;
+  EXPECT_NO_THROW(l.validate());
+  Lubricant m = oil();
+  m.viscosity_temperature = 0.03;  // a law without the operating temperature
+  EXPECT_THROW(m.validate(), InputError);
+  Lubricant n = oil();
+  n.pressure_viscosity = 0;
+  EXPECT_THROW(n.validate(), InputError);
+  n = oil();
+  n.roughness = 0;
+  EXPECT_THROW(n.validate(), InputError);
+}
+
 // ---- the film against Hamrock & Dowson by hand -----------------------------------------------
 
 // Same geometry, same k: the library's h_c and h_min are the hand formulas to round-off (each is
