@@ -119,6 +119,9 @@ TEST(FilmLaw, TheFilmAddsItsThicknessToTheApproach) {
     EXPECT_NEAR(q, f.K * std::pow(delta + f.film(q), f.exponent), 1e-12 * q);
     EXPECT_GT(q, f.K * std::pow(delta, f.exponent));
   }
+  // No load, no film (the header's promise; not H 0^−e = inf).
+  EXPECT_EQ(f.film(0.0), 0.0);
+  EXPECT_EQ(f.film(-1.0), 0.0);
   // An open gap of 10 film thicknesses leaves a vanishing load (h_c ∝ Q^−0.067).
   const double h1 = f.film(1.0);
   EXPECT_LT(f.load(-10 * h1), 1e-12);
