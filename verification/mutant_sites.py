@@ -40,6 +40,8 @@ PHYSICS_FILES = [
     # support's kernels, the cage's slip
     "lumped/src/core/structure_modes.cc", "lumped/src/models/housed_model.h",
     "lumped/src/models/support_kernels.cc", "lumped/src/models/random_slip.cc",
+    # the lubricant film (issue 43): the lubricant, the EHL film and the film law
+    "lumped/src/core/lubricant.cc", "lumped/src/core/ehl_film.cc", "lumped/src/core/film_law.cc",
     # integrators
     "lumped/src/solvers/rk4.cc", "lumped/src/solvers/rk4_wide.cc",
     "lumped/include/solvers/bearing/solvers/rk4_loop.h",

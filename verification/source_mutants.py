@@ -47,7 +47,7 @@ sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from mutant_sites import FEM_FILES, PHYSICS_FILES, generate, hand_mutants, is_fem  # noqa: E402
 
 DEFAULT_SEED = 30  # issue 30
-DEFAULT_COUNT = 150
+DEFAULT_COUNT = 160  # every lumped physics file gets two (79 files: 154), the rest by sites
 DEFAULT_FEM_COUNT = 20
 HERE = os.path.dirname(os.path.abspath(__file__))
 JUDGED_FILE = os.path.join(HERE, "source_mutants_judged.json")

@@ -282,6 +282,48 @@ TEST(CaseFile, BallModelTablesRoundTripExactly) {
   EXPECT_EQ(b.output.ball_dynamics, a.output.ball_dynamics);
 }
 
+// [lubricant] (issue 43): absent, the contacts are dry; present, its keys in SI, the temperature
+// law's degC read as kelvin, and the table written back by case_to_toml reads the same numbers.
+TEST(CaseFile, LubricantTableRoundTripsExactly) {
+  const std::string base = "[bearing]\npreset = \"6205\"\n";
+  const Case dry = parse_case(base, "dry.toml");
+  EXPECT_FALSE(dry.lubricant.enabled);
+  EXPECT_EQ(bearing::case_to_toml(dry).find("[lubricant]"), std::string::npos);
+  const Case a = parse_case(base +
+                                "[lubricant]\nviscosity = \"46 mPa s\"\npressure_viscosity = "
+                                "\"2e-8 1/Pa\"\nroughness = \"0.1 um\"\ntemperature = \"60 "
+                                "degC\"\nreference_temperature = \"40 degC\"\n"
+                                "viscosity_temperature = \"0.03 1/K\"\n",
+                            "oil.toml");
+  ASSERT_TRUE(a.lubricant.enabled);
+  EXPECT_DOUBLE_EQ(a.lubricant.viscosity, 0.046);
+  EXPECT_DOUBLE_EQ(a.lubricant.pressure_viscosity, 2e-8);
+  EXPECT_DOUBLE_EQ(a.lubricant.roughness, 1e-7);
+  EXPECT_DOUBLE_EQ(a.lubricant.temperature, 333.15);
+  EXPECT_DOUBLE_EQ(a.lubricant.reference_temperature, 313.15);
+  EXPECT_DOUBLE_EQ(a.lubricant.viscosity_temperature, 0.03);
+  EXPECT_NEAR(a.lubricant.operating_viscosity(), 0.046 * std::exp(-0.03 * 20), 1e-15);
+  const std::string text = bearing::case_to_toml(a);
+  EXPECT_NE(text.find("[lubricant]"), std::string::npos) << text;
+  const Case b = parse_case(text, "case.toml");
+  ASSERT_TRUE(b.lubricant.enabled);
+  EXPECT_EQ(b.lubricant.viscosity, a.lubricant.viscosity);
+  EXPECT_EQ(b.lubricant.pressure_viscosity, a.lubricant.pressure_viscosity);
+  EXPECT_EQ(b.lubricant.roughness, a.lubricant.roughness);
+  EXPECT_EQ(b.lubricant.temperature, a.lubricant.temperature);
+  EXPECT_EQ(b.lubricant.reference_temperature, a.lubricant.reference_temperature);
+  EXPECT_EQ(b.lubricant.viscosity_temperature, a.lubricant.viscosity_temperature);
+  // Without the temperature law: the three required keys only, written back without the others.
+  const Case c = parse_case(base + "[lubricant]\nviscosity = 0.02\npressure_viscosity = 2e-8\n"
+                                   "roughness = 1e-7\n",
+                            "oil.toml");
+  EXPECT_FALSE(c.lubricant.has_temperature_law());
+  EXPECT_EQ(c.lubricant.operating_viscosity(), 0.02);
+  const Case d = parse_case(bearing::case_to_toml(c), "case.toml");
+  EXPECT_FALSE(d.lubricant.has_temperature_law());
+  EXPECT_EQ(d.lubricant.viscosity, 0.02);
+}
+
 TEST(CaseFile, ResolvedCaseRoundTripsExactly) {
   const Case a = parse_case(kDynamics, "dyn.toml");
   const Case b = parse_case(bearing::case_to_toml(a), "case.toml");

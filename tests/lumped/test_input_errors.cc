@@ -1,5 +1,7 @@
 // Every malformed input gets one clear message naming the key, the value and what is allowed.
 
+#include <sys/wait.h>
+
 #include <cstdio>
 #include <fstream>
 #include <string>
@@ -279,6 +281,31 @@ std::vector<BadCase> bad_cases() {
        kPreset,
        {"bearing.balls", "2", "at least 3"},
        {"bearing.balls=2"}},
+      // [lubricant] (issue 43): key, value and range in the message
+      {"lubricant viscosity out of range",
+       kPreset + "[lubricant]\nviscosity = \"200 Pa s\"\npressure_viscosity = \"2e-8 1/Pa\"\n"
+                 "roughness = \"0.1 um\"\n",
+       {"lubricant.viscosity", "200", "[1e-6, 100] Pa s"}},
+      {"lubricant pressure-viscosity zero",
+       kPreset + "[lubricant]\nviscosity = \"20 mPa s\"\npressure_viscosity = 0\n"
+                 "roughness = \"0.1 um\"\n",
+       {"lubricant.pressure_viscosity", "0", "(0, 1e-7] 1/Pa"}},
+      {"lubricant viscosity missing",
+       kPreset + "[lubricant]\npressure_viscosity = \"2e-8 1/Pa\"\nroughness = \"0.1 um\"\n",
+       {"lubricant.viscosity", "missing"}},
+      {"lubricant bare temperature",
+       kPreset + "[lubricant]\nviscosity = \"20 mPa s\"\npressure_viscosity = \"2e-8 1/Pa\"\n"
+                 "roughness = \"0.1 um\"\ntemperature = 80\n",
+       {"lubricant.temperature", "80", "degC"}},
+      {"lubricant temperature law beyond its span",
+       kPreset + "[lubricant]\nviscosity = \"20 mPa s\"\npressure_viscosity = \"2e-8 1/Pa\"\n"
+                 "roughness = \"0.1 um\"\ntemperature = \"100 degC\"\n"
+                 "reference_temperature = \"40 degC\"\nviscosity_temperature = \"0.03 1/K\"\n",
+       {"lubricant.temperature", "373.15", "reference_temperature"}},
+      {"lubricant temperature without its reference",
+       kPreset + "[lubricant]\nviscosity = \"20 mPa s\"\npressure_viscosity = \"2e-8 1/Pa\"\n"
+                 "roughness = \"0.1 um\"\ntemperature = \"60 degC\"\n",
+       {"lubricant.reference_temperature", "missing"}},
       {"override through a value",
        kPreset,
        {"bearing.preset", "not a table"},
@@ -393,4 +420,24 @@ TEST(InputErrors, CommandLineExitsNonZeroWithOneMessageAndNoOutput) {
   EXPECT_TRUE(stdout_text.empty()) << stdout_text;
   EXPECT_NE(stderr_text.find("bearing.bals"), std::string::npos) << stderr_text;
   EXPECT_NE(stderr_text.find("bearing.balls"), std::string::npos) << stderr_text;
+}
+
+// A bad [lubricant] value on the command line: exit 2 (an input error), one message on stderr
+// naming the key, the value and the range, nothing on stdout.
+TEST(InputErrors, BadLubricantExitsTwoNamingKeyValueAndRange) {
+  const std::string dir = ::testing::TempDir();
+  const std::string bad = dir + "/bad_lubricant.toml";
+  std::ofstream(bad) << "[bearing]\npreset = \"6205\"\n[lubricant]\nviscosity = \"20 mPa s\"\n"
+                        "pressure_viscosity = \"2e-8 1/Pa\"\nroughness = \"20 um\"\n";
+  const std::string out = dir + "/bad_lub_out.txt", err = dir + "/bad_lub_err.txt";
+  const std::string cmd = std::string(BEARING_SIM) + " info " + bad + " > " + out + " 2> " + err;
+  const int status = std::system(cmd.c_str());
+  ASSERT_TRUE(WIFEXITED(status));
+  EXPECT_EQ(WEXITSTATUS(status), 2);
+  std::ifstream o(out), e(err);
+  const std::string stdout_text((std::istreambuf_iterator<char>(o)), {});
+  const std::string stderr_text((std::istreambuf_iterator<char>(e)), {});
+  EXPECT_TRUE(stdout_text.empty()) << stdout_text;
+  for (const char* s : {"lubricant.roughness", "2e-05", "(0, 10 um]"})
+    EXPECT_NE(stderr_text.find(s), std::string::npos) << s << ": " << stderr_text;
 }

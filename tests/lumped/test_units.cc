@@ -130,3 +130,32 @@ TEST(Units, HugeExponentsOfZeroAreZero) {
   EXPECT_EQ(parse_quantity("0.0e400 um", Dimension::length, "k"), 0.0);
   EXPECT_EQ(parse_quantity("1.5e2 kN", Dimension::force, "k"), 150e3);
 }
+
+// The lubricant's dimensions (issue 43): viscosity, 1/pressure, temperature (degC an offset unit:
+// 80 degC = 353.15 K) and 1/temperature; a bare temperature is refused (K or degC?).
+TEST(Units, LubricantDimensions) {
+  EXPECT_DOUBLE_EQ(parse_quantity("20 mPa s", Dimension::viscosity, "k"), 0.02);
+  EXPECT_DOUBLE_EQ(parse_quantity("0.02 Pa s", Dimension::viscosity, "k"), 0.02);
+  EXPECT_DOUBLE_EQ(parse_quantity("20 cP", Dimension::viscosity, "k"), 0.02);
+  EXPECT_DOUBLE_EQ(parse_quantity("0.2 P", Dimension::viscosity, "k"), 0.02);
+  EXPECT_DOUBLE_EQ(parse_quantity("2e-8 1/Pa", Dimension::inverse_pressure, "k"), 2e-8);
+  EXPECT_DOUBLE_EQ(parse_quantity("20 1/GPa", Dimension::inverse_pressure, "k"), 2e-8);
+  EXPECT_DOUBLE_EQ(parse_quantity("0.02 mm^2/N", Dimension::inverse_pressure, "k"), 2e-8);
+  EXPECT_DOUBLE_EQ(parse_quantity("80 degC", Dimension::temperature, "k"), 353.15);
+  EXPECT_DOUBLE_EQ(parse_quantity("-40 degC", Dimension::temperature, "k"), 233.15);
+  EXPECT_DOUBLE_EQ(parse_quantity("300 K", Dimension::temperature, "k"), 300.0);
+  EXPECT_DOUBLE_EQ(parse_quantity("0.03 1/K", Dimension::inverse_temperature, "k"), 0.03);
+  try {
+    parse_quantity("80", Dimension::temperature, "lubricant.temperature");
+    FAIL() << "a bare temperature was accepted";
+  } catch (const InputError& e) {
+    const std::string m = e.what();
+    EXPECT_NE(m.find("lubricant.temperature"), std::string::npos) << m;
+    EXPECT_NE(m.find("degC"), std::string::npos) << m;
+  }
+  EXPECT_THROW(parse_quantity("20 mPa", Dimension::viscosity, "k"), InputError);  // a pressure
+  EXPECT_THROW(parse_quantity("2e-8 Pa", Dimension::inverse_pressure, "k"), InputError);
+  // Written in degC and read back: the kelvin value to its 10 significant digits' rounding.
+  const std::string t = format_quantity(353.15, "degC", Dimension::temperature);
+  EXPECT_NEAR(parse_quantity(t, Dimension::temperature, "k"), 353.15, 1e-9) << t;
+}

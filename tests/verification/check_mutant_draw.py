@@ -5,7 +5,7 @@ a change of the physics sources that breaks the draw is seen without the hour-lo
     check_mutant_draw.py VERIFICATION_DIR
 
 Checks: two draws with the same seed are identical; the lumped and fem/ counts are the defaults
-(150 and 20); every physics file with two sites or more gets at least two mutants; every mutated
+(160 and 20); every physics file with two sites or more gets at least two mutants; every mutated
 line differs from its original and is the file's line; every hand-written mutant's text is on
 exactly one line of its file (hand_mutants raises otherwise); the judgements name known fates."""
 

@@ -63,6 +63,7 @@ std::vector<Check> all_checks() {
   append(all, hertz_groove_checks());
   append(all, static_load_checks());
   append(all, stiffness_checks());
+  append(all, film_checks());
   append(all, dynamics_checks());
   append(all, dynamics_spectra_checks());
   append(all, dynamics_jacobian_checks());

@@ -14,6 +14,7 @@ std::vector<Check> hertz_fe_convergence_checks();  ///< checks/hertz_fe_converge
 std::vector<Check> hertz_groove_checks();          ///< checks/hertz_groove.cc: FE groove vs Hertz
 std::vector<Check> static_load_checks();  ///< checks/static_load.cc: kinematics, load distribution
 std::vector<Check> stiffness_checks();    ///< checks/stiffness.cc: 5-DOF stiffness, closed forms
+std::vector<Check> film_checks();  ///< checks/film.cc: EHL film, film law, squeeze damping
 std::vector<Check> dynamics_checks();     ///< checks/dynamics.cc: conservation, limits, orders
 std::vector<Check> dynamics_spectra_checks();   ///< checks/dynamics_spectra.cc: lines, reductions
 std::vector<Check> dynamics_jacobian_checks();  ///< checks/dynamics_jacobian.cc: 2-DOF Jacobian
@@ -38,6 +39,7 @@ inline constexpr Family kFamilies[] = {
     {"hertz", "Hertz contact: methods, closed forms, finite elements"},
     {"static-load", "Kinematics and static load distribution"},
     {"stiffness", "Bearing stiffness for rotor models: the 5-DOF static solution"},
+    {"film", "Lubricant film: Hamrock-Dowson thickness, film stiffness, squeeze-film damping"},
     {"dynamics", "Dynamics: conservation, limits, convergence, spectra"},
     {"acoustics", "Acoustics: sources, decay, finite-element radiation"},
     {"structure", "Structure: FE natural modes and the modal transfer path"},

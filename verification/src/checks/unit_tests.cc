@@ -37,10 +37,11 @@ struct TestProgram {
 const std::vector<TestProgram>& programs() {
   static const std::vector<TestProgram> table = {
       {"core_tests",
-       "tests/lumped/test_contact.cc, test_kinematics.cc, test_static_load.cc, …",
+       "tests/lumped/test_contact.cc, test_kinematics.cc, test_static_load.cc, test_ehl_film.cc, …",
        {"HertzExact", "HertzMethods", "HertzHarrisTable", "HertzHamrockBrewe", "ContactCurvatures",
         "ContactSteelShortcut", "ContactSeries", "ContactRace", "Calibration", "Kinematics",
-        "Traction", "StaticLoad", "LocalDefect", "StructureModes"}},
+        "Traction", "StaticLoad", "LocalDefect", "StructureModes", "EhlFilm", "FilmLaw",
+        "Lubricant"}},
       {"solver_tests",
        "tests/lumped/test_integrators.cc, test_events.cc",
        {"IntegratorLinear", "IntegratorHertz", "IntegratorEnergy", "IntegratorStiff",
