@@ -114,7 +114,8 @@ CLI::App* add_stiffness_command(CLI::App& app, StiffnessOptions& o, const std::s
   cmd->add_option("--format", o.format,
                   "csv (default: stiffness.csv and stiffness.json) | ross: also "
                   "stiffness_ross.csv, the table ROSS's BearingElement reads (frequency [rad/s], "
-                  "kxx, kxy, kyx, kyy [N/m]: K averaged over one ball pass; damping 0; the points "
+                  "kxx, kxy, kyx, kyy [N/m] and cxx, cxy, cyx, cyy [N s/m]: K and C averaged over one "
+                  "ball pass; C from the films with [lubricant], else 0; the points "
                   "may vary operation.speed only)")
       ->capture_default_str();
   cmd->add_option("--ball-pass", o.ball_pass,

@@ -254,42 +254,28 @@ TEST(EhlFilm, EllipticityFactors) {
   }
 }
 
-// The span of Hamrock & Dowson's runs: k 1…8, U 0.1683e-11…1.683e-11, W 0.3686e-6…8.986e-6,
-// G 2508…5014 (their Table; the header's rounded 0.17e-11…). With E' = R_x = 1 the groups are
-// U = η u, G = α, W = Q: each bound 0.5 % inside is in, 0.5 % outside is out.
-TEST(EhlFilm, WithinFitIsTheSpanOfTheirRuns) {
+// The span of Hamrock & Dowson's runs that within_fit checks: k from 1 to 8 (their abstract; the
+// bounds of U and W are not at hand, so they are not checked). Each bound 0.5 % inside is in,
+// 0.5 % outside is out, whatever U, G and W are.
+TEST(EhlFilm, WithinFitIsTheEllipticitySpanOfTheirRuns) {
   FilmContact f;
   f.rx = f.ry = 1;
   f.reduced_modulus = 1;
   f.entrainment_speed = 1;
-  auto at = [&](double k, double u, double g, double w) {
+  f.viscosity = 1e-3;  // U far beyond any run: not judged
+  f.pressure_viscosity = 1;
+  const auto at = [&](double k) {
     f.ellipticity = k;
-    f.viscosity = u;
-    f.pressure_viscosity = g;
-    return f.within_fit(w);
+    return f.within_fit();
   };
-  const double k = 4, u = 1e-11, g = 4000, w = 1e-6;
-  EXPECT_TRUE(at(k, u, g, w));
-  const double in = 1.005, out = 0.995;
-  EXPECT_TRUE(at(1.0, u, g, w));
-  EXPECT_FALSE(at(1.0 * out, u, g, w));
-  EXPECT_TRUE(at(8.0, u, g, w));
-  EXPECT_FALSE(at(8.0 / out, u, g, w));
-  EXPECT_TRUE(at(k, 0.1683e-11 * in, g, w));
-  EXPECT_FALSE(at(k, 0.1683e-11 * out, g, w));
-  EXPECT_TRUE(at(k, 1.683e-11 / in, g, w));
-  EXPECT_FALSE(at(k, 1.683e-11 / out, g, w));
-  EXPECT_TRUE(at(k, u, 2508 * in, w));
-  EXPECT_FALSE(at(k, u, 2508 * out, w));
-  EXPECT_TRUE(at(k, u, 5014 / in, w));
-  EXPECT_FALSE(at(k, u, 5014 / out, w));
-  EXPECT_TRUE(at(k, u, g, 0.3686e-6 * in));
-  EXPECT_FALSE(at(k, u, g, 0.3686e-6 * out));
-  EXPECT_TRUE(at(k, u, g, 8.986e-6 / in));
-  EXPECT_FALSE(at(k, u, g, 8.986e-6 / out));
-  // The 6205 lies outside: the inner contact's k = 9.3 > 8, and U ≈ 3e-11 at both races.
-  EXPECT_FALSE(films_6205().inner.within_fit(1000.0));
-  EXPECT_FALSE(films_6205().outer.within_fit(1000.0));
+  EXPECT_TRUE(at(4.0));
+  EXPECT_TRUE(at(1.0));
+  EXPECT_FALSE(at(0.995));
+  EXPECT_TRUE(at(8.0));
+  EXPECT_FALSE(at(8.0 / 0.995));
+  // The 6205: the inner contact's k = 9.3 > 8 lies outside, the outer's 7.3 inside.
+  EXPECT_FALSE(films_6205().inner.within_fit());
+  EXPECT_TRUE(films_6205().outer.within_fit());
 }
 
 TEST(EhlFilm, EntrainmentSpeedOfEachRace) {

@@ -27,12 +27,9 @@ Residual residual(const FilmLaw& f, double s, double approach) {
   return {hertz - film - approach, hertz / f.exponent + kE * film};
 }
 
-}  // namespace
-
-double FilmLaw::load(double approach) const {
-  if (!std::isfinite(approach))
-    throw SolverError("film law: the approach " + format_number(approach) + " m is not finite");
-  if (H == 0.0) return approach > 0 ? K * std::pow(approach, exponent) : 0.0;
+// The root in ln Q, bracketed and safeguarded: slow, but sure (the fallback of FilmLaw::load).
+double load_in_log(const FilmLaw& f, double approach) {
+  const double K = f.K, H = f.H, exponent = f.exponent;
   // A start near the root: Hertz alone with the film's gap added (δ > 0); for δ ≤ 0 the smaller
   // of the film alone (h_c = −δ) and the load Q* where δ_H = h_c (δ = 0), both at or above the
   // root. (The film alone by itself is far above the root when −δ ≪ h_c(Q*): at δ = 0 it started
@@ -48,11 +45,20 @@ double FilmLaw::load(double approach) const {
   }
   // Bracket the root (g rises with s), then Newton kept inside the bracket.
   double lo = s, hi = s;
-  while (residual(*this, lo, approach).g > 0) lo -= 2.0;
-  while (residual(*this, hi, approach).g < 0) hi += 2.0;
+  // g rises from −∞ to +∞ over ln Q: 2000 steps of 2 span any double's range.
+  for (int k = 0; residual(f, lo, approach).g > 0; ++k)
+    if (k == 2000)
+      throw SolverError("film law: no lower bracket for " + format_number(approach) + " m");
+    else
+      lo -= 2.0;
+  for (int k = 0; residual(f, hi, approach).g < 0; ++k)
+    if (k == 2000)
+      throw SolverError("film law: no upper bracket for " + format_number(approach) + " m");
+    else
+      hi += 2.0;
   bool converged = false;
   for (int it = 0; it < 200 && !converged; ++it) {
-    const Residual r = residual(*this, s, approach);
+    const Residual r = residual(f, s, approach);
     if (r.g == 0) {
       converged = true;
       break;
@@ -73,6 +79,35 @@ double FilmLaw::load(double approach) const {
                       " m in 200 iterations");
   const double q = std::exp(s);
   return q < std::numeric_limits<double>::min() ? 0.0 : q;
+}
+
+}  // namespace
+
+double FilmLaw::load(double approach) const {
+  if (!std::isfinite(approach))
+    throw SolverError("film law: the approach " + format_number(approach) + " m is not finite");
+  if (H == 0.0) return approach > 0 ? K * std::pow(approach, exponent) : 0.0;
+  // Newton in the Hertz deflection t = δ_H = (Q/K)^{1/n}: with the film h = A t^−m
+  // (A = H K^−e, m = n e), g(t) = t − A t^−m − δ rises and is concave in t > 0, so from a start
+  // at or right of the root one step lands left of it and the rest climb to it monotonically and
+  // quadratically (a tangent of a concave function lies above it): 3–5 steps, one pow each.
+  // Starts, each with g ≥ 0: δ > 0, t = δ + A δ^−m (the film at the dry deflection); δ ≤ 0, the
+  // smaller of the film alone, A t^−m = −δ, and the root at δ = 0, t* = A^{1/(1+m)}.
+  const double m = exponent * kE;
+  const double A = H * std::pow(K, -kE);
+  double t = approach > 0 ? approach + A * std::pow(approach, -m) : std::pow(A, 1.0 / (1.0 + m));
+  if (approach < 0) t = std::min(t, std::pow(A / -approach, 1.0 / m));
+  for (int it = 0; it < 40 && std::isfinite(t) && t > 0; ++it) {
+    const double film = A * std::pow(t, -m);
+    double next = t - (t - film - approach) / (1.0 + m * film / t);
+    if (!(next > 0)) next = 0.5 * t;  // overshot past 0 from the right: halve, and go on
+    if (std::fabs(next - t) <= 4e-15 * t) {
+      const double q = K * std::pow(next, exponent);
+      return q < std::numeric_limits<double>::min() ? 0.0 : q;
+    }
+    t = next;
+  }
+  return load_in_log(*this, approach);
 }
 
 double FilmLaw::tangent(double load) const {

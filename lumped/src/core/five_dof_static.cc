@@ -254,6 +254,16 @@ FiveDofPoint five_dof_point(const FiveDofBearing& b, const Vector5& q) {
   }
   p.stiffness = p.stiffness.selfadjointView<Eigen::Lower>();
   p.damping = p.damping.selfadjointView<Eigen::Lower>();
+  if (b.film_H > 0) {
+    const FilmLaw inner{b.inner_K, b.inner_exponent, b.inner_film_H};
+    const FilmLaw outer{b.outer_K, b.outer_exponent, b.outer_film_H};
+    p.inner_films.resize(Z);
+    p.outer_films.resize(Z);
+    for (int j = 0; j < Z; ++j) {
+      p.inner_films[j] = inner.film(p.ball_loads[j]);
+      p.outer_films[j] = outer.film(p.outer_loads[j]);
+    }
+  }
   return p;
 }
 

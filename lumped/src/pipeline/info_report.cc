@@ -142,6 +142,8 @@ nlohmann::json stiffness_info_json(const InfoReport& r) {
     }
     j["damping"] = damping;
     j["damping_units"] = damping_units;
+    j["inner_films"] = p.solution.at.inner_films;  // each ball's central film h_c [m]
+    j["outer_films"] = p.solution.at.outer_films;
   }
   return j;
 }
@@ -258,6 +260,8 @@ nlohmann::json info_json(const InfoReport& r) {
     j["units"]["stiffness.q_max"] = "N";
     j["units"]["stiffness.ball_loads"] = "N";
     j["units"]["stiffness.contact_angles"] = "rad";
+    if (r.input.lubricant.enabled)
+      j["units"]["stiffness.inner_films"] = j["units"]["stiffness.outer_films"] = "m";
     if (r.stiffness->ball_pass) {
       const json units = ball_pass_units_json("stiffness.matrix_units");
       for (const auto& [key, unit] : units.items()) j["units"]["stiffness." + key] = unit;

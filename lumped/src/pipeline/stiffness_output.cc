@@ -123,6 +123,8 @@ nlohmann::json point_json(const StiffnessTable& t, const StiffnessRow& r) {
       {"iterations", s.iterations}};
   if (r.point.ball_pass) j["ball_pass"] = ball_pass_json(r.point);
   if (t.lubricated) {
+    j["inner_films"] = s.at.inner_films;  // each ball's central film h_c [m]
+    j["outer_films"] = s.at.outer_films;
     j["damping_at_cage_angle"] = stiffness_matrix_json(s.at.damping);
     if (r.point.ball_pass)
       j["ball_pass"]["damping_mean"] = stiffness_matrix_json(r.point.ball_pass->damping_mean);
@@ -269,6 +271,7 @@ nlohmann::json stiffness_json(const StiffnessTable& t) {
         "(five_dof_static.h; the film's stiffness is in series with Hertz in "
         "stiffness_at_cage_angle); rotor.damping its mean over one ball pass";
     j["units"]["damping_at_cage_angle"] = damping_units_json();
+    j["units"]["inner_films"] = j["units"]["outer_films"] = "m";
     if (t.ball_pass_samples > 0) {
       j["units"]["ball_pass.damping_mean"] = "units.damping_at_cage_angle";
       j["units"]["rotor.damping"] = "units.damping_at_cage_angle, entry by entry";

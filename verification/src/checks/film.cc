@@ -136,7 +136,7 @@ Check hamrock_dowson(Race race) {
     o.detail = fmt("R_x %.5g m, R_y %.5g m, k %.4f, u %.4f m/s; h_min %.4g m; within the fit's "
                    "span (k 1-8, U, W, G of their runs): ",
                    h.rx, h.ry, h.k, h.u, fc.minimum_thickness(q)) +
-               (fc.within_fit(q) ? "yes" : "no");
+               (fc.within_fit() ? "yes" : "no");
     return o;
   };
   return c;

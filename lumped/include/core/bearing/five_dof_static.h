@@ -143,6 +143,9 @@ struct FiveDofPoint {
   std::vector<double> contact_angles;        ///< α_j [rad], of the inner contact
   std::vector<double> outer_loads;           ///< Q_o,j [N] (= Q_j at rest)
   std::vector<double> outer_contact_angles;  ///< α_o,j [rad] (= α_j at rest)
+  /// With the film (film_H > 0): each ball's central film h_c at its inner and outer contact
+  /// [m], C_i Q_j^−0.067 and C_o Q_o,j^−0.067 (ehl_film.h); empty for dry contacts.
+  std::vector<double> inner_films, outer_films;
 };
 
 /// Force, stiffness and the balls at displacement q = (δx, δy, δz, γx, γy) [m, rad].
