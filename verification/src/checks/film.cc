@@ -147,7 +147,7 @@ Check hamrock_dowson(Race race) {
 Check acceptance(Race race) {
   const std::string name = to_string(race);
   Check c = row(
-      "film.acceptance.6205-1800rpm-2kN." + name, ReferenceKind::closed_form,
+      "film.acceptance.6205-1800rpm-2kn." + name, ReferenceKind::closed_form,
       "value: the lumped central film at the 6205's " + name +
           " contact of its most loaded ball (the toolkit's static solution, zero clearance, 2 kN "
           "radial, a ball on the load line), 1800 rpm, 0.02 Pa s, 2e-8 1/Pa; reference: "
