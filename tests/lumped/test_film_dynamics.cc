@@ -314,11 +314,19 @@ std::vector<double> motion(const BearingModel& m, double t, std::vector<double>*
   return r;
 }
 
+// F_c = m_b ω_c² d_m/2 of a steel ball of the case, m_b = ρ π D³/6, at the model's cage speed
+// (pure rolling): the load that keeps an unloaded ball on the outer race, and on its film.
+double centrifugal(const ModelInputs& in, double cage_speed) {
+  const double D = in.bearing.ball_diameter;
+  return in.bearing.ball.density * std::acos(-1.0) * D * D * D / 6 * cage_speed * cage_speed *
+         in.bearing.pitch_diameter / 2;
+}
+
 // vr against the central difference D(h) = (r(t + h) − r(t − h))/(2h) at h = 1 µs: D(h) − r' ≈
 // r''' h²/6, so D(h/2) is within |D(h) − D(h/2)|/3 of r' (Richardson), plus the rounding
 // 4 ε max|r|/h. The film's part of the rate, d(C_o Q^−0.067)/dt, must exceed that tolerance
 // a hundredfold, so that the check sees it.
-void expect_rate_is_the_difference(const BearingModel& m, double Co) {
+void expect_rate_is_the_difference(const BearingModel& m, double Co, double Fc) {
   const double h = 1e-6;  // [s]
   for (double t : {1.3e-3, 4.1e-3, 7.7e-3}) {
     std::vector<double> vr;
@@ -341,8 +349,8 @@ void expect_rate_is_the_difference(const BearingModel& m, double Co) {
     for (std::size_t j = 0; j < r.size(); ++j) {
       const double tol = std::abs(d1[j] - d2[j]) + 4 * 2.2e-16 * r_max / (h / 2);
       EXPECT_NEAR(vr[j], d2[j], tol) << "ball " << j << " at t = " << t;
-      const double film_u = Co * std::pow(Qu[j], -kCentralFilmLoadExponent);
-      const double film_d = Co * std::pow(Qd[j], -kCentralFilmLoadExponent);
+      const double film_u = Co * std::pow(Qu[j] + Fc, -kCentralFilmLoadExponent);
+      const double film_d = Co * std::pow(Qd[j] + Fc, -kCentralFilmLoadExponent);
       film_rate = std::max(film_rate, std::abs(film_u - film_d) / (2 * h));
       tol_max = std::max(tol_max, tol);
     }
@@ -357,6 +365,7 @@ TEST(FilmDynamics, BallMotionRidesOnTheOuterFilmTwoDof) {
       ball_films(in.bearing, in.contact, in.lubricant, in.inner_speed, m->cage_speed());
   const double Ci = films.inner.central_coefficient(), Co = films.outer.central_coefficient();
   const double Ko = in.contact.outer.K, no = in.contact.outer.exponent;
+  const double Fc = centrifugal(in, m->cage_speed());
   const double t = 2.9e-3;
   std::vector<double> q, v, delta(m->balls());
   orbit(m->initial_displacement(), t, q, v);
@@ -364,10 +373,11 @@ TEST(FilmDynamics, BallMotionRidesOnTheOuterFilmTwoDof) {
   const std::vector<double> r = motion(*m, t);
   for (int j = 0; j < m->balls(); ++j) {
     const double Q = FilmLaw{in.contact.K, in.contact.exponent, Ci + Co}.load(delta[j]);
-    const double expected = std::pow(Q / Ko, 1 / no) - Co * std::pow(Q, -kCentralFilmLoadExponent);
+    const double expected =
+        std::pow(Q / Ko, 1 / no) - Co * std::pow(Q + Fc, -kCentralFilmLoadExponent);
     EXPECT_NEAR(r[j], expected, 1e-12 * std::abs(expected) + 1e-20) << j;
   }
-  expect_rate_is_the_difference(*m, Co);
+  expect_rate_is_the_difference(*m, Co, Fc);
 }
 
 // 3-DOF: cos α_j from the dry model at the same state (r_j = (Q_j/K_o)^{1/n_o} cos α_j there).
@@ -380,6 +390,7 @@ TEST(FilmDynamics, BallMotionRidesOnTheOuterFilmThreeDof) {
       ball_films(in.bearing, in.contact, in.lubricant, in.inner_speed, m->cage_speed());
   const double Co = films.outer.central_coefficient();
   const double Ko = in.contact.outer.K, no = in.contact.outer.exponent;
+  const double Fc = centrifugal(in, m->cage_speed());
   const double t = 2.9e-3;
   std::vector<double> q, v, Q(m->balls()), Qd(m->balls());
   orbit(m->initial_displacement(), t, q, v);
@@ -392,10 +403,10 @@ TEST(FilmDynamics, BallMotionRidesOnTheOuterFilmThreeDof) {
     ASSERT_GT(Qd[j], 0) << j;
     const double ca = rd[j] / std::pow(Qd[j] / Ko, 1 / no);
     const double expected =
-        (std::pow(Q[j] / Ko, 1 / no) - Co * std::pow(Q[j], -kCentralFilmLoadExponent)) * ca;
+        (std::pow(Q[j] / Ko, 1 / no) - Co * std::pow(Q[j] + Fc, -kCentralFilmLoadExponent)) * ca;
     EXPECT_NEAR(r[j], expected, 1e-12 * std::abs(expected) + 1e-20) << j;
   }
-  expect_rate_is_the_difference(*m, Co);
+  expect_rate_is_the_difference(*m, Co, Fc);
 }
 
 }  // namespace

@@ -26,19 +26,25 @@ inline void outer_ball_motion(double load, double load_rate, const BallRates& br
 }
 
 /// outer_ball_motion() with the EHL film (film_law.h): the ball rides on the outer contact's film
-/// h_o = C_o Q^−e (e = 0.067, C_o [m N^e]), so δ_o = (Q/K_o)^{1/n_o} − h_o and
-/// dδ_o/dt = (δ_H,o/n_o + e h_o) dQ/dt / Q − δ_H,o/n_o · dK_o/dt / K_o, δ_H,o = (Q/K_o)^{1/n_o}.
+/// under the load that presses it there, h_o = C_o (Q + F_c)^−e (e = 0.067, C_o [m N^e], F_c
+/// `press` [N] the ball's centrifugal load, which keeps an unloaded ball on the outer race as in
+/// the dry definition; the contact laws leave F_c's sub-micron Hertz deflection out, as the dry
+/// ones do), so δ_o = (Q/K_o)^{1/n_o} − h_o and
+/// dδ_o/dt = δ_H,o/n_o (dQ/dt / Q − dK_o/dt / K_o) + e h_o dQ/dt / (Q + F_c).
 inline void outer_film_ball_motion(double load, double load_rate, const BallRates& br, int j,
-                                   double outer_exponent, double outer_film, double size_error,
-                                   double& r, double& vr) {
+                                   double outer_exponent, double outer_film, double press,
+                                   double size_error, double& r, double& vr) {
   double d_o = 0, d_o_rate = 0;
   if (load > 0) {
     const double Ko = br.outer_stiffness[j];
     const double hertz = std::pow(load / Ko, 1.0 / outer_exponent);
-    const double film = outer_film * std::pow(load, -kCentralFilmLoadExponent);
-    d_o = hertz - film;
-    d_o_rate = (hertz / outer_exponent + kCentralFilmLoadExponent * film) * load_rate / load -
-               hertz / outer_exponent * br.outer_stiffness_rate[j] / Ko;
+    d_o = hertz;
+    d_o_rate = hertz / outer_exponent * (load_rate / load - br.outer_stiffness_rate[j] / Ko);
+  }
+  if (outer_film > 0 && load + press > 0) {  // no entrainment (C_o = 0): no film
+    const double film = outer_film * std::pow(load + press, -kCentralFilmLoadExponent);
+    d_o -= film;
+    d_o_rate += kCentralFilmLoadExponent * film * load_rate / (load + press);
   }
   r = d_o - br.outer_profile[j] + 0.5 * size_error;
   vr = d_o_rate - br.outer_profile_rate[j];
@@ -80,10 +86,11 @@ inline void radial_ball_motion(const BallSet& set, double gap, double t, const d
 
 /// radial_ball_motion() with the EHL film: Q_j = FilmLaw{K_j, n, H}.load(δ_j) of the ball's
 /// series law (H = C_i + C_o, smooth and positive for every δ_j), its rate by film_load_rate(),
-/// and the ball on the outer film C_o [m N^0.067] (outer_film_ball_motion()).
+/// and the ball on the outer film C_o [m N^0.067] under Q_j + F_c (`press` [N],
+/// outer_film_ball_motion()).
 inline void radial_film_ball_motion(const BallSet& set, double gap, double H, double outer_film,
-                                    double t, const double* q, const double* v, double* r,
-                                    double* vr) {
+                                    double press, double t, const double* q, const double* v,
+                                    double* r, double* vr) {
   BallFrame fr;
   set.evaluate(t, fr);
   BallRates br;
@@ -96,8 +103,8 @@ inline void radial_film_ball_motion(const BallSet& set, double gap, double H, do
     const FilmLaw law{fr.stiffness[j], n, H};
     const double Q = law.load(delta);
     const double Q_rate = film_load_rate(law, Q, rate, br.stiffness_rate[j]);
-    outer_film_ball_motion(Q, Q_rate, br, j, set.outer_exponent(), outer_film, set.size_error(j),
-                           r[j], vr[j]);
+    outer_film_ball_motion(Q, Q_rate, br, j, set.outer_exponent(), outer_film, press,
+                           set.size_error(j), r[j], vr[j]);
   }
 }
 

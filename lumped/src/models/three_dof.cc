@@ -247,7 +247,8 @@ class ThreeDofModel final
       double ro, vro;
       if (film_on_)  // the ball on the outer film (bearing_model.h)
         detail::outer_film_ball_motion(Q, Q_rate, br, j, set_.outer_exponent(),
-                                       film_.films.outer.central_coefficient(), 0.0, ro, vro);
+                                       film_.films.outer.central_coefficient(), film_.press, 0.0,
+                                       ro, vro);
       else
         detail::outer_ball_motion(Q, Q_rate, br, j, set_.outer_exponent(), 0.0, ro, vro);
       const double d_o = ro + br.outer_profile[j], d_o_rate = vro + br.outer_profile_rate[j];
