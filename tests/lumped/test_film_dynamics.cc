@@ -291,5 +291,123 @@ TEST(FilmDynamics, AcceptanceResonanceDampedAsTheEquivalentViscousDamper) {
   EXPECT_NEAR(s_dry / model, 1.0, 0.05);  // the measurement itself, on the dry model
 }
 
+// ball_motion with the film (bearing_model.h): the ball rides on the outer film, r_j =
+// (Q_j/K_o)^{1/n_o} − C_o Q_j^−0.067 (times cos α_j in the 3-DOF), Q_j the series film law's
+// at δ_j; and vr_j, analytic, is dr_j/dt along a trajectory (t, q(t), v = dq/dt).
+
+// The ring on a circle of radius 1 µm at 300 Hz about its static state (and 0.5 µm axially at
+// 170 Hz with three DOFs), with its velocity.
+void orbit(const std::vector<double>& q0, double t, std::vector<double>& q,
+           std::vector<double>& v) {
+  const double a = 1e-6, w = two_pi * 300, az = 0.5e-6, wz = two_pi * 170;  // [m, rad/s]
+  q = q0, v.assign(q0.size(), 0.0);
+  q[0] += a * std::cos(w * t), v[0] = -a * w * std::sin(w * t);
+  q[1] += a * std::sin(w * t), v[1] = a * w * std::cos(w * t);
+  if (q.size() == 3) q[2] += az * std::sin(wz * t), v[2] = az * wz * std::cos(wz * t);
+}
+
+std::vector<double> motion(const BearingModel& m, double t, std::vector<double>* rate = nullptr) {
+  std::vector<double> q, v, r(m.balls()), vr(m.balls());
+  orbit(m.initial_displacement(), t, q, v);
+  m.ball_motion(t, q.data(), v.data(), r.data(), vr.data());
+  if (rate) *rate = vr;
+  return r;
+}
+
+// F_c = m_b ω_c² d_m/2 of a steel ball of the case, m_b = ρ π D³/6, at the model's cage speed
+// (pure rolling): the load that keeps an unloaded ball on the outer race, and on its film.
+double centrifugal(const ModelInputs& in, double cage_speed) {
+  const double D = in.bearing.ball_diameter;
+  return in.bearing.ball.density * std::acos(-1.0) * D * D * D / 6 * cage_speed * cage_speed *
+         in.bearing.pitch_diameter / 2;
+}
+
+// vr against the central difference D(h) = (r(t + h) − r(t − h))/(2h) at h = 1 µs: D(h) − r' ≈
+// r''' h²/6, so D(h/2) is within |D(h) − D(h/2)|/3 of r' (Richardson), plus the rounding
+// 4 ε max|r|/h. The film's part of the rate, d(C_o Q^−0.067)/dt, must exceed that tolerance
+// a hundredfold, so that the check sees it.
+void expect_rate_is_the_difference(const BearingModel& m, double Co, double Fc) {
+  const double h = 1e-6;  // [s]
+  for (double t : {1.3e-3, 4.1e-3, 7.7e-3}) {
+    std::vector<double> vr;
+    const std::vector<double> r = motion(m, t, &vr);
+    const auto diff = [&](double step) {
+      std::vector<double> up = motion(m, t + step), down = motion(m, t - step), d(r.size());
+      for (std::size_t j = 0; j < r.size(); ++j) d[j] = (up[j] - down[j]) / (2 * step);
+      return d;
+    };
+    const std::vector<double> d1 = diff(h), d2 = diff(h / 2);
+    double r_max = 0, film_rate = 0, tol_max = 0;
+    for (double x : r) r_max = std::max(r_max, std::abs(x));
+    const auto loads = [&m](double at) {
+      std::vector<double> q, v, Q(m.balls());
+      orbit(m.initial_displacement(), at, q, v);
+      m.ball_loads(at, q.data(), Q.data());
+      return Q;
+    };
+    const std::vector<double> Qu = loads(t + h), Qd = loads(t - h);
+    for (std::size_t j = 0; j < r.size(); ++j) {
+      const double tol = std::abs(d1[j] - d2[j]) + 4 * 2.2e-16 * r_max / (h / 2);
+      EXPECT_NEAR(vr[j], d2[j], tol) << "ball " << j << " at t = " << t;
+      const double film_u = Co * std::pow(Qu[j] + Fc, -kCentralFilmLoadExponent);
+      const double film_d = Co * std::pow(Qd[j] + Fc, -kCentralFilmLoadExponent);
+      film_rate = std::max(film_rate, std::abs(film_u - film_d) / (2 * h));
+      tol_max = std::max(tol_max, tol);
+    }
+    EXPECT_GT(film_rate, 100 * tol_max) << t;
+  }
+}
+
+TEST(FilmDynamics, BallMotionRidesOnTheOuterFilmTwoDof) {
+  const ModelInputs in = lubricated(inputs_6308());
+  const auto m = make_two_dof_model(in);
+  const BallFilms films =
+      ball_films(in.bearing, in.contact, in.lubricant, in.inner_speed, m->cage_speed());
+  const double Ci = films.inner.central_coefficient(), Co = films.outer.central_coefficient();
+  const double Ko = in.contact.outer.K, no = in.contact.outer.exponent;
+  const double Fc = centrifugal(in, m->cage_speed());
+  const double t = 2.9e-3;
+  std::vector<double> q, v, delta(m->balls());
+  orbit(m->initial_displacement(), t, q, v);
+  m->ball_approaches(t, q.data(), delta.data());
+  const std::vector<double> r = motion(*m, t);
+  for (int j = 0; j < m->balls(); ++j) {
+    const double Q = FilmLaw{in.contact.K, in.contact.exponent, Ci + Co}.load(delta[j]);
+    const double expected =
+        std::pow(Q / Ko, 1 / no) - Co * std::pow(Q + Fc, -kCentralFilmLoadExponent);
+    EXPECT_NEAR(r[j], expected, 1e-12 * std::abs(expected) + 1e-20) << j;
+  }
+  expect_rate_is_the_difference(*m, Co, Fc);
+}
+
+// 3-DOF: cos α_j from the dry model at the same state (r_j = (Q_j/K_o)^{1/n_o} cos α_j there).
+TEST(FilmDynamics, BallMotionRidesOnTheOuterFilmThreeDof) {
+  ModelInputs dry_in = inputs_6308();
+  dry_in.axial_load = 50;  // [N]: every ball loaded in the dry model, so each has its cos α_j
+  const ModelInputs in = lubricated(dry_in);
+  const auto m = make_three_dof_model(in), dry = make_three_dof_model(dry_in);
+  const BallFilms films =
+      ball_films(in.bearing, in.contact, in.lubricant, in.inner_speed, m->cage_speed());
+  const double Co = films.outer.central_coefficient();
+  const double Ko = in.contact.outer.K, no = in.contact.outer.exponent;
+  const double Fc = centrifugal(in, m->cage_speed());
+  const double t = 2.9e-3;
+  std::vector<double> q, v, Q(m->balls()), Qd(m->balls());
+  orbit(m->initial_displacement(), t, q, v);
+  std::vector<double> r(m->balls()), rd(m->balls()), vr(m->balls());
+  m->ball_motion(t, q.data(), v.data(), r.data(), vr.data());
+  dry->ball_motion(t, q.data(), v.data(), rd.data(), vr.data());
+  m->ball_loads(t, q.data(), Q.data());
+  dry->ball_loads(t, q.data(), Qd.data());
+  for (int j = 0; j < m->balls(); ++j) {
+    ASSERT_GT(Qd[j], 0) << j;
+    const double ca = rd[j] / std::pow(Qd[j] / Ko, 1 / no);
+    const double expected =
+        (std::pow(Q[j] / Ko, 1 / no) - Co * std::pow(Q[j] + Fc, -kCentralFilmLoadExponent)) * ca;
+    EXPECT_NEAR(r[j], expected, 1e-12 * std::abs(expected) + 1e-20) << j;
+  }
+  expect_rate_is_the_difference(*m, Co, Fc);
+}
+
 }  // namespace
 }  // namespace bearing

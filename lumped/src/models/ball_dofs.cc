@@ -20,6 +20,8 @@
 #include <string>
 #include <vector>
 
+#include "ball_dof_film.h"
+#include "ball_dof_inputs.h"
 #include "ball_set.h"
 #include "bearing/constants.h"
 #include "bearing/errors.h"
@@ -30,7 +32,6 @@
 #include "bearing/numerics/roots.h"
 #include "bearing/static_load.h"
 #include "bearing/units.h"
-#include "film_contacts.h"
 #include "frame_force.h"
 #include "groove_geometry.h"
 #include "model_input_checks.h"
@@ -40,49 +41,14 @@ namespace bearing {
 
 namespace {
 
-// Validates the inputs (before anything is built from them) and returns ω_ca = (1 − s_c) ω_c,
-// ω_c at the loaded contact angle of the axial static state when there is an axial load.
-double checked_cage_speed(const ModelInputs& in) {
-  detail::validate_common_inputs(in);
-  limits::cage_slip.check(in.cage_slip);
-  make_traction_curve(in.traction.max_coefficient, in.traction.slide_speed);
-  // 0 stands for the default (default_ball_mass, default_ball_inertia).
-  if (in.ball_mass != 0) limits::ball_mass.check(in.ball_mass);
-  if (in.ball_inertia != 0) limits::ball_inertia.check(in.ball_inertia);
-  limits::ball_damping.check(in.ball_damping);
-  if (!(in.contact.inner.K > 0 && in.contact.outer.K > 0 && std::isfinite(in.contact.inner.K) &&
-        std::isfinite(in.contact.outer.K) && in.contact.inner.exponent >= 1 &&
-        in.contact.outer.exponent >= 1))
-    throw InputError("model.contact: the ball-DOF model needs both races' constants, K_i = " +
-                     format_number(in.contact.inner.K) +
-                     ", K_o = " + format_number(in.contact.outer.K) +
-                     " N/m^n (positive, finite) and exponents >= 1");
-  const double wc =
-      in.axial_load != 0.0 ? three_dof_cage_speed(in) : cage_speed(in.bearing, in.inner_speed);
-  return (1.0 - in.cage_slip) * wc;
-}
-
-// The contact angle of the kinematics: the loaded one of the axial static state with an axial
-// load, else the free one (the registry's angle for this kind).
-double kinematic_angle(const ModelInputs& in) {
-  detail::validate_common_inputs(in);  // also when evaluated before checked_cage_speed
-  return in.axial_load != 0.0 ? solve_axial_preload(in).contact_angle : in.bearing.contact_angle;
-}
-
-// One ball's two contacts.
-struct BallContacts {
-  double delta_i, delta_o;  // approaches [m], signed
-  double load_i, load_o;    // Q_i, Q_o [N]
-  double ca = 1, sa = 0;    // cos α_j, sin α_j of the contact line (planar: 1, 0)
-  double inv_length = 0;    // 1/L_j [1/m] (planar: 0)
-};
+using detail::BallContacts;
 
 class BallDofs final : public detail::FrameForce<BallDofs, detail::RaceFrame, BallDofModel> {
  public:
   explicit BallDofs(const ModelInputs& in)
-      : set_(in, checked_cage_speed(in), kinematic_angle(in)),
+      : set_(in, detail::checked_ball_dof_cage_speed(in), detail::ball_dof_kinematic_angle(in)),
         film_on_(in.lubricated),
-        films_(in.lubricated ? detail::race_films(in, set_.cage_speed()) : detail::RaceFilms{}),
+        film_{in.lubricated ? detail::race_films(in, set_.cage_speed()) : detail::RaceFilms{}},
         axial_(in.axial_load != 0.0),
         ring_(axial_ ? 3 : 2),
         balls_(in.bearing.balls),
@@ -183,11 +149,8 @@ class BallDofs final : public detail::FrameForce<BallDofs, detail::RaceFrame, Ba
       const BallContacts k = ball_contacts(fr, j, q, q[S]);
       double ki = k.delta_i > 0 ? inner_exponent_ * k.load_i / k.delta_i : 0.0;
       double ko = k.delta_o > 0 ? outer_exponent_ * k.load_o / k.delta_o : 0.0;
-      if (film_on_) {  // the film laws' tangents
-        ki = films_.inner.law(fr.inner_stiffness[j]).tangent(k.load_i);
-        ko = films_.outer.law(fr.outer_stiffness[j]).tangent(k.load_o);
-      }
-      double mi = 0, mo = 0, si = 0, so = 0;  // μ and dμ/dΔv at both contacts
+      if (film_on_) film_.tangents(fr, j, k, ki, ko);  // the film laws'
+      double mi = 0, mo = 0, si = 0, so = 0;           // μ and dμ/dΔv at both contacts
       if (friction_) {
         const double dvi = inner_sliding(fr, v[W], vx, vy, c, s), dvo = outer_sliding(fr, v[W]);
         mi = curve_.coefficient(dvi), si = curve_.slope(dvi);
@@ -209,7 +172,7 @@ class BallDofs final : public detail::FrameForce<BallDofs, detail::RaceFrame, Ba
       at(dfdq, S, S) += -ki - ko;
       at(dfdq, W, S) += lever_ * (mo * ko - mi * ki);
       at(dfdv, S, S) = -ball_damping_;
-      if (film_on_) film_damping(k, nv, S, dfdv);
+      if (film_on_) film_.add_damping(k, nv, nr, S, n, dfdv);
       if (!friction_) continue;
       const double ai = k.load_i * si, ao = k.load_o * so;
       const double dvi[3] = {-s, c, -lever_};  // ∂Δv_i/∂(ẋ, ẏ, ω_b)
@@ -280,11 +243,8 @@ class BallDofs final : public detail::FrameForce<BallDofs, detail::RaceFrame, Ba
     if (!film_on_) return BearingModel::film_thickness(t, q, inner, outer);
     detail::RaceFrame fr;
     set_.evaluate(t, fr);
-    for (int j = 0; j < balls_; ++j) {
-      const BallContacts k = ball_contacts(fr, j, q, q[ring_ + j]);
-      inner[j] = films_.inner.law(fr.inner_stiffness[j]).film(k.load_i);
-      outer[j] = films_.outer.law(fr.outer_stiffness[j]).film(k.load_o);
-    }
+    for (int j = 0; j < balls_; ++j)
+      film_.thickness(fr, j, ball_contacts(fr, j, q, q[ring_ + j]), inner[j], outer[j]);
   }
 
   void ball_dynamics(double t, const double* q, const double* v, double* spin, double* outer_load,
@@ -310,8 +270,7 @@ class BallDofs final : public detail::FrameForce<BallDofs, detail::RaceFrame, Ba
     for (int j = 0; j < balls_; ++j) {
       const BallContacts k = ball_contacts(fr, j, q, q[ring_ + j]);
       if (film_on_) {  // U(Q) of each contact's film law (film_law.h)
-        e += films_.inner.law(fr.inner_stiffness[j]).energy(k.load_i) +
-             films_.outer.law(fr.outer_stiffness[j]).energy(k.load_o);
+        e += film_.energy(fr, j, k);
         continue;
       }
       if (k.delta_i > 0) e += k.load_i * k.delta_i / (ni + 1.0);
@@ -433,11 +392,8 @@ class BallDofs final : public detail::FrameForce<BallDofs, detail::RaceFrame, Ba
       // approach rate, δ̇_i = n_j · v_ring − ṡ_j and δ̇_o = ṡ_j (film_contacts.h).
       double push_i = load_i, push_o = load_o;
       if constexpr (kFilm) {
-        load_i = films_.inner.load(fr.inner_stiffness[j], delta_i);
-        load_o = films_.outer.load(fr.outer_stiffness[j], delta_o);
         const double ring_rate = ca * (vx * c + vy * s) + (kAxial ? sa * v[2] : 0.0);
-        push_i = load_i + films_.inner.damping(load_i) * (ring_rate - vs[j]);
-        push_o = load_o + films_.outer.damping(load_o) * vs[j];
+        film_.pushes(fr, j, delta_i, delta_o, ring_rate, vs[j], load_i, load_o, push_i, push_o);
       }
       fx -= push_i * ca * c;
       fy -= push_i * ca * s;
@@ -510,7 +466,13 @@ class BallDofs final : public detail::FrameForce<BallDofs, detail::RaceFrame, Ba
   // the DOF, so bisection between the root's bounds; a ball the ring does not reach rests on the
   // outer race.
   double ball_equilibrium(const detail::RaceFrame& fr, int j, const double* q) const {
-    if (film_on_) return film_ball_equilibrium(fr, j, q);
+    if (film_on_) {  // ball_dof_film.h
+      const auto below = [&](double s) {
+        const BallContacts k = ball_contacts(fr, j, q, s);
+        return k.load_o - k.load_i - centrifugal_along_ < 0;
+      };
+      return detail::film_ball_equilibrium(below, -contacts(fr, j, q, 0.0).delta_o);
+    }
     const auto excess = [&](double s) {
       const BallContacts k = contacts(fr, j, q, s);
       return k.load_o - k.load_i - centrifugal_along_;
@@ -533,54 +495,18 @@ class BallDofs final : public detail::FrameForce<BallDofs, detail::RaceFrame, Ba
   // contacts() with the film's loads when lubricated (not for the hot loop: a branch per ball).
   BallContacts ball_contacts(const detail::RaceFrame& fr, int j, const double* q, double s) const {
     BallContacts k = contacts(fr, j, q, s);
-    if (film_on_) {
-      k.load_i = films_.inner.load(fr.inner_stiffness[j], k.delta_i);
-      k.load_o = films_.outer.load(fr.outer_stiffness[j], k.delta_o);
-    }
+    if (film_on_) film_.set_loads(fr, j, k);
     return k;
-  }
-
-  // The films' −∂f/∂v of ball j (DOF S, ring normal nv): push_i = Q_i + c_i (n·v − ṡ) on the
-  // ring (−n) and the ball (+1), push_o = Q_o + c_o ṡ on the ball (−1); ∂c/∂q neglected.
-  void film_damping(const BallContacts& k, const double* nv, int S, double* dfdv) const {
-    const int n = dofs();
-    const auto at = [n](double* m, int i, int c) -> double& { return m[i * n + c]; };
-    const double ci = films_.inner.damping(k.load_i), co = films_.outer.damping(k.load_o);
-    for (int a = 0; a < ring_; ++a) {
-      for (int b = 0; b < ring_; ++b) at(dfdv, a, b) -= ci * nv[a] * nv[b];
-      at(dfdv, a, S) += ci * nv[a];
-      at(dfdv, S, a) += ci * nv[a];
-    }
-    at(dfdv, S, S) -= ci + co;
-  }
-
-  // ball_equilibrium() with the film: Q_o − Q_i − F_c rises in the DOF and every contact
-  // carries some load, so the root is bracketed outward from where the outer contact's
-  // geometric overlap is 0, then bisected.
-  double film_ball_equilibrium(const detail::RaceFrame& fr, int j, const double* q) const {
-    const auto below = [&](double s) {
-      const BallContacts k = ball_contacts(fr, j, q, s);
-      return k.load_o - k.load_i - centrifugal_along_ < 0;
-    };
-    const double s0 = -contacts(fr, j, q, 0.0).delta_o;
-    double lo = s0, hi = s0, step = 1e-7;  // [m]
-    for (int i = 0; i < 60 && !below(lo); ++i, step *= 2) lo -= step;
-    step = 1e-7;
-    for (int i = 0; i < 60 && below(hi); ++i, step *= 2) hi += step;
-    numerics::BisectionOptions o;
-    o.abs_width = 1e-16;  // [m]
-    const numerics::Bracket b = numerics::bisect(lo, hi, below, o);
-    return 0.5 * (b.lo + b.hi);
   }
 
   friend class detail::FrameForce<BallDofs, detail::RaceFrame, BallDofModel>;
   const detail::BallSet& ball_set() const { return set_; }
 
   detail::BallSet set_;
-  bool film_on_;             // lubricated: each contact with its own EHL film
-  detail::RaceFilms films_;  // the films at this model's cage speed (with cage slip)
-  bool axial_;               // an axial load: the ring's z and the contact lines of the 3-DOF model
-  int ring_;                 // ring DOFs: 2, or 3 with z
+  bool film_on_;              // lubricated: each contact with its own EHL film
+  detail::BallDofFilm film_;  // the films at this model's cage speed (with cage slip)
+  bool axial_;  // an axial load: the ring's z and the contact lines of the 3-DOF model
+  int ring_;    // ring DOFs: 2, or 3 with z
   int balls_;
   double mass_, axial_mass_;
   double damping_, axial_damping_;

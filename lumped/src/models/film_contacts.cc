@@ -7,6 +7,7 @@
 
 #include <Eigen/Dense>
 
+#include "bearing/constants.h"
 #include "bearing/errors.h"
 #include "bearing/units.h"
 
@@ -26,6 +27,11 @@ SeriesFilm series_film(const ModelInputs& in, double cage_speed) {
   s.ball.exponent = in.contact.exponent;
   // Two dampers in series (film_law.h); either one 0 (no entrainment): none.
   s.ball.damper = i.damper > 0 && o.damper > 0 ? i.damper * o.damper / (i.damper + o.damper) : 0.0;
+  // F_c = m_b ω_c² d_m/2 at the model's own cage speed (the 3-DOF one at its loaded angle).
+  const double D = in.bearing.ball_diameter;
+  const double ball_mass =
+      in.ball_mass > 0 ? in.ball_mass : in.bearing.ball.density * pi * D * D * D / 6.0;
+  s.press = ball_mass * cage_speed * cage_speed * 0.5 * in.bearing.pitch_diameter;
   return s;
 }
 

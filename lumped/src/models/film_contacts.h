@@ -49,6 +49,9 @@ ContactFilm contact_film(const FilmContact& f, double exponent);
 struct SeriesFilm {
   BallFilms films;
   ContactFilm ball;  ///< H = C_i + C_o, d = d_i d_o/(d_i + d_o), n of the series law
+  /// F_c = m_b ω_c² d_m/2 [N] at the model's cage speed (m_b: ModelInputs::ball_mass, or ρ π D³/6),
+  /// the centrifugal load that keeps a ball on the outer race (its film there: ball_motion.h)
+  double press = 0;
 };
 
 /// The films of `in` (lubricated) with the model's cage speed ω_c [rad/s].

@@ -203,9 +203,6 @@ class ThreeDofModel final
         t, [&](int j, const detail::BallFrame& fr) { return ball_approach(q, fr, j); }, out);
   }
 
-  // r_j = δ_o,j cos α_j − Π_o + ΔD_j/2 (bearing_model.h). With ρ_j = x cos θ_j + y sin θ_j + e_j,
-  // L = sqrt((w₀ + z)² + (u₀ + ρ)²): dδ/dt = dL/dt = [(u₀ + ρ) dρ/dt + (w₀ + z) ż]/L and
-  // d(cos α)/dt = [dρ/dt − cos α dL/dt]/L. An unloaded ball has no outer approach: r = −Π_o + ΔD/2.
   // Contacts open and close where δ_j changes sign: the ball approaches are the switching
   // functions. With the film no contact opens (Q(δ) is smooth and positive): none.
   int switching_count() const override { return film_on_ ? 0 : set_.balls(); }
@@ -213,6 +210,10 @@ class ThreeDofModel final
     ball_approaches(t, q, g);
   }
 
+  // r_j = δ_o,j cos α_j − Π_o + ΔD_j/2 (bearing_model.h). With ρ_j = x cos θ_j + y sin θ_j + e_j,
+  // L = sqrt((w₀ + z)² + (u₀ + ρ)²): dδ/dt = dL/dt = [(u₀ + ρ) dρ/dt + (w₀ + z) ż]/L and
+  // d(cos α)/dt = [dρ/dt − cos α dL/dt]/L. An unloaded ball has no outer approach: r = −Π_o + ΔD/2.
+  // With the film every ball is loaded and rides on the outer film (ball_motion.h).
   void ball_motion(double t, const double* q, const double* v, double* r,
                    double* vr) const override {
     detail::BallFrame fr;
@@ -227,18 +228,29 @@ class ThreeDofModel final
       double L;
       const double delta = approach(geometry_, rho, q[2], L);
       double Q = 0, Q_rate = 0, ca = 1, ca_rate = 0;
-      if (delta > 0) {
+      if (delta > 0 || film_on_) {  // with the film every ball carries a load
         const double rho_rate =
             v[0] * c + v[1] * s + wc * (q[1] * c - q[0] * s) + br.excitation_rate[j];
         const double a = geometry_.u0 + rho;
         const double L_rate = (a * rho_rate + w * v[2]) / L;
         ca = a / L;
         ca_rate = (rho_rate - ca * L_rate) / L;
-        Q = detail::contact_load(fr.stiffness[j], n, delta);
-        Q_rate = n * Q / delta * L_rate + br.stiffness_rate[j] * std::pow(delta, n);
+        if (film_on_) {
+          const FilmLaw law = film_.ball.law(fr.stiffness[j]);
+          Q = law.load(delta);
+          Q_rate = detail::film_load_rate(law, Q, L_rate, br.stiffness_rate[j]);
+        } else {
+          Q = detail::contact_load(fr.stiffness[j], n, delta);
+          Q_rate = n * Q / delta * L_rate + br.stiffness_rate[j] * std::pow(delta, n);
+        }
       }
       double ro, vro;
-      detail::outer_ball_motion(Q, Q_rate, br, j, set_.outer_exponent(), 0.0, ro, vro);
+      if (film_on_)  // the ball on the outer film (bearing_model.h)
+        detail::outer_film_ball_motion(Q, Q_rate, br, j, set_.outer_exponent(),
+                                       film_.films.outer.central_coefficient(), film_.press, 0.0,
+                                       ro, vro);
+      else
+        detail::outer_ball_motion(Q, Q_rate, br, j, set_.outer_exponent(), 0.0, ro, vro);
       const double d_o = ro + br.outer_profile[j], d_o_rate = vro + br.outer_profile_rate[j];
       r[j] = d_o * ca - br.outer_profile[j] + 0.5 * set_.size_error(j);
       vr[j] = d_o_rate * ca + d_o * ca_rate - br.outer_profile_rate[j];

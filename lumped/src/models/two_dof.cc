@@ -152,6 +152,10 @@ class TwoDofModel final : public detail::FrameForce<TwoDofModel, detail::BallFra
 
   void ball_motion(double t, const double* q, const double* v, double* r,
                    double* vr) const override {
+    if (film_on_)  // the ball on the outer film (bearing_model.h)
+      return detail::radial_film_ball_motion(set_, gap_, film_.ball.H,
+                                             film_.films.outer.central_coefficient(), film_.press,
+                                             t, q, v, r, vr);
     detail::radial_ball_motion(set_, gap_, t, q, v, r, vr);
   }
 

@@ -37,6 +37,16 @@ class BearingModel : public MechanicalSystem, public ModelOutputs {
   /// The toolkit's outer raceway diameter is d_m + D (the clearance is the per-ball gap γ on the
   /// inner side), so r_j = 0 is a nominal ball just touching the perfect outer race, at d_m/2.
   /// 3-DOF: δ_o,j acts along the loaded contact line, so r_j takes its radial part δ_o,j cos α_j.
+  /// With the EHL film ([lubricant], film_law.h) the ball rides on the outer contact's film: its
+  /// load Q_j is the film law's (never 0), and the film under it is the one that carries the load
+  /// pressing the ball on the outer race, Q_j + F_c (F_c = m_b ω_c² d_m/2, the centrifugal load
+  /// that keeps an unloaded ball there):
+  ///     δ_o,j = (Q_j/K_o)^{1/n_o} − h_o,   h_o = C_o (Q_j + F_c)^−0.067 [m],
+  /// so r_j falls by h_o (a few tenths of a micron) from the dry law's at the same load, and an
+  /// unloaded ball sits on its outer film. (The output.ball_film channel ho_j is the film under
+  /// Q_j alone, the contact's: for an unloaded ball its open gap.)
+  /// The ball-DOF kind: r_j is its DOF, and its outer contact's film law carries Q_o,j at that
+  /// same δ_o,j (ball_dofs.h).
   virtual void ball_motion(double t, const double* q, const double* v, double* r,
                            double* vr) const = 0;
 
