@@ -141,6 +141,18 @@ class BallSet {
   double cage_speed() const { return cage_speed_; }
   double K() const { return K_; }
   double exponent() const { return exponent_; }
+  /// The ball set at t = 0 without excitation, ball 0 at `phase` [rad]: the static solutions'
+  /// frame (each ball at its nominal angle, K_j = K).
+  BallFrame rest_frame(double phase) const {
+    BallFrame fr;
+    for (int j = 0; j < balls_; ++j) {
+      fr.cos_theta[j] = std::cos(phase + two_pi * j / balls_);
+      fr.sin_theta[j] = std::sin(phase + two_pi * j / balls_);
+      fr.excitation[j] = 0.0;
+      fr.stiffness[j] = K_;
+    }
+    return fr;
+  }
   bool tvds() const { return inner_stiffness_.varies || outer_stiffness_.varies; }
   /// Whether e_j or K_j depend on t (waviness on a race, or a local defect).
   bool excitation_varies() const { return !inner_.empty() || !outer_.empty() || !defects_.empty(); }

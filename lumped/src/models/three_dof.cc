@@ -296,17 +296,7 @@ class ThreeDofModel final
   }
 
   // The ball set at t = 0 without excitation (the static solutions' frame).
-  detail::BallFrame rest_frame() const {
-    const int Z = set_.balls();
-    detail::BallFrame fr;
-    for (int j = 0; j < Z; ++j) {
-      fr.cos_theta[j] = std::cos(phase_ + two_pi * j / Z);
-      fr.sin_theta[j] = std::sin(phase_ + two_pi * j / Z);
-      fr.excitation[j] = 0.0;
-      fr.stiffness[j] = set_.K();
-    }
-    return fr;
-  }
+  detail::BallFrame rest_frame() const { return set_.rest_frame(phase_); }
 
   // The static state with the film, from the dry one: Newton on the film's force balance.
   void film_static(double* q) const {
@@ -402,13 +392,7 @@ std::vector<double> ThreeDofModel::dry_static() const {
   }
 
   // The ball set at t = 0 without excitation.
-  detail::BallFrame fr;
-  for (int j = 0; j < Z; ++j) {
-    fr.cos_theta[j] = std::cos(phase_ + two_pi * j / Z);
-    fr.sin_theta[j] = std::sin(phase_ + two_pi * j / Z);
-    fr.excitation[j] = 0.0;
-    fr.stiffness[j] = set_.K();
-  }
+  const detail::BallFrame fr = set_.rest_frame(phase_);
   const double n = set_.exponent();
   // ∇Φ = −(F − Σ Q_j n_j) and ∇²Φ = the contact stiffness; Φ itself is not needed.
   using State = numerics::PotentialPoint<3>;

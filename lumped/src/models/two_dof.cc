@@ -204,13 +204,7 @@ class TwoDofModel final : public detail::FrameForce<TwoDofModel, detail::BallFra
   // (as solve_static_load), Newton on the film's force balance.
   void film_static(double* q) const {
     const int Z = set_.balls();
-    detail::BallFrame fr;
-    for (int j = 0; j < Z; ++j) {
-      fr.cos_theta[j] = std::cos(phase_ + two_pi * j / Z);
-      fr.sin_theta[j] = std::sin(phase_ + two_pi * j / Z);
-      fr.excitation[j] = 0.0;
-      fr.stiffness[j] = set_.K();
-    }
+    const detail::BallFrame fr = set_.rest_frame(phase_);
     const auto residual = [&](const double* p, double* r, double* J) {
       const detail::RingForce c =
           detail::radial_film_force(film_.ball, fr, Z, p[0], p[1], 0, 0, gap_);
