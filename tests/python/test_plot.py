@@ -572,6 +572,21 @@ def case_stiffness(args, plot):
           "stiffness (one point): k_zz's ball-pass bar spans stiffness.json's min to max")
     check(same(artist(one_fig, "rotor:k_zz").get_ydata(), [one_pass["mean"][2][2]]),
           "stiffness (one point): k_zz's diamond is its ball-pass mean")
+    # With [lubricant]: the damping's row, C at the cage angle and its mean, the rotor's C.
+    oil = os.path.join(args.work, "oil")
+    run_sim(args, "stiffness", "--vary", "operation.speed=1000rpm:3000rpm:3",
+            "--set", "lubricant.viscosity=0.02 Pa s", "--set", "lubricant.pressure_viscosity=2e-8 1/Pa",
+            "--set", "lubricant.roughness=0.1 um", "--quiet", "--out", oil)
+    oil_fig = plot.stiffness_figure(plot.load_stiffness(oil))
+    oil_data = csv_columns(os.path.join(oil, "stiffness.csv"))
+    with open(os.path.join(oil, "stiffness.json")) as f:
+        oil_points = json.load(f)["points"]
+    line = artist(oil_fig, "damping:c_yy")
+    check(same(np.sort(line.get_ydata()), np.sort(oil_data["c_yy [N*s/m]"])),
+          "stiffness with [lubricant]: c_yy is stiffness.csv's")
+    check(same(np.sort(artist(oil_fig, "rotor:c_yy").get_ydata()),
+               np.sort([p["rotor"]["damping"][1][1] for p in oil_points])),
+          "stiffness with [lubricant]: c_yy's dotted mean is stiffness.json's rotor.damping")
 
 
 # --- contact ----------------------------------------------------------------------------------

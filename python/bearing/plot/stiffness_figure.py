@@ -97,6 +97,9 @@ class Stiffness:
             for i in range(5):
                 self.rotor[term_name(i, i)] = np.array([float(r["stiffness"][i][i])
                                                         for r in rotors])
+                if all("damping" in r for r in rotors):  # with [lubricant]: the rotor's C
+                    self.rotor[term_name(i, i, "c")] = np.array(
+                        [float(r["damping"][i][i]) for r in rotors])
 
     def __getitem__(self, name):
         return self.columns[name][1]
@@ -191,8 +194,7 @@ def _draw_panel(ax, s, unit, x, xlabel, joined=True, prefix="k"):
         line.set_gid(gid + name)
         if name in diagonal:
             _draw_ball_pass(ax, s, name, x, line.get_color(), joined)
-            if prefix == "k":
-                _draw_rotor(ax, s, name, x, line.get_color(), joined)
+            _draw_rotor(ax, s, name, x, line.get_color(), joined)
     ax.set_ylabel("K [%s]" % SHOWN_UNIT[unit] if prefix == "k" else
                   "C [%s]" % DAMPING_SHOWN_UNIT[unit])
     ax.ticklabel_format(axis="y", style="sci", scilimits=(-3, 4))
@@ -239,9 +241,9 @@ def stiffness_figure(s):
                        % ("black bars" if key is None else "bands" if len(varied) <= 1
                           else "vertical bars", s.ball_pass_samples))
         if s.rotor:
-            legend += ("; %s: its mean, the rotor's K"
+            legend += ("; %s: its mean, the rotor's K%s"
                        % ("diamonds" if key is None else "dotted" if len(varied) <= 1
-                          else "dots"))
+                          else "dots", " and C" if s.has_damping else ""))
         films = ("the EHL films in series, their squeeze damping C = dF/d(dq/dt) below"
                  if s.has_damping else "no damping")
         fig.suptitle("%s — bearing stiffness K = dF/dq %s, at the case's cage angle\n(%s)\n"
